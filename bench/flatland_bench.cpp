@@ -1,0 +1,106 @@
+// Flatland solver throughput (issue targets: optimal-l1 and exact optimal-l2 ≥ 100 M samples/s
+// on one core; they are moment sums), Newton (thesis Algorithm 1) time and its ratio to the
+// exact solver in the same run, and the sampling pass in pixels/s.
+//
+//   ./build/bench/flatland_bench --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <random>
+
+#include "flatland/angle_solvers.h"
+#include "flatland/sampling.h"
+
+namespace {
+
+using namespace lexel;
+using namespace lexel::flatland;
+
+// 10⁶ synthetic samples: light angles over a 60° sweep, footprints spread over two decades.
+LexelSamples SyntheticSamples(std::size_t n) {
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<double> angle(n), g(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        angle[i] = (-30.0 + 60.0 * u(rng)) * M_PI / 180.0;
+        g[i] = std::pow(10.0, 2.0 * u(rng)) * 100.0;
+    }
+    return MakeLexelSamples(angle, g, 0.0, 1000.0);
+}
+
+const LexelSamples& Samples() {
+    static const LexelSamples samples = SyntheticSamples(1'000'000);
+    return samples;
+}
+
+void BM_OptimalL1(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(SolveL1Exact(Samples()).t);
+    state.SetItemsProcessed(state.iterations() * Samples().size());
+}
+BENCHMARK(BM_OptimalL1)->Unit(benchmark::kMillisecond);
+
+void BM_OptimalL2Exact(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(SolveL2Exact(Samples()).t);
+    state.SetItemsProcessed(state.iterations() * Samples().size());
+}
+BENCHMARK(BM_OptimalL2Exact)->Unit(benchmark::kMillisecond);
+
+// The moment sums alone (what the solvers spend their time on).
+void BM_L1Moments(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(ComputeL1Moments(Samples()).s2);
+    state.SetItemsProcessed(state.iterations() * Samples().size());
+}
+BENCHMARK(BM_L1Moments)->Unit(benchmark::kMillisecond);
+
+void BM_L2Moments(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(ComputeL2Moments(Samples()).m[4]);
+    state.SetItemsProcessed(state.iterations() * Samples().size());
+}
+BENCHMARK(BM_L2Moments)->Unit(benchmark::kMillisecond);
+
+void BM_OptimalL2Newton(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(SolveL2Newton(Samples()).t);
+    state.SetItemsProcessed(state.iterations() * Samples().size());
+}
+BENCHMARK(BM_OptimalL2Newton)->Unit(benchmark::kMillisecond);
+
+// Newton / exact, timed back to back in one run so the ratio is not skewed by machine state.
+void BM_NewtonOverExactRatio(benchmark::State& state) {
+    double newtonSeconds = 0, exactSeconds = 0;
+    for (auto _ : state) {
+        auto t0 = std::chrono::steady_clock::now();
+        benchmark::DoNotOptimize(SolveL2Newton(Samples()).t);
+        auto t1 = std::chrono::steady_clock::now();
+        benchmark::DoNotOptimize(SolveL2Exact(Samples()).t);
+        auto t2 = std::chrono::steady_clock::now();
+        newtonSeconds += std::chrono::duration<double>(t1 - t0).count();
+        exactSeconds += std::chrono::duration<double>(t2 - t1).count();
+    }
+    state.counters["newton_over_exact"] = newtonSeconds / exactSeconds;
+}
+BENCHMARK(BM_NewtonOverExactRatio)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_LinfExact(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(SolveLinfExact(Samples()).t);
+    state.SetItemsProcessed(state.iterations() * Samples().size());
+}
+BENCHMARK(BM_LinfExact)->Unit(benchmark::kMillisecond);
+
+// The sampling pass: the issue's example floor and polyline at 10⁶ pixels.
+void BM_SamplingPass(benchmark::State& state) {
+    FlatScene scene;
+    scene.camera.wsPosition = {0, 2};
+    scene.camera.wsDirection = Vec2(1, -0.25).normalized();
+    scene.camera.fovDeg = 60;
+    scene.wsLight = {-3, 10};
+    scene.geometry = {{{-50, 0}, {200, 0}}, {{6, 0}, {6, 2}, {8, 2.5}}};
+    const int pixels = static_cast<int>(state.range(0));
+    scene.camera.pixels = pixels;
+    for (auto _ : state) benchmark::DoNotOptimize(RunSamplingPass(scene, pixels).samples.size());
+    state.SetItemsProcessed(state.iterations() * pixels);
+}
+BENCHMARK(BM_SamplingPass)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Set up a fresh Debian 12 machine for lexel, build it, and run the main job or the tests.
+#   ./bootstrap.sh tables   install what is missing, build Release, run `lexel tables --out out`
+#   ./bootstrap.sh test     install what is missing, build Release, run the whole test suite
+# Packages come from Debian 12 only; those already installed are skipped.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+job="${1:-}"
+if [[ "$job" != "tables" && "$job" != "test" ]]; then
+    echo "usage: $0 tables|test" >&2
+    exit 2
+fi
+
+packages=(build-essential cmake ninja-build pkg-config
+          libceres-dev libglm-dev libopenimageio-dev openimageio-tools libcli11-dev nlohmann-json3-dev
+          libgtest-dev googletest libbenchmark-dev libcairo2-dev)
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+    echo "bootstrap: installing ${missing[*]}"
+    sudo=""
+    [[ $(id -u) -ne 0 ]] && sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --parallel "$(nproc)"
+
+if [[ "$job" == "tables" ]]; then
+    ./build/cases/lexel tables --out out
+else
+    cd build && ctest --output-on-failure --parallel "$(nproc)"
+fi

@@ -1,0 +1,649 @@
+#include "cases/figures.h"
+
+#include <cairo.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <system_error>
+#include <tuple>
+
+#include "flatland/scene.h"
+
+namespace lexel::cases {
+
+namespace {
+
+using flatland::Vec2;
+
+struct Rgb {
+    double r, g, b;
+};
+
+// Tableau-like colours, reordered so the first methods avoid the camera's blue and the light's
+// yellow; twelve so that all eleven flatland methods get their own. Later ones reuse them.
+constexpr std::array<Rgb, 12> kPalette = {{{0.84, 0.15, 0.16},
+                                           {0.17, 0.63, 0.17},
+                                           {0.58, 0.40, 0.74},
+                                           {1.00, 0.50, 0.05},
+                                           {0.09, 0.75, 0.81},
+                                           {0.89, 0.47, 0.76},
+                                           {0.55, 0.34, 0.29},
+                                           {0.74, 0.74, 0.13},
+                                           {0.12, 0.47, 0.71},
+                                           {0.50, 0.50, 0.50},
+                                           {0.00, 0.45, 0.45},
+                                           {0.55, 0.00, 0.35}}};
+constexpr Rgb kCameraColour{0.10, 0.30, 0.85};
+constexpr Rgb kGeometryColour{0.25, 0.25, 0.25};
+
+constexpr int kFanRays = 12;       // lexel rays per (unsplit) method
+constexpr int kMaxFanMethods = 5;  // more fans than this turn the diagram into noise
+
+Rgb MethodColour(std::size_t index) { return kPalette[index % kPalette.size()]; }
+
+// amount < 0 darkens toward black, > 0 lightens toward white.
+Rgb Shade(Rgb c, double amount) {
+    const double target = amount < 0 ? 0.0 : 1.0, t = std::abs(amount);
+    return {c.r + (target - c.r) * t, c.g + (target - c.g) * t, c.b + (target - c.b) * t};
+}
+
+void SetColour(cairo_t* cr, Rgb c, double alpha = 1.0) {
+    cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
+}
+
+struct PxRect {
+    double x, y, width, height;  // top-left corner, device pixels
+    double Right() const { return x + width; }
+    double Bottom() const { return y + height; }
+};
+
+// Text anchored at (pxX, pxY): alignX 0/0.5/1 puts the left/centre/right of the ink there,
+// alignY 0/0.5/1 its top/middle/bottom.
+void ShowText(cairo_t* cr, double pxX, double pxY, const std::string& text, double alignX,
+              double alignY) {
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, text.c_str(), &extents);
+    cairo_move_to(cr, pxX - alignX * extents.width - extents.x_bearing,
+                  pxY - alignY * extents.height - extents.y_bearing);
+    cairo_show_text(cr, text.c_str());
+}
+
+void SetFont(cairo_t* cr, double size, bool bold = false) {
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+}
+
+std::string FormatTick(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", value);
+    return buffer;
+}
+
+// 1, 2 or 5 times a power of ten, near `rough`.
+double NiceStep(double rough) {
+    if (!(rough > 0) || !std::isfinite(rough)) return 1.0;
+    const double decade = std::pow(10.0, std::floor(std::log10(rough)));
+    const double m = rough / decade;
+    return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * decade;
+}
+
+// Whole decades [lo, hi] of log10 covering the positive finite values; nullopt if there are none.
+std::optional<std::pair<int, int>> DecadeRange(double minValue, double maxValue) {
+    if (!(minValue > 0) || !std::isfinite(maxValue) || maxValue < minValue) return std::nullopt;
+    int lo = static_cast<int>(std::floor(std::log10(minValue) + 1e-9));
+    int hi = static_cast<int>(std::ceil(std::log10(maxValue) - 1e-9));
+    if (hi <= lo) hi = lo + 1;
+    return std::make_pair(lo, hi);
+}
+
+// A legend box in the top-right corner of `plot`.
+void DrawLegend(cairo_t* cr, const PxRect& plot, const std::vector<std::string>& labels,
+                const std::vector<Rgb>& colours, bool markers) {
+    if (labels.empty()) return;
+    SetFont(cr, 13);
+    double pxTextWidth = 0;
+    for (const auto& label : labels) {
+        cairo_text_extents_t extents;
+        cairo_text_extents(cr, label.c_str(), &extents);
+        pxTextWidth = std::max(pxTextWidth, extents.x_advance);
+    }
+    const double pxRow = 19, pxSwatch = 26;
+    const double pxWidth = pxTextWidth + pxSwatch + 26, pxHeight = pxRow * labels.size() + 10;
+    const double pxX = plot.Right() - pxWidth - 10, pxY = plot.y + 10;
+    cairo_rectangle(cr, pxX, pxY, pxWidth, pxHeight);
+    cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
+    cairo_set_line_width(cr, 1);
+    cairo_stroke(cr);
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const double pxRowY = pxY + 5 + pxRow * (i + 0.5);
+        SetColour(cr, colours[i]);
+        cairo_set_line_width(cr, 2.5);
+        cairo_move_to(cr, pxX + 8, pxRowY);
+        cairo_line_to(cr, pxX + 8 + pxSwatch, pxRowY);
+        cairo_stroke(cr);
+        if (markers) {
+            cairo_arc(cr, pxX + 8 + pxSwatch / 2, pxRowY, 3.5, 0, 2 * M_PI);
+            cairo_fill(cr);
+        }
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        ShowText(cr, pxX + pxSwatch + 16, pxRowY, labels[i], 0, 0.5);
+    }
+}
+
+// Frame and axis labels around `plot`; ticks are drawn by the callers.
+void DrawAxesFrame(cairo_t* cr, const PxRect& plot, const std::string& xLabel,
+                   const std::string& yLabel) {
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.2);
+    cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
+    cairo_stroke(cr);
+    SetFont(cr, 15);
+    ShowText(cr, plot.x + plot.width / 2, plot.Bottom() + 42, xLabel, 0.5, 0);
+    cairo_save(cr);
+    cairo_translate(cr, plot.x - 62, plot.y + plot.height / 2);
+    cairo_rotate(cr, -M_PI / 2);
+    ShowText(cr, 0, 0, yLabel, 0.5, 0.5);
+    cairo_restore(cr);
+}
+
+// Ticks are black, grid lines a grey light enough to stay behind the data.
+void StrokeSegment(cairo_t* cr, double pxX0, double pxY0, double pxX1, double pxY1, double grey) {
+    cairo_set_source_rgb(cr, grey, grey, grey);
+    cairo_set_line_width(cr, 1);
+    cairo_move_to(cr, pxX0, pxY0);
+    cairo_line_to(cr, pxX1, pxY1);
+    cairo_stroke(cr);
+}
+void TickMark(cairo_t* cr, double pxX0, double pxY0, double pxX1, double pxY1) {
+    StrokeSegment(cr, pxX0, pxY0, pxX1, pxY1, 0.0);
+}
+void GridLine(cairo_t* cr, double pxX0, double pxY0, double pxX1, double pxY1) {
+    StrokeSegment(cr, pxX0, pxY0, pxX1, pxY1, 0.88);
+}
+
+// Log-scale y ticks at whole decades, light grid lines at each.
+void DrawLogYTicks(cairo_t* cr, const PxRect& plot, int decadeLo, int decadeHi) {
+    const auto pxY = [&](double log10Value) {
+        return plot.Bottom() - (log10Value - decadeLo) / (decadeHi - decadeLo) * plot.height;
+    };
+    // Label every decade unless there are too many to read.
+    const int labelEvery = (decadeHi - decadeLo) > 10 ? 2 : 1;
+    SetFont(cr, 13);
+    for (int d = decadeLo; d <= decadeHi; ++d) {
+        if (d > decadeLo && d < decadeHi) GridLine(cr, plot.x, pxY(d), plot.Right(), pxY(d));
+        TickMark(cr, plot.x - 6, pxY(d), plot.x, pxY(d));
+        if ((d - decadeLo) % labelEvery == 0)
+            ShowText(cr, plot.x - 10, pxY(d), FormatTick(std::pow(10.0, d)), 1, 0.5);
+        if (d == decadeHi) break;
+        for (int m = 2; m <= 9; ++m) {
+            const double y = pxY(d + std::log10(m));
+            TickMark(cr, plot.x - 3, y, plot.x, y);
+        }
+    }
+}
+
+// Builds a surface, lets `draw` paint it, and writes it as PNG through a temporary file and a
+// rename, so a reader never sees a half-written figure and a failed write leaves nothing behind.
+template <typename Draw>
+void RenderPng(const std::string& pngPath, int pxWidth, int pxHeight, Draw&& draw) {
+    const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, pxWidth, pxHeight), cairo_surface_destroy);
+    const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> context(cairo_create(surface.get()),
+                                                                     cairo_destroy);
+    cairo_t* cr = context.get();
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_BEST);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    draw(cr);
+    cairo_status_t status = cairo_status(cr);
+    if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface.get());
+    if (status != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(pngPath + ": " + cairo_status_to_string(status));
+    cairo_surface_flush(surface.get());
+    const std::string partialPath = pngPath + ".partial.png";
+    status = cairo_surface_write_to_png(surface.get(), partialPath.c_str());
+    std::error_code ignored;
+    if (status != CAIRO_STATUS_SUCCESS) {
+        std::filesystem::remove(partialPath, ignored);
+        throw std::runtime_error(pngPath + ": " + cairo_status_to_string(status));
+    }
+    std::error_code error;
+    std::filesystem::rename(partialPath, pngPath, error);
+    if (error) {
+        std::filesystem::remove(partialPath, ignored);
+        throw std::runtime_error(pngPath + ": " + error.message());
+    }
+}
+
+// ----- the case diagram -------------------------------------------------------------------------
+
+double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// World space to device pixels with equal aspect ratio and y up.
+struct WorldView {
+    Vec2 wsMin{0, 0}, wsMax{1, 1};  // the world rectangle the panel shows
+    double scale = 1.0;             // pixels per world unit
+    PxRect panel{0, 0, 1, 1};
+
+    Vec2 ToPx(const Vec2& ws) const {
+        return {panel.x + (ws.x() - wsMin.x()) * scale,
+                panel.Bottom() - (ws.y() - wsMin.y()) * scale};
+    }
+    // Ray parameter at which origin + t·direction leaves the shown rectangle (origin inside).
+    double ExitT(const Vec2& wsOrigin, const Vec2& wsDirection) const {
+        double t = std::numeric_limits<double>::infinity();
+        for (int k = 0; k < 2; ++k) {
+            if (wsDirection[k] > 0) t = std::min(t, (wsMax[k] - wsOrigin[k]) / wsDirection[k]);
+            if (wsDirection[k] < 0) t = std::min(t, (wsMin[k] - wsOrigin[k]) / wsDirection[k]);
+        }
+        return std::isfinite(t) ? std::max(t, 0.0) : 0.0;
+    }
+};
+
+WorldView FitView(const flatland::FlatScene& scene, const flatland::SamplingPass& pass,
+                  const PxRect& panel) {
+    Vec2 wsLo = scene.wsLight.cwiseMin(scene.camera.wsPosition);
+    Vec2 wsHi = scene.wsLight.cwiseMax(scene.camera.wsPosition);
+    for (const auto& s : pass.samples)
+        wsLo = wsLo.cwiseMin(s.wsPoint), wsHi = wsHi.cwiseMax(s.wsPoint);
+    // Geometry widens the box by at most half the extent of what the camera and the light see: a
+    // long ground line would otherwise shrink the interesting part to a few pixels. The panel
+    // clips what lies beyond.
+    const double wsReach = 0.5 * std::max((wsHi - wsLo).maxCoeff(), 1e-6);
+    const Vec2 wsCapLo = wsLo - Vec2(wsReach, wsReach), wsCapHi = wsHi + Vec2(wsReach, wsReach);
+    for (const auto& polyline : scene.geometry)
+        for (const Vec2& p : polyline) {
+            const Vec2 wsP = p.cwiseMax(wsCapLo).cwiseMin(wsCapHi);
+            wsLo = wsLo.cwiseMin(wsP), wsHi = wsHi.cwiseMax(wsP);
+        }
+    // A margin of 6% of the larger extent keeps the light disc and the camera inside the panel.
+    const double wsMargin = 0.06 * std::max({wsHi.x() - wsLo.x(), wsHi.y() - wsLo.y(), 1e-6});
+    wsLo -= Vec2(wsMargin, wsMargin);
+    wsHi += Vec2(wsMargin, wsMargin);
+    WorldView view;
+    view.panel = panel;
+    view.scale =
+        std::min(panel.width / (wsHi.x() - wsLo.x()), panel.height / (wsHi.y() - wsLo.y()));
+    // Centre the box in the panel; the shown rectangle is the whole panel in world units.
+    const Vec2 wsCentre = 0.5 * (wsLo + wsHi);
+    const Vec2 wsHalf(0.5 * panel.width / view.scale, 0.5 * panel.height / view.scale);
+    view.wsMin = wsCentre - wsHalf;
+    view.wsMax = wsCentre + wsHalf;
+    return view;
+}
+
+// Where a ray from the light first meets the geometry, or where it leaves the view.
+Vec2 TraceRay(const WorldView& view, const std::vector<flatland::FlatSegment>& segments,
+              const Vec2& wsOrigin, const Vec2& wsDirection) {
+    double tBest = view.ExitT(wsOrigin, wsDirection);
+    for (const auto& segment : segments) {
+        const Vec2 e = segment.b - segment.a;
+        const double denominator = Cross(wsDirection, e);
+        if (std::abs(denominator) < 1e-12) continue;
+        const Vec2 offset = segment.a - wsOrigin;
+        const double t = Cross(offset, e) / denominator;
+        const double u = Cross(offset, wsDirection) / denominator;
+        if (t > 1e-9 && u >= 0 && u <= 1) tBest = std::min(tBest, t);
+    }
+    return wsOrigin + tBest * wsDirection;
+}
+
+void StrokeWorldLine(cairo_t* cr, const WorldView& view, const Vec2& wsA, const Vec2& wsB) {
+    const Vec2 pxA = view.ToPx(wsA), pxB = view.ToPx(wsB);
+    cairo_move_to(cr, pxA.x(), pxA.y());
+    cairo_line_to(cr, pxB.x(), pxB.y());
+    cairo_stroke(cr);
+}
+
+// One lexel plane with its optical axis and, optionally, a fan of lexel rays. The film
+// coordinate s of a ray is its offset along the plane per unit distance along the axis, so the
+// ray direction is a + s·b and it crosses a plane at distance D at light + D·(a + s·b).
+struct PlaneDrawing {
+    double wsAxis = 0.0;
+    double sLow = 0.0, sHigh = 0.0;  // film extent of the lexels
+    int rays = kFanRays;
+    Rgb colour{0, 0, 0};
+};
+
+void DrawPlaneAndFan(cairo_t* cr, const WorldView& view, const flatland::FlatScene& scene,
+                     const std::vector<flatland::FlatSegment>& segments, const PlaneDrawing& plane,
+                     double wsDistance, bool withFan) {
+    const Vec2 a(std::cos(plane.wsAxis), std::sin(plane.wsAxis));
+    const Vec2 b(-a.y(), a.x());
+    const Vec2& wsLight = scene.wsLight;
+    if (withFan) {
+        SetColour(cr, plane.colour, 0.55);
+        cairo_set_line_width(cr, 0.7);
+        for (int k = 0; k < plane.rays; ++k) {
+            const double s = plane.rays == 1
+                                 ? 0.5 * (plane.sLow + plane.sHigh)
+                                 : plane.sLow + (plane.sHigh - plane.sLow) * k / (plane.rays - 1);
+            StrokeWorldLine(cr, view, wsLight, TraceRay(view, segments, wsLight, a + s * b));
+        }
+    }
+    const Vec2 wsCentre = wsLight + wsDistance * a;
+    cairo_set_line_width(cr, 0.8);
+    SetColour(cr, plane.colour, 0.8);
+    const double dashes[] = {3.0, 3.0};
+    cairo_set_dash(cr, dashes, 2, 0);
+    StrokeWorldLine(cr, view, wsLight, wsCentre);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    // Short: it spans the lexels' film extent, but always shows a little plane around the axis and
+    // stops at 45° either side so an oblique frustum's plane does not cross the whole diagram.
+    const double sLo = std::clamp(std::min(plane.sLow, -0.3), -1.0, 0.0);
+    const double sHi = std::clamp(std::max(plane.sHigh, 0.3), 0.0, 1.0);
+    SetColour(cr, plane.colour);
+    cairo_set_line_width(cr, 2.5);
+    StrokeWorldLine(cr, view, wsCentre + wsDistance * sLo * b, wsCentre + wsDistance * sHi * b);
+}
+
+// Film extent of the visible points for a plane with optical axis wsAxis.
+std::pair<double, double> FilmExtent(const flatland::FlatScene& scene,
+                                     const flatland::SamplingPass& pass, double wsAxis) {
+    const Vec2 a(std::cos(wsAxis), std::sin(wsAxis)), b(-a.y(), a.x());
+    double sLow = std::numeric_limits<double>::infinity(), sHigh = -sLow;
+    for (const auto& sample : pass.samples) {
+        const Vec2 d = sample.wsPoint - scene.wsLight;
+        if (d.dot(a) <= 0) continue;  // behind the plane: no lexel sees it
+        const double s = d.dot(b) / d.dot(a);
+        sLow = std::min(sLow, s), sHigh = std::max(sHigh, s);
+    }
+    if (sLow > sHigh) return {0.0, 0.0};
+    return {sLow, sHigh};
+}
+
+void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& scene,
+                 const flatland::CaseReport& report) {
+    const flatland::SamplingPass& pass = *report.fullPass;
+    const WorldView view = FitView(scene, pass, panel);
+    const auto segments = flatland::Segments(scene);
+    cairo_save(cr);
+    cairo_rectangle(cr, panel.x, panel.y, panel.width, panel.height);
+    cairo_clip(cr);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+
+    // Lexel fans first so the geometry, camera and light stay on top of them.
+    const double pxPlaneDistance = 45, pxPlaneStagger = 12;
+    for (std::size_t m = 0; m < report.methods.size(); ++m) {
+        const auto& method = report.methods[m];
+        const bool withFan = m < kMaxFanMethods;
+        // Staggered distances keep planes of methods with similar axes apart.
+        const double wsDistance = (pxPlaneDistance + pxPlaneStagger * m) / view.scale;
+        if (method.frusta.empty()) {
+            PlaneDrawing plane{method.wsAxis, 0, 0, kFanRays, MethodColour(m)};
+            std::tie(plane.sLow, plane.sHigh) = FilmExtent(scene, pass, method.wsAxis);
+            DrawPlaneAndFan(cr, view, scene, segments, plane, wsDistance, withFan);
+            continue;
+        }
+        // Every Nth lexel across the whole split, so denser frusta get denser fans.
+        int totalLexels = 0;
+        for (const auto& frustum : method.frusta) totalLexels += frustum.lexels;
+        const std::size_t count = method.frusta.size();
+        for (std::size_t j = 0; j < count; ++j) {
+            const auto& frustum = method.frusta[j];
+            const double shade = count == 1 ? 0.0 : -0.35 + 0.7 * j / (count - 1.0);
+            const int rays =
+                totalLexels > 0
+                    ? std::max(3, static_cast<int>(std::lround(static_cast<double>(kFanRays) *
+                                                               frustum.lexels / totalLexels)))
+                    : kFanRays;
+            const double rayLow = frustum.wsRayLowDeg * M_PI / 180.0;
+            const double rayHigh = frustum.wsRayHighDeg * M_PI / 180.0;
+            PlaneDrawing plane{frustum.wsAxis,
+                               std::tan(flatland::WrapAngle(rayLow - frustum.wsAxis)),
+                               std::tan(flatland::WrapAngle(rayHigh - frustum.wsAxis)), rays,
+                               Shade(MethodColour(m), shade)};
+            if (plane.sLow > plane.sHigh) std::swap(plane.sLow, plane.sHigh);
+            DrawPlaneAndFan(cr, view, scene, segments, plane, wsDistance, withFan);
+        }
+    }
+
+    SetColour(cr, kGeometryColour);
+    cairo_set_line_width(cr, 2);
+    for (const auto& polyline : scene.geometry) {
+        for (std::size_t i = 0; i < polyline.size(); ++i) {
+            const Vec2 px = view.ToPx(polyline[i]);
+            if (i == 0)
+                cairo_move_to(cr, px.x(), px.y());
+            else
+                cairo_line_to(cr, px.x(), px.y());
+        }
+        cairo_stroke(cr);
+    }
+
+    // Visible points: faint dots show which part of the geometry the camera sees.
+    cairo_set_source_rgba(cr, 0, 0, 0, 0.35);
+    for (const auto& sample : pass.samples) {
+        const Vec2 px = view.ToPx(sample.wsPoint);
+        cairo_arc(cr, px.x(), px.y(), 1.2, 0, 2 * M_PI);
+        cairo_fill(cr);
+    }
+
+    const flatland::FlatCamera& camera = scene.camera;
+    const Vec2 wsDirection = camera.wsDirection.normalized();
+    const double halfFov = 0.5 * camera.fovDeg * M_PI / 180.0;
+    SetColour(cr, kCameraColour);
+    cairo_set_line_width(cr, 1.5);
+    for (const double side : {-1.0, 1.0}) {
+        const double angle = std::atan2(wsDirection.y(), wsDirection.x()) + side * halfFov;
+        const Vec2 wsEdge(std::cos(angle), std::sin(angle));
+        StrokeWorldLine(cr, view, camera.wsPosition,
+                        camera.wsPosition + view.ExitT(camera.wsPosition, wsEdge) * wsEdge);
+    }
+    // A camera body behind the pinhole, its apex at the camera position where the frustum edges
+    // start; sized in pixels so it reads the same at any world scale. y flips on screen.
+    const Vec2 pxApex = view.ToPx(camera.wsPosition);
+    const Vec2 pxForward(wsDirection.x(), -wsDirection.y()), pxSide(-pxForward.y(), pxForward.x());
+    const Vec2 pxBaseA = pxApex - 18 * pxForward + 8 * pxSide;
+    const Vec2 pxBaseB = pxApex - 18 * pxForward - 8 * pxSide;
+    cairo_move_to(cr, pxApex.x(), pxApex.y());
+    cairo_line_to(cr, pxBaseA.x(), pxBaseA.y());
+    cairo_line_to(cr, pxBaseB.x(), pxBaseB.y());
+    cairo_close_path(cr);
+    cairo_fill(cr);
+
+    const Vec2 pxLight = view.ToPx(scene.wsLight);
+    cairo_arc(cr, pxLight.x(), pxLight.y(), 8, 0, 2 * M_PI);
+    cairo_set_source_rgb(cr, 1.0, 0.78, 0.1);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.5);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+}
+
+// ----- the footprint plot -----------------------------------------------------------------------
+
+void DrawFootprints(cairo_t* cr, const PxRect& plot, const flatland::CaseReport& report) {
+    const auto& samples = report.fullPass->samples;
+    double fMin = std::numeric_limits<double>::infinity(), fMax = 0.0;
+    for (const auto& method : report.methods)
+        for (double f : method.footprints)
+            if (f > 0 && std::isfinite(f)) fMin = std::min(fMin, f), fMax = std::max(fMax, f);
+    const auto [decadeLo, decadeHi] = DecadeRange(fMin, fMax).value_or(std::make_pair(-1, 1));
+    const double pixels = std::max(report.pixels, 1);
+    const auto pxX = [&](double p) { return plot.x + p / pixels * plot.width; };
+    const auto pxY = [&](double f) {
+        return plot.Bottom() - (std::log10(f) - decadeLo) / (decadeHi - decadeLo) * plot.height;
+    };
+
+    DrawLogYTicks(cr, plot, decadeLo, decadeHi);
+    const double xStep = NiceStep(pixels / 5);
+    SetFont(cr, 13);
+    for (double p = 0; p <= pixels + 1e-9; p += xStep) {
+        if (p > 0 && p < pixels) GridLine(cr, pxX(p), plot.y, pxX(p), plot.Bottom());
+        TickMark(cr, pxX(p), plot.Bottom(), pxX(p), plot.Bottom() + 6);
+        ShowText(cr, pxX(p), plot.Bottom() + 10, FormatTick(p), 0.5, 0);
+    }
+
+    cairo_save(cr);
+    cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
+    cairo_clip(cr);
+    cairo_set_line_width(cr, 1.6);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    std::vector<std::string> labels;
+    std::vector<Rgb> colours;
+    for (std::size_t m = 0; m < report.methods.size(); ++m) {
+        const auto& method = report.methods[m];
+        labels.push_back(method.method);
+        colours.push_back(MethodColour(m));
+        SetColour(cr, colours.back());
+        const std::size_t count = std::min(method.footprints.size(), samples.size());
+        bool drawing = false;
+        for (std::size_t i = 0; i < count; ++i) {
+            const double f = method.footprints[i];
+            if (!(f > 0) || !std::isfinite(f)) {
+                drawing = false;
+                continue;
+            }
+            // A gap in pixel index means the geometry was not seen there: break the line.
+            const bool adjacent = i > 0 && samples[i].pixel == samples[i - 1].pixel + 1;
+            if (drawing && adjacent)
+                cairo_line_to(cr, pxX(samples[i].p), pxY(f));
+            else
+                cairo_move_to(cr, pxX(samples[i].p), pxY(f));
+            drawing = true;
+        }
+        cairo_stroke(cr);
+    }
+    cairo_restore(cr);
+    DrawAxesFrame(cr, plot, "pixel", "footprint dp/dl (pixels per lexel)");
+    DrawLegend(cr, plot, labels, colours, false);
+}
+
+}  // namespace
+
+void WriteCaseFigure(const std::string& pngPath, const flatland::FlatScene& scene,
+                     const flatland::CaseReport& report) {
+    if (!report.fullPass)
+        throw std::invalid_argument(pngPath + ": the case report has no full-resolution pass");
+    constexpr int kPxWidth = 1600, kPxHeight = 700;
+    RenderPng(pngPath, kPxWidth, kPxHeight, [&](cairo_t* cr) {
+        SetFont(cr, 20, true);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        ShowText(cr, 400, 16, scene.name, 0.5, 0);
+        SetFont(cr, 16);
+        ShowText(cr, 1210, 18,
+                 "footprints at full resolution (" + std::to_string(report.pixelsVisible) + " of " +
+                     std::to_string(report.pixels) + " pixels visible, " +
+                     std::to_string(report.lexels) + " lexels)",
+                 0.5, 0);
+        const PxRect diagram{20, 50, 760, 630};
+        cairo_set_source_rgb(cr, 0.8, 0.8, 0.8);
+        cairo_set_line_width(cr, 1);
+        cairo_rectangle(cr, diagram.x - 0.5, diagram.y - 0.5, diagram.width + 1,
+                        diagram.height + 1);
+        cairo_stroke(cr);
+        DrawDiagram(cr, diagram, scene, report);
+        DrawFootprints(cr, PxRect{895, 50, 680, 580}, report);
+    });
+}
+
+void WriteLowresPlot(const std::string& pngPath, const std::string& title,
+                     const std::vector<LowresCurve>& curves) {
+    constexpr int kPxWidth = 900, kPxHeight = 600;
+    const PxRect plot{95, 55, 775, 460};
+    double kMin = std::numeric_limits<double>::infinity(), kMax = 0.0, yMax = 0.0;
+    for (const auto& curve : curves) {
+        const std::size_t count = std::min(curve.pixels.size(), curve.extraPercent.size());
+        for (std::size_t i = 0; i < count; ++i) {
+            const double k = curve.pixels[i], y = curve.extraPercent[i];
+            if (!(k > 0) || !std::isfinite(k) || !std::isfinite(y)) continue;
+            kMin = std::min(kMin, k), kMax = std::max(kMax, k), yMax = std::max(yMax, y);
+        }
+    }
+    const auto [decadeLo, decadeHi] = DecadeRange(kMin, kMax).value_or(std::make_pair(1, 3));
+    yMax = std::max(1.0, yMax * 1.1);
+    const auto pxX = [&](double k) {
+        return plot.x + (std::log10(k) - decadeLo) / (decadeHi - decadeLo) * plot.width;
+    };
+    const auto pxY = [&](double y) { return plot.Bottom() - y / yMax * plot.height; };
+
+    RenderPng(pngPath, kPxWidth, kPxHeight, [&](cairo_t* cr) {
+        SetFont(cr, 18, true);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        ShowText(cr, kPxWidth / 2.0, 16, title, 0.5, 0);
+
+        SetFont(cr, 13);
+        const double yStep = NiceStep(yMax / 6);
+        for (double y = 0; y <= yMax + 1e-9; y += yStep) {
+            if (y > 0) GridLine(cr, plot.x, pxY(y), plot.Right(), pxY(y));
+            TickMark(cr, plot.x - 6, pxY(y), plot.x, pxY(y));
+            ShowText(cr, plot.x - 10, pxY(y), FormatTick(y), 1, 0.5);
+        }
+        for (int d = decadeLo; d <= decadeHi; ++d) {
+            if (d > decadeLo && d < decadeHi)
+                GridLine(cr, pxX(std::pow(10.0, d)), plot.y, pxX(std::pow(10.0, d)), plot.Bottom());
+            TickMark(cr, pxX(std::pow(10.0, d)), plot.Bottom(), pxX(std::pow(10.0, d)),
+                     plot.Bottom() + 6);
+            ShowText(cr, pxX(std::pow(10.0, d)), plot.Bottom() + 10, FormatTick(std::pow(10.0, d)),
+                     0.5, 0);
+            if (d == decadeHi) break;
+            for (int m = 2; m <= 9; ++m)
+                TickMark(cr, pxX(m * std::pow(10.0, d)), plot.Bottom(), pxX(m * std::pow(10.0, d)),
+                         plot.Bottom() + 3);
+        }
+
+        cairo_save(cr);
+        cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
+        cairo_clip(cr);
+        // The thesis's threshold for "low resolution is good enough"; off-scale when every curve
+        // stays well below it.
+        if (5.0 <= yMax) {
+            const double dashes[] = {6.0, 4.0};
+            cairo_set_dash(cr, dashes, 2, 0);
+            cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+            cairo_set_line_width(cr, 1.2);
+            cairo_move_to(cr, plot.x, pxY(5.0));
+            cairo_line_to(cr, plot.Right(), pxY(5.0));
+            cairo_stroke(cr);
+            cairo_set_dash(cr, nullptr, 0, 0);
+            SetFont(cr, 13);
+            ShowText(cr, plot.x + 8, pxY(5.0) - 4, "5%", 0, 1);
+        }
+        std::vector<std::string> labels;
+        std::vector<Rgb> colours;
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        for (std::size_t c = 0; c < curves.size(); ++c) {
+            const auto& curve = curves[c];
+            labels.push_back(curve.label);
+            colours.push_back(MethodColour(c));
+            SetColour(cr, colours.back());
+            cairo_set_line_width(cr, 2);
+            std::vector<Vec2> pxPoints;
+            const std::size_t count = std::min(curve.pixels.size(), curve.extraPercent.size());
+            for (std::size_t i = 0; i < count; ++i) {
+                const double k = curve.pixels[i], y = curve.extraPercent[i];
+                if (k > 0 && std::isfinite(k) && std::isfinite(y))
+                    pxPoints.emplace_back(pxX(k), pxY(y));
+            }
+            for (std::size_t i = 0; i < pxPoints.size(); ++i) {
+                if (i == 0)
+                    cairo_move_to(cr, pxPoints[i].x(), pxPoints[i].y());
+                else
+                    cairo_line_to(cr, pxPoints[i].x(), pxPoints[i].y());
+            }
+            cairo_stroke(cr);
+            for (const Vec2& px : pxPoints) {
+                cairo_arc(cr, px.x(), px.y(), 3.5, 0, 2 * M_PI);
+                cairo_fill(cr);
+            }
+        }
+        cairo_restore(cr);
+        DrawAxesFrame(cr, plot, "decision pixels K", "additional error (%)");
+        DrawLegend(cr, plot, labels, colours, true);
+    });
+}
+
+}  // namespace lexel::cases

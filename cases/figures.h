@@ -1,0 +1,31 @@
+// Figures people would rather look at than read (Cairo, PNG):
+//  - the case diagram: geometry, camera frustum, light, each method's lexel plane and a fan of
+//    lexel rays (every Nth lexel) hitting the geometry; split methods draw each frustum in its
+//    own colour;
+//  - the footprint plot: f across the visible pixels for every method, log-scale y, labelled
+//    axes and a legend;
+//  - the low-resolution decision plot (thesis Fig. 4.1): extra error against decision pixels.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "flatland/methods.h"
+
+namespace lexel::cases {
+
+// Diagram (left) and footprint plot (right) of one case in one PNG. `report.fullPass` and each
+// method's wsAxis/footprints/frusta must be filled (RunFlatlandCase does). Throws
+// std::runtime_error when the file cannot be written.
+void WriteCaseFigure(const std::string& pngPath, const flatland::FlatScene& scene,
+                     const flatland::CaseReport& report);
+
+struct LowresCurve {
+    std::string label;              // e.g. "L1 (average)"
+    std::vector<double> pixels;     // decision pixels K (x, log scale)
+    std::vector<double> extraPercent;  // additional error in percent (y)
+};
+void WriteLowresPlot(const std::string& pngPath, const std::string& title,
+                     const std::vector<LowresCurve>& curves);
+
+}  // namespace lexel::cases

@@ -1,0 +1,82 @@
+#include "cases/flatland_case.h"
+
+#include "cases/json_reader.h"
+#include "solvers/errors.h"
+
+namespace lexel::cases {
+
+bool IsSpatialCase(const nlohmann::json& document) {
+    return document.is_object() && document.contains("lights");
+}
+
+flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document, const std::string& fallbackName) {
+    const JsonField root(document, "");
+    root.ExpectObject({"camera", "light", "lexels", "geometry"},
+                      {"name", "description", "decision_pixels", "frusta"});
+    flatland::FlatScene scene;
+    scene.name = root.Has("name") ? root["name"].String() : fallbackName;
+    if (root.Has("description")) root["description"].String();
+
+    const JsonField camera = root["camera"];
+    camera.ExpectObject({"position", "direction", "fov_deg", "pixels"}, {"near", "far"});
+    scene.camera.wsPosition = camera["position"].Vec2();
+    const Eigen::Vector2d direction = camera["direction"].Vec2();
+    if (!(direction.norm() > 0.0)) camera["direction"].Fail("must be a non-zero vector");
+    scene.camera.wsDirection = direction.normalized();
+    scene.camera.fovDeg = camera["fov_deg"].NumberIn(0.0, 180.0, true, true);
+    scene.camera.pixels = static_cast<int>(camera["pixels"].Integer(1, kMaxPixels));
+    if (camera.Has("near")) scene.camera.near = camera["near"].Positive();
+    if (camera.Has("far")) {
+        scene.camera.far = camera["far"].Positive();
+        if (!(scene.camera.far > scene.camera.near))
+            camera["far"].Fail("must be greater than near (" + FormatNumber(scene.camera.near) + "), got " +
+                               FormatNumber(scene.camera.far));
+    }
+
+    const JsonField light = root["light"];
+    light.ExpectObject({"position"});
+    scene.wsLight = light["position"].Vec2();
+
+    scene.lexels = static_cast<int>(root["lexels"].Integer(1, kMaxLexels));
+
+    const JsonField geometry = root["geometry"];
+    for (const JsonField& polyline : geometry.Array(1)) {
+        std::vector<Eigen::Vector2d> points;
+        for (const JsonField& point : polyline.Array(2)) points.push_back(point.Vec2());
+        scene.geometry.push_back(std::move(points));
+    }
+
+    if (root.Has("decision_pixels"))
+        scene.decisionPixels = static_cast<int>(root["decision_pixels"].Integer(1, kMaxPixels));
+
+    if (root.Has("frusta")) {
+        const JsonField frusta = root["frusta"];
+        frusta.ExpectObject({}, {"max", "budget", "metric"});
+        flatland::FrustaOptions options;
+        if (frusta.Has("max")) options.max = static_cast<int>(frusta["max"].Integer(1, kMaxWedges));
+        if (frusta.Has("budget")) options.budget = static_cast<int>(frusta["budget"].Integer(1, options.max));
+        else if (options.budget > options.max) options.budget = options.max;
+        if (frusta.Has("metric")) {
+            const std::string metric = frusta["metric"].String();
+            if (metric != "l1" && metric != "l2")
+                frusta["metric"].Fail("must be one of l1, l2, got '" + metric + "'");
+            options.metric = ParseMetric(metric);
+        }
+        scene.frusta = options;
+    }
+    flatland::CheckSceneGeometry(scene);
+    return scene;
+}
+
+flatland::FlatScene LoadFlatScene(const std::filesystem::path& path) {
+    const nlohmann::json document = ParseJsonFile(path);
+    if (IsSpatialCase(document))
+        throw InputError(path.string() + ": this is a 3D case (it has \"lights\"); expected a flatland case");
+    try {
+        return FlatSceneFromJson(document, path.stem().string());
+    } catch (const InputError& e) {
+        throw InputError(path.string() + ": " + e.what());
+    }
+}
+
+}  // namespace lexel::cases

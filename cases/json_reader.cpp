@@ -1,0 +1,182 @@
+#include "cases/json_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "solvers/errors.h"
+
+namespace lexel::cases {
+
+namespace {
+
+std::string TypeName(const nlohmann::json& v) {
+    if (v.is_number_integer() || v.is_number_unsigned()) return "an integer";
+    if (v.is_number()) return "a number";
+    if (v.is_string()) return "a string";
+    if (v.is_boolean()) return "a boolean";
+    if (v.is_array()) return "an array";
+    if (v.is_object()) return "an object";
+    return "null";
+}
+
+// JSON pointer escaping (RFC 6901): '~' → "~0", '/' → "~1".
+std::string EscapeKey(std::string_view key) {
+    std::string out;
+    for (char c : key) {
+        if (c == '~') out += "~0";
+        else if (c == '/') out += "~1";
+        else out += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string FormatNumber(double value) {
+    std::ostringstream out;
+    out.precision(15);
+    out << value;
+    return out.str();
+}
+
+nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceName) {
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        // Line and column of the offending byte (nlohmann reports a 1-based byte count).
+        std::size_t line = 1, column = 1;
+        const std::size_t end = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
+        for (std::size_t i = 0; i < end; ++i) {
+            if (text[i] == '\n') ++line, column = 1;
+            else ++column;
+        }
+        std::string reason = e.what();
+        // Keep nlohmann's reason, drop its "[json.exception.parse_error.101] parse error at ...: " prefix.
+        if (const auto colon = reason.find(": "); colon != std::string::npos) reason = reason.substr(colon + 2);
+        throw InputError(sourceName + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                         ": invalid JSON: " + reason);
+    } catch (const nlohmann::json::exception& e) {
+        // A literal that does not fit a double (1e999) fails after parsing, with no position.
+        std::string reason = e.what();
+        if (const auto bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
+        throw InputError(sourceName + ": invalid JSON: " + reason + " (numbers must be finite)");
+    }
+}
+
+nlohmann::json ParseJsonFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string() + ": cannot open the case file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return ParseJsonText(text.str(), path.string());
+}
+
+void JsonField::Fail(const std::string& reason) const {
+    throw InputError((pointer_.empty() ? std::string("/") : pointer_) + ": " + reason);
+}
+
+void JsonField::ExpectObject(std::initializer_list<std::string_view> required,
+                             std::initializer_list<std::string_view> optional) const {
+    if (!value_->is_object()) Fail("must be an object, got " + TypeName(*value_));
+    for (const auto& [key, _] : value_->items()) {
+        bool known = false;
+        for (auto k : required) known |= key == k;
+        for (auto k : optional) known |= key == k;
+        if (!known) {
+            std::string allowed;
+            for (auto k : required) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
+            for (auto k : optional) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
+            throw InputError(pointer_ + "/" + EscapeKey(key) + ": unknown key (allowed here: " + allowed + ")");
+        }
+    }
+    for (auto k : required)
+        if (!value_->contains(std::string(k)))
+            throw InputError(pointer_ + "/" + EscapeKey(k) + ": required key is missing");
+}
+
+bool JsonField::Has(std::string_view key) const {
+    return value_->is_object() && value_->contains(std::string(key));
+}
+
+JsonField JsonField::operator[](std::string_view key) const {
+    if (!value_->is_object()) Fail("must be an object, got " + TypeName(*value_));
+    const auto it = value_->find(std::string(key));
+    if (it == value_->end()) throw InputError(pointer_ + "/" + EscapeKey(key) + ": required key is missing");
+    return JsonField(*it, pointer_ + "/" + EscapeKey(key));
+}
+
+std::vector<JsonField> JsonField::Array(std::size_t minSize) const {
+    if (!value_->is_array()) Fail("must be an array, got " + TypeName(*value_));
+    if (value_->size() < minSize)
+        Fail("must have at least " + std::to_string(minSize) + " elements, got " + std::to_string(value_->size()));
+    std::vector<JsonField> out;
+    for (std::size_t i = 0; i < value_->size(); ++i)
+        out.emplace_back((*value_)[i], pointer_ + "/" + std::to_string(i));
+    return out;
+}
+
+double JsonField::Number() const {
+    if (!value_->is_number()) Fail("must be a number, got " + TypeName(*value_));
+    const double v = value_->get<double>();
+    if (!std::isfinite(v)) Fail("must be finite, got " + FormatNumber(v));
+    return v;
+}
+
+double JsonField::NumberIn(double lo, double hi, bool loOpen, bool hiOpen) const {
+    const double v = Number();
+    const bool ok = (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
+    if (!ok) {
+        auto bound = [](double b) {
+            return std::isinf(b) ? std::string(b > 0 ? "inf" : "-inf") : FormatNumber(b);
+        };
+        Fail("must be in " + std::string(loOpen ? "(" : "[") + bound(lo) + ", " + bound(hi) +
+             (hiOpen ? ")" : "]") + ", got " + FormatNumber(v));
+    }
+    return v;
+}
+
+double JsonField::Positive() const {
+    return NumberIn(0.0, std::numeric_limits<double>::infinity(), true, true);
+}
+
+long long JsonField::Integer(long long lo, long long hi) const {
+    if (!value_->is_number_integer() && !value_->is_number_unsigned()) {
+        if (value_->is_number()) {
+            const double v = value_->get<double>();
+            Fail("must be an integer, got " + FormatNumber(v));
+        }
+        Fail("must be an integer, got " + TypeName(*value_));
+    }
+    if (value_->is_number_unsigned() && value_->get<unsigned long long>() > static_cast<unsigned long long>(hi))
+        Fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + value_->dump());
+    const long long v = value_->get<long long>();
+    if (v < lo || v > hi)
+        Fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(v));
+    return v;
+}
+
+std::string JsonField::String() const {
+    if (!value_->is_string()) Fail("must be a string, got " + TypeName(*value_));
+    return value_->get<std::string>();
+}
+
+bool JsonField::Bool() const {
+    if (!value_->is_boolean()) Fail("must be a boolean, got " + TypeName(*value_));
+    return value_->get<bool>();
+}
+
+Eigen::Vector2d JsonField::Vec2() const {
+    const auto items = Array();
+    if (items.size() != 2) Fail("must be an array of 2 numbers, got " + std::to_string(items.size()) + " elements");
+    return {items[0].Number(), items[1].Number()};
+}
+
+Eigen::Vector3d JsonField::Vec3() const {
+    const auto items = Array();
+    if (items.size() != 3) Fail("must be an array of 3 numbers, got " + std::to_string(items.size()) + " elements");
+    return {items[0].Number(), items[1].Number(), items[2].Number()};
+}
+
+}  // namespace lexel::cases

@@ -1,0 +1,172 @@
+#include "flatland/frustum_split.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "flatland/angle_solvers.h"
+#include "flatland/lexel_remap.h"
+#include "solvers/errors.h"
+#include "solvers/lagrange_allocation.h"
+
+namespace lexel::flatland {
+
+namespace {
+
+struct Group {
+    double lsLow, lsHigh, wsAxis, unitError, term;
+};
+
+}  // namespace
+
+SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels, const FrustaOptions& options,
+                              SplitStrategy strategy) {
+    if (options.metric == Metric::kLinf)
+        throw InputError("/frusta/metric: must be l1 or l2 (the Lagrange allocation needs a sum), got linf");
+    if (options.max < 1 || options.budget < 1)
+        throw InputError("/frusta: max and budget must be at least 1");
+    const int exponent = options.metric == Metric::kL1 ? 1 : 2;
+    const auto& samples = decision.samples;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& s : samples) lo = std::min(lo, s.lsAngle), hi = std::max(hi, s.lsAngle);
+    const int wedges = options.max;
+    const double width = (hi - lo) / wedges;
+    // Bucket the samples by wedge.
+    std::vector<std::vector<std::size_t>> bucket(wedges);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const int w = std::clamp(static_cast<int>(std::floor((samples[i].lsAngle - lo) / width)), 0, wedges - 1);
+        bucket[w].push_back(i);
+    }
+    std::vector<int> occupied;
+    for (int w = 0; w < wedges; ++w)
+        if (!bucket[w].empty()) occupied.push_back(w);
+    const int n = static_cast<int>(occupied.size());
+
+    // A group of occupied wedges [a, b] (indices into `occupied`), optimized at N = 1 and cached.
+    std::map<std::pair<int, int>, Group> cache;
+    auto group = [&](int a, int b) -> const Group& {
+        auto it = cache.find({a, b});
+        if (it != cache.end()) return it->second;
+        std::vector<double> angle, g;
+        for (int k = a; k <= b; ++k)
+            for (std::size_t i : bucket[occupied[k]]) angle.push_back(samples[i].lsAngle), g.push_back(samples[i].dpdAngle);
+        // Outer bounds are the samples' own extremes, exactly; inner ones are wedge edges.
+        const double gLow = occupied[a] == 0 ? lo : lo + occupied[a] * width;
+        const double gHigh = occupied[b] == wedges - 1 ? hi : lo + (occupied[b] + 1) * width;
+        const LexelSamples ls = MakeLexelSamples(angle, g, decision.wsAxis0, 1.0, gLow, gHigh);
+        const AngleSolution sol = exponent == 1 ? SolveL1Exact(ls) : SolveL2Exact(ls);
+        Group out{gLow, gHigh, sol.wsAxis, sol.objective, AllocationTerm(sol.objective, exponent)};
+        return cache.emplace(std::make_pair(a, b), out).first->second;
+    };
+
+    std::vector<std::pair<int, int>> chosen;  // groups as [a, b]
+    if (strategy == SplitStrategy::kGreedy) {
+        for (int k = 0; k < n; ++k) chosen.push_back({k, k});
+        while (static_cast<int>(chosen.size()) > options.budget) {
+            // The total is increasing in Σ terms, so the cheapest merge lowers Σ terms least.
+            std::size_t best = 0;
+            double bestDelta = std::numeric_limits<double>::infinity();
+            for (std::size_t i = 0; i + 1 < chosen.size(); ++i) {
+                const double delta = group(chosen[i].first, chosen[i + 1].second).term -
+                                     group(chosen[i].first, chosen[i].second).term -
+                                     group(chosen[i + 1].first, chosen[i + 1].second).term;
+                if (delta < bestDelta) bestDelta = delta, best = i;
+            }
+            chosen[best].second = chosen[best + 1].second;
+            chosen.erase(chosen.begin() + best + 1);
+        }
+    } else {
+        // best[m][j]: least Σ terms covering occupied wedges [0, j) with m frusta.
+        const int budget = std::min(options.budget, n);
+        const double inf = std::numeric_limits<double>::infinity();
+        std::vector<std::vector<double>> best(budget + 1, std::vector<double>(n + 1, inf));
+        std::vector<std::vector<int>> from(budget + 1, std::vector<int>(n + 1, -1));
+        best[0][0] = 0.0;
+        for (int m = 1; m <= budget; ++m)
+            for (int j = 1; j <= n; ++j)
+                for (int i = m - 1; i < j; ++i) {
+                    if (!std::isfinite(best[m - 1][i])) continue;
+                    const double value = best[m - 1][i] + group(i, j - 1).term;
+                    if (value < best[m][j]) best[m][j] = value, from[m][j] = i;
+                }
+        int m = 1;
+        for (int k = 1; k <= budget; ++k)
+            if (best[k][n] < best[m][n]) m = k;
+        for (int j = n; j > 0; --m) {
+            const int i = from[m][j];
+            chosen.insert(chosen.begin(), {i, j - 1});
+            j = i;
+        }
+    }
+
+    SplitResult result;
+    result.wedges = n;
+    result.exponent = exponent;
+    result.wsAxis0 = decision.wsAxis0;
+    std::vector<double> errors;
+    double termSum = 0.0;
+    for (const auto& [a, b] : chosen) {
+        const Group& g = group(a, b);
+        result.frusta.push_back({g.lsLow, g.lsHigh, g.wsAxis, g.unitError, 0});
+        errors.push_back(g.unitError);
+        termSum += g.term;
+    }
+    const std::vector<int> alloc = AllocateLexelsInteger(errors, exponent, lexels);
+    for (std::size_t j = 0; j < alloc.size(); ++j) result.frusta[j].lexels = alloc[j];
+    result.realTotal = AllocatedTotal(termSum, exponent, lexels);
+    return result;
+}
+
+MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full, const SplitResult& split) {
+    const std::size_t count = split.frusta.size();
+    std::vector<SamplingPass> parts(count);
+    std::vector<std::vector<std::size_t>> partIndex(count);  // full-pass index of each part sample
+    std::vector<double> low(count), high(count);
+    for (std::size_t j = 0; j < count; ++j) low[j] = split.frusta[j].lsLow, high[j] = split.frusta[j].lsHigh;
+    for (std::size_t i = 0; i < full.samples.size(); ++i) {
+        const FlatSample& s = full.samples[i];
+        const double rel = WrapAngle(full.wsAxis0 + s.lsAngle - split.wsAxis0);
+        std::size_t owner = 0;
+        double distance = std::numeric_limits<double>::infinity();
+        for (std::size_t j = 0; j < count; ++j) {
+            const double d = rel < split.frusta[j].lsLow ? split.frusta[j].lsLow - rel
+                             : rel > split.frusta[j].lsHigh ? rel - split.frusta[j].lsHigh
+                                                            : 0.0;
+            if (d < distance) distance = d, owner = j;
+        }
+        parts[owner].samples.push_back(s);
+        partIndex[owner].push_back(i);
+        low[owner] = std::min(low[owner], rel);
+        high[owner] = std::max(high[owner], rel);
+    }
+    MethodReport report;
+    report.footprints.assign(full.samples.size(), 0.0);
+    for (std::size_t j = 0; j < count; ++j) {
+        const PlannedFrustum& planned = split.frusta[j];
+        FrustumReport fr;
+        fr.wsRayLowDeg = (split.wsAxis0 + low[j]) * 180.0 / M_PI;
+        fr.wsRayHighDeg = (split.wsAxis0 + high[j]) * 180.0 / M_PI;
+        fr.lexels = planned.lexels;
+        double axis = planned.wsAxis;
+        auto f = FootprintsFromScratch(parts[j], scene.wsLight, axis, planned.lexels,
+                                       split.wsAxis0 + low[j], split.wsAxis0 + high[j]);
+        if (!f) {  // widened bounds left the planned axis invalid: use the widened bisector
+            axis = split.wsAxis0 + 0.5 * (low[j] + high[j]);
+            f = FootprintsFromScratch(parts[j], scene.wsLight, axis, planned.lexels,
+                                      split.wsAxis0 + low[j], split.wsAxis0 + high[j]);
+            report.note = "a frustum's axis was reset to its bisector after widening";
+        }
+        fr.lexelPlaneDeg = LexelPlaneDegFromAxis(axis);
+        fr.wsAxis = axis;
+        fr.stats = SummarizeFootprints(*f);
+        for (std::size_t k = 0; k < f->size(); ++k) report.footprints[partIndex[j][k]] = (*f)[k];
+        report.frusta.push_back(fr);
+    }
+    report.stats = SummarizeFootprints(report.footprints);
+    report.lexelPlaneDeg = report.frusta.empty() ? 0.0 : report.frusta.front().lexelPlaneDeg;
+    report.wsAxis = report.frusta.empty() ? 0.0 : report.frusta.front().wsAxis;
+    return report;
+}
+
+}  // namespace lexel::flatland

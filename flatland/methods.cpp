@@ -1,0 +1,130 @@
+#include "flatland/methods.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+
+#include "flatland/angle_solvers.h"
+#include "flatland/baselines.h"
+#include "flatland/frustum_split.h"
+#include "flatland/lexel_remap.h"
+#include "flatland/sampling.h"
+#include "solvers/errors.h"
+
+namespace lexel::flatland {
+
+const std::vector<std::string>& FlatlandMethodNames() {
+    static const std::vector<std::string> names = {
+        "optimal-l1", "optimal-l2", "optimal-l2-newton", "optimal-l2-ceres", "optimal-linf",
+        "sweep",      "normal",     "psm",               "psm-thesis",       "plane-optimal",
+        "split-greedy", "split-dp"};
+    return names;
+}
+
+void CheckFlatlandMethod(const std::string& name) {
+    const auto& names = FlatlandMethodNames();
+    if (std::find(names.begin(), names.end(), name) != names.end()) return;
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw InputError("--method: unknown flatland method '" + name + "' (known: " + list + ")");
+}
+
+namespace {
+
+double ElapsedMs(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Measures a single-frustum axis at full resolution. The decision pass may see a narrower sweep
+// than the full pass, so an axis valid for it can be invalid at full resolution; it is then
+// clamped one part in 1e3 of the valid range inside the nearer end, and the note says so.
+MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full, const LexelSamples& fullSamples,
+                          std::string method, double wsAxis, std::string note, double solveMs) {
+    const ValidInterval valid = ValidTInterval(fullSamples);
+    double t = std::tan(wsAxis - fullSamples.wsAxis0);
+    if (!valid.Contains(t) || !std::isfinite(t)) {
+        const double xLo = std::atan(valid.lo), xHi = std::atan(valid.hi);
+        const double inset = 1e-3 * (xHi - xLo);
+        double x = std::atan(t);
+        if (!std::isfinite(t)) x = M_PI / 2;
+        x = std::clamp(x, xLo + inset, xHi - inset);
+        t = std::tan(x);
+        note += (note.empty() ? "" : "; ") + std::string("angle clamped into the valid range");
+    }
+    const double axis = WsAxisFromT(fullSamples, t);
+    const auto footprints = FootprintsFromScratch(full, scene.wsLight, axis, scene.lexels);
+    MethodReport report;
+    report.method = std::move(method);
+    report.lexelPlaneDeg = LexelPlaneDegFromAxis(axis);
+    report.stats = SummarizeFootprints(*footprints);
+    report.wsAxis = axis;
+    report.footprints = std::move(*footprints);
+    report.solveMs = solveMs;
+    report.note = std::move(note);
+    return report;
+}
+
+}  // namespace
+
+CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods, Metric metric) {
+    for (const auto& m : methods) CheckFlatlandMethod(m);
+    CheckSceneGeometry(scene);
+    CaseReport report;
+    report.caseName = scene.name;
+    report.pixels = scene.camera.pixels;
+    report.decisionPixels = scene.DecisionPixels();
+    report.lexels = scene.lexels;
+    report.metric = metric;
+
+    auto start = std::chrono::steady_clock::now();
+    const auto fullPass = std::make_shared<const SamplingPass>(RunSamplingPass(scene, scene.camera.pixels));
+    const SamplingPass& full = *fullPass;
+    report.fullPass = fullPass;
+    const SamplingPass decision = scene.DecisionPixels() == scene.camera.pixels
+                                      ? full
+                                      : RunSamplingPass(scene, scene.DecisionPixels());
+    report.samplingMs = ElapsedMs(start);
+    report.pixelsVisible = static_cast<int>(full.samples.size());
+    const LexelSamples fullSamples = MakeLexelSamples(full, scene.lexels);
+    const LexelSamples samples = MakeLexelSamples(decision, scene.lexels);
+
+    for (const std::string& method : methods) {
+        start = std::chrono::steady_clock::now();
+        if (method == "split-greedy" || method == "split-dp") {
+            const FrustaOptions options = scene.frusta.value_or(FrustaOptions{});
+            const SplitResult split = SplitLightFrustum(decision, scene.lexels, options,
+                                                        method == "split-dp" ? SplitStrategy::kDynamicProgram
+                                                                             : SplitStrategy::kGreedy);
+            const double ms = ElapsedMs(start);
+            MethodReport r = EvaluateSplit(scene, full, split);
+            r.method = method;
+            r.solveMs = ms;
+            report.methods.push_back(std::move(r));
+            continue;
+        }
+        AngleSolution solution;
+        std::string note;
+        if (method == "optimal-l1") solution = SolveL1Exact(samples);
+        else if (method == "optimal-l2") solution = SolveL2Exact(samples);
+        else if (method == "optimal-l2-newton") solution = SolveL2Newton(samples);
+        else if (method == "optimal-l2-ceres") solution = SolveL2Ceres(samples);
+        else if (method == "optimal-linf") solution = SolveLinfExact(samples);
+        else if (method == "sweep") solution = SolveSweep(samples, metric);
+        else {
+            BaselineAxis axis;
+            if (method == "normal") axis = NormalAxis(decision);
+            else if (method == "psm") axis = PsmAxis(scene, decision);
+            else if (method == "psm-thesis") axis = PsmThesisAxis(scene, decision);
+            else axis = PlaneOptimalAxis(scene);
+            solution.wsAxis = axis.wsAxis;
+            solution.note = axis.note;
+        }
+        const double ms = ElapsedMs(start);
+        report.methods.push_back(
+            EvaluateAxis(scene, full, fullSamples, method, solution.wsAxis, solution.note, ms));
+    }
+    return report;
+}
+
+}  // namespace lexel::flatland

@@ -1,0 +1,51 @@
+// Runs named flatland methods on a case: the decision pass feeds each solver, and every reported
+// number is measured from scratch at full resolution at the chosen angle (Chong 2003, §4.1.3).
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "flatland/sampling.h"
+#include "solvers/footprint_metrics.h"
+
+namespace lexel::flatland {
+
+// One light frustum of a split method (thesis §3.2).
+struct FrustumReport {
+    double wsRayLowDeg = 0.0, wsRayHighDeg = 0.0;  // world angles of its two bounding rays
+    double lexelPlaneDeg = 0.0;
+    double wsAxis = 0.0;  // optical axis, world radians
+    int lexels = 0;
+    FootprintStats stats;
+};
+
+struct MethodReport {
+    std::string method;
+    double lexelPlaneDeg = 0.0;  // for split methods: the first frustum's
+    FootprintStats stats;        // over Ω at full resolution
+    double solveMs = 0.0;        // the solver alone, on the decision samples
+    std::string note;            // fallbacks and clamps, if any
+    std::vector<FrustumReport> frusta;  // split methods only
+    double wsAxis = 0.0;                // optical axis, world radians (first frustum's when split)
+    std::vector<double> footprints;     // f per visible full-resolution pixel, in fullPass order
+};
+
+struct CaseReport {
+    std::string caseName;
+    int pixels = 0, decisionPixels = 0, pixelsVisible = 0, lexels = 0;
+    Metric metric = Metric::kL1;  // the metric `sweep` minimizes
+    double samplingMs = 0.0;      // both passes
+    std::vector<MethodReport> methods;
+    std::shared_ptr<const SamplingPass> fullPass;  // the full-resolution pass every number uses
+};
+
+// All method names, in report order.
+const std::vector<std::string>& FlatlandMethodNames();
+// Throws InputError naming an unknown method.
+void CheckFlatlandMethod(const std::string& name);
+
+CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods, Metric metric);
+
+}  // namespace lexel::flatland

@@ -1,0 +1,111 @@
+#include "flatland/sampling.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "solvers/errors.h"
+
+namespace lexel::flatland {
+
+namespace {
+double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+Vec2 Perp(const Vec2& v) { return {-v.y(), v.x()}; }  // +90°
+double Deg2Rad(double d) { return d * std::numbers::pi / 180.0; }
+}  // namespace
+
+std::optional<RayHit> CastPixelRay(const FlatCamera& camera, const std::vector<FlatSegment>& segments,
+                                   int pixels, double p) {
+    const Vec2 d = camera.wsDirection;
+    const Vec2 u = Perp(d);
+    const double sigma = 2.0 * p / pixels - 1.0;
+    const Vec2 ray = d + std::tan(Deg2Rad(0.5 * camera.fovDeg)) * sigma * u;  // ray·d == 1
+    std::optional<RayHit> best;
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+        const Vec2 a = segments[s].a;
+        const Vec2 e = segments[s].b - a;
+        // Solve C + depth·ray = A + λ e  ⇒  depth·ray − λ e = A − C.
+        const double denom = Cross(ray, e);
+        // A ray within 1e-14 (relative) of parallel to the segment only grazes it: no hit.
+        if (std::abs(denom) <= 1e-14 * ray.norm() * e.norm()) continue;
+        const Vec2 ac = a - camera.wsPosition;
+        const double depth = Cross(ac, e) / denom;
+        const double lambda = Cross(ac, ray) / denom;
+        if (lambda < 0.0 || lambda > 1.0) continue;
+        if (!(depth > 0.0) || depth < camera.near || depth > camera.far) continue;
+        if (!best || depth < best->depth)
+            best = RayHit{camera.wsPosition + depth * ray, depth, static_cast<int>(s), lambda};
+    }
+    return best;
+}
+
+double PixelDerivativeAlong(const FlatCamera& camera, int pixels, const Vec2& wsPoint,
+                            const Vec2& wsTangent) {
+    const Vec2 d = camera.wsDirection;
+    const Vec2 u = Perp(d);
+    const Vec2 cs = wsPoint - camera.wsPosition;
+    const double xc = cs.dot(d), yc = cs.dot(u);
+    const double scale = pixels / (2.0 * std::tan(Deg2Rad(0.5 * camera.fovDeg)));
+    return scale * (wsTangent.dot(u) * xc - wsTangent.dot(d) * yc) / (xc * xc);
+}
+
+SamplingPass RunSamplingPass(const FlatScene& scene, int pixels) {
+    const std::vector<FlatSegment> segments = Segments(scene);
+    SamplingPass pass;
+    pass.pixels = pixels;
+    pass.samples.reserve(pixels);
+    double wsRef = 0.0;  // world angle of the first visible point, to unwrap the others
+    for (int k = 0; k < pixels; ++k) {
+        const double p = k + 0.5;
+        const auto hit = CastPixelRay(scene.camera, segments, pixels, p);
+        if (!hit) continue;
+        FlatSample s;
+        s.pixel = k;
+        s.p = p;
+        s.wsPoint = hit->wsPoint;
+        s.wsTangent = segments[hit->segment].b - segments[hit->segment].a;
+        s.depth = hit->depth;
+        s.segment = hit->segment;
+        s.dpdLambda = PixelDerivativeAlong(scene.camera, pixels, s.wsPoint, s.wsTangent);
+        const Vec2 toPoint = s.wsPoint - scene.wsLight;
+        const double dAlphadLambda = Cross(toPoint, s.wsTangent) / toPoint.squaredNorm();
+        // A light within 1e-12 rad per unit λ of the segment's line sees the segment edge-on: every
+        // pixel on it maps to one lexel and its footprint is unbounded.
+        if (std::abs(dAlphadLambda) * toPoint.norm() <= 1e-12 * s.wsTangent.norm()) {
+            const auto& seg = segments[hit->segment];
+            throw InputError("/geometry/" + std::to_string(seg.polyline) + "/" +
+                             std::to_string(seg.index) +
+                             ": the light lies on this visible segment's line, so its footprint "
+                             "dp/dl is unbounded");
+        }
+        s.dpdAngle = std::abs(s.dpdLambda / dAlphadLambda);
+        const double wsAngle = std::atan2(toPoint.y(), toPoint.x());
+        if (pass.samples.empty()) wsRef = wsAngle;
+        s.lsAngle = WrapAngle(wsAngle - wsRef);  // exact unwrapping while the sweep is < 180°
+        pass.samples.push_back(s);
+    }
+    if (pass.samples.empty())
+        throw InputError("/geometry: no camera pixel sees any geometry (Ω is empty)");
+
+    // The sweep: with all angles taken relative to one visible point, a set that fits in an open
+    // half-plane has relative angles spanning less than π, and one that does not spans at least π.
+    double lo = 0.0, hi = 0.0;
+    for (const auto& s : pass.samples) lo = std::min(lo, s.lsAngle), hi = std::max(hi, s.lsAngle);
+    const double sweep = hi - lo;
+    if (sweep >= std::numbers::pi * (1.0 - 1e-12))
+        throw InputError("/light/position: the visible points span " +
+                         std::to_string(sweep * 180.0 / std::numbers::pi) +
+                         " degrees as seen from the light; no lexel plane has them all in front");
+    // Zero extent: all visible points on one ray from the light (1e-12 rad is the angular
+    // resolution of double-precision atan2 at unit scale).
+    if (sweep <= 1e-12)
+        throw InputError("/light/position: all visible points lie on one ray from the light; the "
+                         "lexel plane would have zero extent");
+    const double mid = 0.5 * (lo + hi);
+    pass.wsAxis0 = WrapAngle(wsRef + mid);
+    pass.halfSweep = 0.5 * sweep;
+    for (auto& s : pass.samples) s.lsAngle -= mid;
+    return pass;
+}
+
+}  // namespace lexel::flatland

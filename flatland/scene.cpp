@@ -1,0 +1,91 @@
+#include "flatland/scene.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "solvers/errors.h"
+
+namespace lexel::flatland {
+
+std::vector<FlatSegment> Segments(const FlatScene& scene) {
+    std::vector<FlatSegment> segments;
+    for (std::size_t i = 0; i < scene.geometry.size(); ++i) {
+        const auto& polyline = scene.geometry[i];
+        for (std::size_t j = 0; j + 1 < polyline.size(); ++j)
+            segments.push_back({polyline[j], polyline[j + 1], static_cast<int>(i), static_cast<int>(j)});
+    }
+    return segments;
+}
+
+namespace {
+
+// Distance from p to segment [a, b].
+double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+    const Vec2 e = b - a;
+    const double len2 = e.squaredNorm();
+    const double s = len2 > 0 ? std::clamp((p - a).dot(e) / len2, 0.0, 1.0) : 0.0;
+    return (a + s * e - p).norm();
+}
+
+// Even-odd point-in-polygon for a closed polyline (first point == last point).
+bool InsideClosed(const Vec2& p, const std::vector<Vec2>& polyline) {
+    bool inside = false;
+    for (std::size_t j = 0; j + 1 < polyline.size(); ++j) {
+        const Vec2& a = polyline[j];
+        const Vec2& b = polyline[j + 1];
+        if ((a.y() > p.y()) != (b.y() > p.y())) {
+            const double x = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+            if (x > p.x()) inside = !inside;
+        }
+    }
+    return inside;
+}
+
+double SceneScale(const FlatScene& scene) {
+    double scale = (scene.camera.wsPosition - scene.wsLight).norm();
+    for (const auto& polyline : scene.geometry)
+        for (const Vec2& p : polyline) scale = std::max(scale, (p - scene.camera.wsPosition).norm());
+    return std::max(scale, 1e-300);
+}
+
+}  // namespace
+
+void CheckSceneGeometry(const FlatScene& scene) {
+    // Distances below 1e-12 of the scene's size are "on" a segment: at double precision such a
+    // point cannot be told apart from one lying on it.
+    const double onEps = 1e-12 * SceneScale(scene);
+    for (std::size_t i = 0; i < scene.geometry.size(); ++i) {
+        const auto& polyline = scene.geometry[i];
+        const std::string where = "/geometry/" + std::to_string(i);
+        for (std::size_t j = 0; j + 1 < polyline.size(); ++j) {
+            const std::string seg = where + "/" + std::to_string(j);
+            if ((polyline[j + 1] - polyline[j]).norm() <= onEps)
+                throw InputError(seg + ": zero-length segment (points " + std::to_string(j) +
+                                 " and " + std::to_string(j + 1) + " coincide)");
+            if (DistanceToSegment(scene.wsLight, polyline[j], polyline[j + 1]) <= onEps)
+                throw InputError("/light/position: the light lies on segment " + seg);
+            if (DistanceToSegment(scene.camera.wsPosition, polyline[j], polyline[j + 1]) <= onEps)
+                throw InputError("/camera/position: the camera lies on segment " + seg);
+        }
+        const bool closed = polyline.size() >= 4 && (polyline.front() - polyline.back()).norm() <= onEps;
+        if (closed && InsideClosed(scene.wsLight, polyline))
+            throw InputError("/light/position: the light is inside the closed polyline " + where);
+        if (closed && InsideClosed(scene.camera.wsPosition, polyline))
+            throw InputError("/camera/position: the camera is inside the closed polyline " + where);
+    }
+}
+
+double WrapAngle(double radians) {
+    double a = std::remainder(radians, 2.0 * std::numbers::pi);  // [-π, π]
+    if (a <= -std::numbers::pi) a += 2.0 * std::numbers::pi;
+    return a;
+}
+
+double LexelPlaneDegFromAxis(double wsAxisAngle) {
+    double deg = std::remainder(wsAxisAngle * 180.0 / std::numbers::pi, 180.0);  // [-90, 90]
+    if (deg <= -90.0) deg += 180.0;
+    return deg;
+}
+
+}  // namespace lexel::flatland

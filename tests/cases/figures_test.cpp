@@ -1,0 +1,157 @@
+#include "cases/figures.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "flatland/methods.h"
+#include "spatial/image_io.h"
+
+namespace lexel::cases {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory per test, removed afterwards, so parallel runs do not collide.
+struct ScratchDir {
+    ScratchDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+        path = fs::temp_directory_path() /
+               ("lexel_figures_" + std::string(info->name()) + "_" + std::to_string(stamp));
+        fs::create_directories(path);
+    }
+    ~ScratchDir() {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+    }
+    fs::path path;
+};
+
+flatland::FlatScene MakeScene() {
+    flatland::FlatScene scene;
+    scene.name = "figures test: ground and a step";
+    scene.camera.wsPosition = {0, 2};
+    scene.camera.wsDirection = flatland::Vec2(1, -0.25).normalized();
+    scene.camera.fovDeg = 60;
+    scene.camera.pixels = 200;
+    scene.wsLight = {-3, 10};
+    scene.lexels = 200;
+    scene.geometry = {{{-50, 0}, {200, 0}}, {{6, 0}, {6, 2}, {8, 2.5}}};
+    return scene;
+}
+
+// Non-white pixels and distinct 8-bit colours: a blank or single-colour image fails both.
+std::pair<int, int> CountInk(const spatial::Image& image) {
+    int nonWhite = 0;
+    std::set<std::tuple<int, int, int>> colours;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const int r = static_cast<int>(std::lround(255 * image.at(x, y, 0)));
+            const int g = static_cast<int>(std::lround(255 * image.at(x, y, 1)));
+            const int b = static_cast<int>(std::lround(255 * image.at(x, y, 2)));
+            if (r < 250 || g < 250 || b < 250) ++nonWhite;
+            colours.emplace(r, g, b);
+        }
+    return {nonWhite, static_cast<int>(colours.size())};
+}
+
+bool HasPartialFile(const fs::path& dir) {
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().filename().string().find(".partial") != std::string::npos) return true;
+    return false;
+}
+
+TEST(Figures, CaseFigureIsATwoPanelPngWithContent) {
+    const ScratchDir scratch;
+    const flatland::FlatScene scene = MakeScene();
+    const std::vector<std::string> methods = {"optimal-l1", "normal", "psm", "split-dp"};
+    const flatland::CaseReport report = flatland::RunFlatlandCase(scene, methods, Metric::kL1);
+    ASSERT_EQ(report.methods.size(), methods.size());
+
+    const fs::path path = scratch.path / "case.png";
+    WriteCaseFigure(path.string(), scene, report);
+    ASSERT_TRUE(fs::exists(path));
+    EXPECT_FALSE(HasPartialFile(scratch.path));
+
+    const spatial::Image image = spatial::ReadImage(path.string());
+    EXPECT_EQ(image.width, 1600);
+    EXPECT_EQ(image.height, 700);
+    ASSERT_GE(image.channels, 3);
+    const auto [nonWhite, colours] = CountInk(image);
+    EXPECT_GT(nonWhite, image.width * image.height / 100);
+    EXPECT_GE(colours, 3);
+    // The background is white: the top-left corner is outside both panels.
+    EXPECT_FLOAT_EQ(image.at(2, 2, 0), 1.0f);
+}
+
+TEST(Figures, CaseFigureIntoMissingDirectoryThrowsAndLeavesNothing) {
+    const ScratchDir scratch;
+    const flatland::FlatScene scene = MakeScene();
+    const std::vector<std::string> methods = {"normal"};
+    const flatland::CaseReport report = flatland::RunFlatlandCase(scene, methods, Metric::kL1);
+    const fs::path missing = scratch.path / "missing";
+    const fs::path path = missing / "case.png";
+    EXPECT_THROW(WriteCaseFigure(path.string(), scene, report), std::runtime_error);
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_FALSE(fs::exists(missing));
+    EXPECT_FALSE(HasPartialFile(scratch.path));
+}
+
+TEST(Figures, CaseFigureWithoutFullPassIsRejected) {
+    const ScratchDir scratch;
+    const flatland::FlatScene scene = MakeScene();
+    const fs::path path = scratch.path / "case.png";
+    EXPECT_ANY_THROW(WriteCaseFigure(path.string(), scene, flatland::CaseReport{}));
+    EXPECT_FALSE(fs::exists(path));
+}
+
+std::vector<LowresCurve> MakeCurves() {
+    return {{"L1 (average)", {16, 32, 64, 128, 256, 512}, {14.0, 7.5, 3.1, 1.2, 0.4, 0.1}},
+            {"L2 (average)", {16, 32, 64, 128, 256, 512}, {9.0, 4.0, 2.2, 0.8, 0.3, 0.05}}};
+}
+
+TEST(Figures, LowresPlotIsAPngWithContent) {
+    const ScratchDir scratch;
+    const fs::path path = scratch.path / "lowres.png";
+    WriteLowresPlot(path.string(), "extra error against decision pixels", MakeCurves());
+    ASSERT_TRUE(fs::exists(path));
+    EXPECT_FALSE(HasPartialFile(scratch.path));
+    const spatial::Image image = spatial::ReadImage(path.string());
+    EXPECT_EQ(image.width, 900);
+    EXPECT_EQ(image.height, 600);
+    ASSERT_GE(image.channels, 3);
+    const auto [nonWhite, colours] = CountInk(image);
+    EXPECT_GT(nonWhite, image.width * image.height / 200);
+    EXPECT_GE(colours, 3);
+}
+
+TEST(Figures, LowresPlotToleratesEmptyAndDegenerateCurves) {
+    const ScratchDir scratch;
+    const fs::path path = scratch.path / "lowres.png";
+    const std::vector<LowresCurve> curves = {
+        {"empty", {}, {}}, {"one point", {100}, {0.0}}, {"bad", {-1, 0, NAN}, {1, 2, 3}}};
+    WriteLowresPlot(path.string(), "degenerate", curves);
+    EXPECT_TRUE(fs::exists(path));
+    WriteLowresPlot(path.string(), "no curves", {});  // overwrites the previous figure
+    EXPECT_TRUE(fs::exists(path));
+    EXPECT_FALSE(HasPartialFile(scratch.path));
+}
+
+TEST(Figures, LowresPlotIntoMissingDirectoryThrowsAndLeavesNothing) {
+    const ScratchDir scratch;
+    const fs::path path = scratch.path / "missing" / "lowres.png";
+    EXPECT_THROW(WriteLowresPlot(path.string(), "title", MakeCurves()), std::runtime_error);
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_FALSE(HasPartialFile(scratch.path));
+}
+
+}  // namespace
+}  // namespace lexel::cases

@@ -1,0 +1,78 @@
+#include "cases/flatland_case.h"
+
+#include <gtest/gtest.h>
+
+#include "cases/json_reader.h"
+#include "solvers/errors.h"
+
+namespace lexel::cases {
+namespace {
+
+const char* kGood = R"({
+  "name": "single_plane",
+  "camera":   {"position": [0, 2], "direction": [2, -0.5], "fov_deg": 60, "pixels": 1000},
+  "light":    {"position": [-3, 10]},
+  "lexels":   1000,
+  "geometry": [ [[-50, 0], [200, 0]],  [[6, 0], [6, 2], [8, 2.5]] ],
+  "decision_pixels": 100,
+  "frusta": {"max": 8, "budget": 3, "metric": "l2"}
+})";
+
+std::string ErrorFor(const std::string& pointerPatch) {
+    nlohmann::json doc = nlohmann::json::parse(kGood);
+    doc = doc.patch(nlohmann::json::parse(pointerPatch));
+    try {
+        FlatSceneFromJson(doc, "x");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(FlatlandCase, LoadsEveryField) {
+    const auto scene = FlatSceneFromJson(nlohmann::json::parse(kGood), "fallback");
+    EXPECT_EQ(scene.name, "single_plane");
+    EXPECT_NEAR(scene.camera.wsDirection.norm(), 1.0, 1e-15);
+    EXPECT_NEAR(scene.camera.wsDirection.x(), 2 / std::sqrt(4.25), 1e-15);
+    EXPECT_EQ(scene.camera.pixels, 1000);
+    EXPECT_EQ(scene.lexels, 1000);
+    EXPECT_EQ(scene.geometry.size(), 2u);
+    EXPECT_EQ(scene.geometry[1].size(), 3u);
+    EXPECT_EQ(scene.DecisionPixels(), 100);
+    ASSERT_TRUE(scene.frusta.has_value());
+    EXPECT_EQ(scene.frusta->max, 8);
+    EXPECT_EQ(scene.frusta->budget, 3);
+    EXPECT_EQ(scene.frusta->metric, Metric::kL2);
+}
+
+TEST(FlatlandCase, BadFieldsAreNamed) {
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/camera/fov_deg", "value": 190}])"),
+              "/camera/fov_deg: must be in (0, 180), got 190");
+    EXPECT_EQ(ErrorFor(R"([{"op": "add", "path": "/camera/zoom", "value": 2}])"),
+              "/camera/zoom: unknown key (allowed here: position, direction, fov_deg, pixels, near, far)");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/camera/direction", "value": [0, 0]}])"),
+              "/camera/direction: must be a non-zero vector");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/lexels", "value": 0}])"),
+              "/lexels: must be in [1, 1000000000], got 0");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/geometry/1", "value": [[1, 1]]}])"),
+              "/geometry/1: must have at least 2 elements, got 1");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/geometry/1", "value": [[1, 1], [1, 1]]}])"),
+              "/geometry/1/0: zero-length segment (points 0 and 1 coincide)");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/light/position", "value": [10, 0]}])"),
+              "/light/position: the light lies on segment /geometry/0/0");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/frusta/budget", "value": 9}])"),
+              "/frusta/budget: must be in [1, 8], got 9");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/frusta/metric", "value": "linf"}])"),
+              "/frusta/metric: must be one of l1, l2, got 'linf'");
+    EXPECT_EQ(ErrorFor(R"([{"op": "add", "path": "/camera/far", "value": 1}, {"op": "add", "path": "/camera/near", "value": 2}])"),
+              "/camera/far: must be greater than near (2), got 1");
+    EXPECT_EQ(ErrorFor(R"([{"op": "remove", "path": "/light"}])"), "/light: required key is missing");
+}
+
+TEST(FlatlandCase, SpatialCasesAreRecognized) {
+    EXPECT_TRUE(IsSpatialCase(nlohmann::json::parse(R"({"lights": []})")));
+    EXPECT_FALSE(IsSpatialCase(nlohmann::json::parse(kGood)));
+}
+
+}  // namespace
+}  // namespace lexel::cases
