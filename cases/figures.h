@@ -21,8 +21,8 @@ void WriteCaseFigure(const std::string& pngPath, const flatland::FlatScene& scen
                      const flatland::CaseReport& report);
 
 struct LowresCurve {
-    std::string label;              // e.g. "L1 (average)"
-    std::vector<double> pixels;     // decision pixels K (x, log scale)
+    std::string label;                 // e.g. "L1 (average)"
+    std::vector<double> pixels;        // decision pixels K (x, log scale)
     std::vector<double> extraPercent;  // additional error in percent (y)
 };
 void WriteLowresPlot(const std::string& pngPath, const std::string& title,

@@ -9,7 +9,8 @@ bool IsSpatialCase(const nlohmann::json& document) {
     return document.is_object() && document.contains("lights");
 }
 
-flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document, const std::string& fallbackName) {
+flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
+                                      const std::string& fallbackName) {
     const JsonField root(document, "");
     root.ExpectObject({"camera", "light", "lexels", "geometry"},
                       {"name", "description", "decision_pixels", "frusta"});
@@ -29,8 +30,8 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document, const std:
     if (camera.Has("far")) {
         scene.camera.far = camera["far"].Positive();
         if (!(scene.camera.far > scene.camera.near))
-            camera["far"].Fail("must be greater than near (" + FormatNumber(scene.camera.near) + "), got " +
-                               FormatNumber(scene.camera.far));
+            camera["far"].Fail("must be greater than near (" + FormatNumber(scene.camera.near) +
+                               "), got " + FormatNumber(scene.camera.far));
     }
 
     const JsonField light = root["light"];
@@ -54,8 +55,10 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document, const std:
         frusta.ExpectObject({}, {"max", "budget", "metric"});
         flatland::FrustaOptions options;
         if (frusta.Has("max")) options.max = static_cast<int>(frusta["max"].Integer(1, kMaxWedges));
-        if (frusta.Has("budget")) options.budget = static_cast<int>(frusta["budget"].Integer(1, options.max));
-        else if (options.budget > options.max) options.budget = options.max;
+        if (frusta.Has("budget"))
+            options.budget = static_cast<int>(frusta["budget"].Integer(1, options.max));
+        else if (options.budget > options.max)
+            options.budget = options.max;
         if (frusta.Has("metric")) {
             const std::string metric = frusta["metric"].String();
             if (metric != "l1" && metric != "l2")
@@ -71,7 +74,8 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document, const std:
 flatland::FlatScene LoadFlatScene(const std::filesystem::path& path) {
     const nlohmann::json document = ParseJsonFile(path);
     if (IsSpatialCase(document))
-        throw InputError(path.string() + ": this is a 3D case (it has \"lights\"); expected a flatland case");
+        throw InputError(path.string() +
+                         ": this is a 3D case (it has \"lights\"); expected a flatland case");
     try {
         return FlatSceneFromJson(document, path.stem().string());
     } catch (const InputError& e) {

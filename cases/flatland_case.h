@@ -14,7 +14,8 @@ inline constexpr long long kMaxLexels = 1'000'000'000;
 inline constexpr long long kMaxWedges = 4096;
 
 // Validates a parsed document; throws InputError naming the JSON pointer and the reason.
-flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document, const std::string& fallbackName);
+flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
+                                      const std::string& fallbackName);
 flatland::FlatScene LoadFlatScene(const std::filesystem::path& path);
 
 // True when the document is a 3D case (it has "lights"); false for flatland.

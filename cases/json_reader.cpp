@@ -25,9 +25,12 @@ std::string TypeName(const nlohmann::json& v) {
 std::string EscapeKey(std::string_view key) {
     std::string out;
     for (char c : key) {
-        if (c == '~') out += "~0";
-        else if (c == '/') out += "~1";
-        else out += c;
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
     }
     return out;
 }
@@ -49,18 +52,23 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceN
         std::size_t line = 1, column = 1;
         const std::size_t end = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
         for (std::size_t i = 0; i < end; ++i) {
-            if (text[i] == '\n') ++line, column = 1;
-            else ++column;
+            if (text[i] == '\n')
+                ++line, column = 1;
+            else
+                ++column;
         }
         std::string reason = e.what();
-        // Keep nlohmann's reason, drop its "[json.exception.parse_error.101] parse error at ...: " prefix.
-        if (const auto colon = reason.find(": "); colon != std::string::npos) reason = reason.substr(colon + 2);
+        // Keep nlohmann's reason, drop its "[json.exception.parse_error.101] parse error at ...: "
+        // prefix.
+        if (const auto colon = reason.find(": "); colon != std::string::npos)
+            reason = reason.substr(colon + 2);
         throw InputError(sourceName + ":" + std::to_string(line) + ":" + std::to_string(column) +
                          ": invalid JSON: " + reason);
     } catch (const nlohmann::json::exception& e) {
         // A literal that does not fit a double (1e999) fails after parsing, with no position.
         std::string reason = e.what();
-        if (const auto bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
+        if (const auto bracket = reason.find("] "); bracket != std::string::npos)
+            reason = reason.substr(bracket + 2);
         throw InputError(sourceName + ": invalid JSON: " + reason + " (numbers must be finite)");
     }
 }
@@ -88,7 +96,8 @@ void JsonField::ExpectObject(std::initializer_list<std::string_view> required,
             std::string allowed;
             for (auto k : required) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
             for (auto k : optional) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
-            throw InputError(pointer_ + "/" + EscapeKey(key) + ": unknown key (allowed here: " + allowed + ")");
+            throw InputError(pointer_ + "/" + EscapeKey(key) +
+                             ": unknown key (allowed here: " + allowed + ")");
         }
     }
     for (auto k : required)
@@ -103,14 +112,16 @@ bool JsonField::Has(std::string_view key) const {
 JsonField JsonField::operator[](std::string_view key) const {
     if (!value_->is_object()) Fail("must be an object, got " + TypeName(*value_));
     const auto it = value_->find(std::string(key));
-    if (it == value_->end()) throw InputError(pointer_ + "/" + EscapeKey(key) + ": required key is missing");
+    if (it == value_->end())
+        throw InputError(pointer_ + "/" + EscapeKey(key) + ": required key is missing");
     return JsonField(*it, pointer_ + "/" + EscapeKey(key));
 }
 
 std::vector<JsonField> JsonField::Array(std::size_t minSize) const {
     if (!value_->is_array()) Fail("must be an array, got " + TypeName(*value_));
     if (value_->size() < minSize)
-        Fail("must have at least " + std::to_string(minSize) + " elements, got " + std::to_string(value_->size()));
+        Fail("must have at least " + std::to_string(minSize) + " elements, got " +
+             std::to_string(value_->size()));
     std::vector<JsonField> out;
     for (std::size_t i = 0; i < value_->size(); ++i)
         out.emplace_back((*value_)[i], pointer_ + "/" + std::to_string(i));
@@ -149,11 +160,14 @@ long long JsonField::Integer(long long lo, long long hi) const {
         }
         Fail("must be an integer, got " + TypeName(*value_));
     }
-    if (value_->is_number_unsigned() && value_->get<unsigned long long>() > static_cast<unsigned long long>(hi))
-        Fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + value_->dump());
+    if (value_->is_number_unsigned() &&
+        value_->get<unsigned long long>() > static_cast<unsigned long long>(hi))
+        Fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+             value_->dump());
     const long long v = value_->get<long long>();
     if (v < lo || v > hi)
-        Fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(v));
+        Fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+             std::to_string(v));
     return v;
 }
 
@@ -169,13 +183,15 @@ bool JsonField::Bool() const {
 
 Eigen::Vector2d JsonField::Vec2() const {
     const auto items = Array();
-    if (items.size() != 2) Fail("must be an array of 2 numbers, got " + std::to_string(items.size()) + " elements");
+    if (items.size() != 2)
+        Fail("must be an array of 2 numbers, got " + std::to_string(items.size()) + " elements");
     return {items[0].Number(), items[1].Number()};
 }
 
 Eigen::Vector3d JsonField::Vec3() const {
     const auto items = Array();
-    if (items.size() != 3) Fail("must be an array of 3 numbers, got " + std::to_string(items.size()) + " elements");
+    if (items.size() != 3)
+        Fail("must be an array of 3 numbers, got " + std::to_string(items.size()) + " elements");
     return {items[0].Number(), items[1].Number(), items[2].Number()};
 }
 

@@ -20,7 +20,7 @@ nlohmann::json ParseJsonFile(const std::filesystem::path& path);
 nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceName);
 
 class JsonField {
-public:
+  public:
     JsonField(const nlohmann::json& value, std::string pointer)
         : value_(&value), pointer_(std::move(pointer)) {}
 
@@ -45,7 +45,7 @@ public:
     Eigen::Vector2d Vec2() const;
     Eigen::Vector3d Vec3() const;
 
-private:
+  private:
     const nlohmann::json* value_;
     std::string pointer_;
 };

@@ -1,7 +1,6 @@
 // lexel — the command line. Subcommands:
-//   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv] [--out DIR]
-//   lexel tables [--out DIR] [--cases DIR]
-//   lexel lowres CASE.json [--out DIR]
+//   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv]
+//   [--out DIR] lexel tables [--out DIR] [--cases DIR] lexel lowres CASE.json [--out DIR]
 // Exit status: 0 success, 2 bad input (one line on stderr naming the field and the reason),
 // 1 an I/O failure while writing results.
 #include <CLI/CLI.hpp>
@@ -22,7 +21,8 @@ namespace {
 using namespace lexel;
 
 int RunCommand(const std::vector<std::string>& casePaths, std::vector<std::string> methods,
-               const std::string& metricName, const std::string& format, const std::string& outDir) {
+               const std::string& metricName, const std::string& format,
+               const std::string& outDir) {
     const Metric metric = ParseMetric(metricName);
     if (methods.empty()) methods = flatland::FlatlandMethodNames();
     for (const auto& m : methods) flatland::CheckFlatlandMethod(m);
@@ -36,8 +36,10 @@ int RunCommand(const std::vector<std::string>& casePaths, std::vector<std::strin
             throw InputError(path + ": " + e.what());
         }
     }
-    if (format == "json") std::cout << cases::RunJson(reports).dump(2) << '\n';
-    else if (format == "csv") std::cout << cases::RunCsv(reports);
+    if (format == "json")
+        std::cout << cases::RunJson(reports).dump(2) << '\n';
+    else if (format == "csv")
+        std::cout << cases::RunCsv(reports);
     else
         for (std::size_t i = 0; i < reports.size(); ++i)
             std::cout << (i ? "\n" : "") << cases::CaseTable(reports[i]);
@@ -61,23 +63,32 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("lexel ") + LEXEL_VERSION);
     app.require_subcommand(1);
 
-    auto* run = app.add_subcommand("run", "Run methods on case files and report their footprint metrics");
+    auto* run =
+        app.add_subcommand("run", "Run methods on case files and report their footprint metrics");
     std::vector<std::string> casePaths, methods;
     std::string metric = "l1", format = "table", runOut;
     run->add_option("cases", casePaths, "Case files (JSON)")->required()->check(CLI::ExistingFile);
     run->add_option("--method", methods, "Methods to run (default: all)");
-    run->add_option("--metric", metric, "Metric the sweep minimizes")->check(CLI::IsMember({"l1", "l2", "linf"}));
-    run->add_option("--format", format, "Output format")->check(CLI::IsMember({"table", "json", "csv"}));
+    run->add_option("--metric", metric, "Metric the sweep minimizes")
+        ->check(CLI::IsMember({"l1", "l2", "linf"}));
+    run->add_option("--format", format, "Output format")
+        ->check(CLI::IsMember({"table", "json", "csv"}));
     run->add_option("--out", runOut, "Also write <case>.json/.csv/.md into this directory");
 
-    auto* tables = app.add_subcommand("tables", "Reproduce the thesis tables (Chong 2003, ch. 4.1.3)");
+    auto* tables =
+        app.add_subcommand("tables", "Reproduce the thesis tables (Chong 2003, ch. 4.1.3)");
     std::string tablesOut = "out", casesDir;
-    tables->add_option("--out", tablesOut, "Directory for the Markdown, CSV and figures")->capture_default_str();
-    tables->add_option("--cases", casesDir, "Directory holding the four thesis cases (default: the shipped ones)");
+    tables->add_option("--out", tablesOut, "Directory for the Markdown, CSV and figures")
+        ->capture_default_str();
+    tables->add_option("--cases", casesDir,
+                       "Directory holding the four thesis cases (default: the shipped ones)");
 
-    auto* lowres = app.add_subcommand("lowres", "Low-resolution decision study (thesis 4.1.1, Fig. 4.1)");
+    auto* lowres =
+        app.add_subcommand("lowres", "Low-resolution decision study (thesis 4.1.1, Fig. 4.1)");
     std::string lowresCase, lowresOut;
-    lowres->add_option("case", lowresCase, "Case file (JSON)")->required()->check(CLI::ExistingFile);
+    lowres->add_option("case", lowresCase, "Case file (JSON)")
+        ->required()
+        ->check(CLI::ExistingFile);
     lowres->add_option("--out", lowresOut, "Also write the table as CSV/Markdown and a plot here");
 
     try {

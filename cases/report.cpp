@@ -67,7 +67,8 @@ std::string TextTable::RenderMarkdown() const {
         out << '\n';
         if (r == 0) {
             out << '|';
-            for (std::size_t c = 0; c < rows_[0].size(); ++c) out << (c == 0 ? " --- |" : " ---: |");
+            for (std::size_t c = 0; c < rows_[0].size(); ++c)
+                out << (c == 0 ? " --- |" : " ---: |");
             out << '\n';
         }
     }
@@ -77,9 +78,14 @@ std::string TextTable::RenderMarkdown() const {
 namespace {
 
 nlohmann::json StatsJson(const FootprintStats& s) {
-    return {{"worst", s.worst()}, {"average", s.average},   {"mean_plus_sigma", s.meanPlusSigma},
-            {"median", s.median}, {"l1", s.l1},             {"l2", s.l2},
-            {"linf", s.linf},     {"pixels_visible", s.count}};
+    return {{"worst", s.worst()},
+            {"average", s.average},
+            {"mean_plus_sigma", s.meanPlusSigma},
+            {"median", s.median},
+            {"l1", s.l1},
+            {"l2", s.l2},
+            {"linf", s.linf},
+            {"pixels_visible", s.count}};
 }
 
 }  // namespace
@@ -125,33 +131,38 @@ nlohmann::json RunJson(std::span<const flatland::CaseReport> reports) {
 std::string RunCsv(std::span<const flatland::CaseReport> reports) {
     std::ostringstream out;
     out.precision(17);
-    out << "case,method,lexel_plane_deg,worst,average,mean_plus_sigma,median,l1,l2,linf,pixels_visible,"
+    out << "case,method,lexel_plane_deg,worst,average,mean_plus_sigma,median,l1,l2,linf,pixels_"
+           "visible,"
            "solve_ms,frusta,note\n";
     for (const auto& r : reports)
         for (const auto& m : r.methods) {
             std::string note = m.note;
             for (char& c : note)
                 if (c == ',' || c == '"') c = ';';
-            out << r.caseName << ',' << m.method << ',' << m.lexelPlaneDeg << ',' << m.stats.worst() << ','
-                << m.stats.average << ',' << m.stats.meanPlusSigma << ',' << m.stats.median << ','
-                << m.stats.l1 << ',' << m.stats.l2 << ',' << m.stats.linf << ',' << m.stats.count << ','
-                << m.solveMs << ',' << (m.frusta.empty() ? 1 : m.frusta.size()) << ',' << note << '\n';
+            out << r.caseName << ',' << m.method << ',' << m.lexelPlaneDeg << ',' << m.stats.worst()
+                << ',' << m.stats.average << ',' << m.stats.meanPlusSigma << ',' << m.stats.median
+                << ',' << m.stats.l1 << ',' << m.stats.l2 << ',' << m.stats.linf << ','
+                << m.stats.count << ',' << m.solveMs << ','
+                << (m.frusta.empty() ? 1 : m.frusta.size()) << ',' << note << '\n';
         }
     return out.str();
 }
 
 namespace {
 TextTable MethodTable(const flatland::CaseReport& report) {
-    TextTable table({"method", "angle", "worst", "average", "mean+σ", "l1", "l2", "linf", "ms", "note"});
+    TextTable table(
+        {"method", "angle", "worst", "average", "mean+σ", "l1", "l2", "linf", "ms", "note"});
     for (const auto& m : report.methods) {
         std::string angle = Fixed(m.lexelPlaneDeg, 3);
         if (!m.frusta.empty()) {
             angle.clear();
-            for (const auto& f : m.frusta) angle += (angle.empty() ? "" : "/") + Fixed(f.lexelPlaneDeg, 1);
+            for (const auto& f : m.frusta)
+                angle += (angle.empty() ? "" : "/") + Fixed(f.lexelPlaneDeg, 1);
         }
         table.AddRow({m.method, angle, Significant(m.stats.worst()), Significant(m.stats.average),
                       Significant(m.stats.meanPlusSigma), Significant(m.stats.l1, 6),
-                      Significant(m.stats.l2, 6), Significant(m.stats.linf), Fixed(m.solveMs, 3), m.note});
+                      Significant(m.stats.l2, 6), Significant(m.stats.linf), Fixed(m.solveMs, 3),
+                      m.note});
     }
     return table;
 }

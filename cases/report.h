@@ -23,12 +23,12 @@ void WriteFileAtomically(const std::string& path, const std::string& content);
 
 // A small aligned-text table used by every terminal report.
 class TextTable {
-public:
+  public:
     explicit TextTable(std::vector<std::string> header) : rows_{std::move(header)} {}
     void AddRow(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
     std::string Render() const;          // first column left-aligned, the rest right-aligned
     std::string RenderMarkdown() const;  // GitHub table
-private:
+  private:
     std::vector<std::vector<std::string>> rows_;
 };
 

@@ -46,11 +46,10 @@ const std::vector<ThesisCase>& ThesisCases() {
 
 const std::vector<std::pair<std::string, std::string>>& TableRows() {
     static const std::vector<std::pair<std::string, std::string>> rows = {
-        {"Our Method (L1)", "optimal-l1"}, {"Our Method (L2)", "optimal-l2"},
+        {"Our Method (L1)", "optimal-l1"},   {"Our Method (L2)", "optimal-l2"},
         {"Our Method (L∞)", "optimal-linf"}, {"Perspective SM", "psm-thesis"},
-        {"PSM (true sampling)", "psm"},
-        {"Normal SM", "normal"},           {"plane-optimal", "plane-optimal"},
-        {"split-dp", "split-dp"}};
+        {"PSM (true sampling)", "psm"},      {"Normal SM", "normal"},
+        {"plane-optimal", "plane-optimal"},  {"split-dp", "split-dp"}};
     return rows;
 }
 
@@ -61,7 +60,8 @@ const flatland::MethodReport& TableResult::Method(const std::string& name) const
 }
 
 std::vector<TableResult> RunThesisTables(const std::string& casesDir) {
-    const fs::path dir = casesDir.empty() ? fs::path(LEXEL_CASES_DIR) / "flatland" : fs::path(casesDir);
+    const fs::path dir =
+        casesDir.empty() ? fs::path(LEXEL_CASES_DIR) / "flatland" : fs::path(casesDir);
     std::vector<std::string> methods;
     for (const auto& [label, method] : TableRows()) methods.push_back(method);
     std::vector<TableResult> results;
@@ -91,7 +91,8 @@ TextTable ComparisonTable(const TableResult& r) {
     const bool twoFrusta = r.thesis.title == "Projection Aliasing";
     std::vector<std::string> header = {"row", "angle", "worst", "average", "mean+σ"};
     if (twoFrusta) header.push_back("mean (2 frusta)");
-    for (const char* h : {"thesis angle", "thesis worst", "thesis average", "thesis mean+σ"}) header.push_back(h);
+    for (const char* h : {"thesis angle", "thesis worst", "thesis average", "thesis mean+σ"})
+        header.push_back(h);
     if (twoFrusta) header.push_back("thesis mean (2 frusta)");
     header.push_back("avg / L1 opt");
     header.push_back("thesis avg / L1 opt");
@@ -104,15 +105,19 @@ TextTable ComparisonTable(const TableResult& r) {
         const ThesisRow* published = PublishedRow(r.thesis, method);
         // A lexel plane's orientation is defined mod 180°; the thesis prints e.g. 91° where our
         // (−90°, 90°] convention says −89°, so show the representative nearest the published one.
-        const double shown = published ? m.lexelPlaneDeg + 180.0 * std::round((published->angle - m.lexelPlaneDeg) / 180.0)
-                                       : m.lexelPlaneDeg;
+        const double shown =
+            published
+                ? m.lexelPlaneDeg + 180.0 * std::round((published->angle - m.lexelPlaneDeg) / 180.0)
+                : m.lexelPlaneDeg;
         std::string angle = Fixed(shown, 2);
         if (!m.frusta.empty()) {
             angle.clear();
-            for (const auto& f : m.frusta) angle += (angle.empty() ? "" : "/") + Fixed(f.lexelPlaneDeg, 1);
+            for (const auto& f : m.frusta)
+                angle += (angle.empty() ? "" : "/") + Fixed(f.lexelPlaneDeg, 1);
         }
         std::vector<std::string> row = {label, angle, Significant(m.stats.worst(), 3),
-                                        Significant(m.stats.average, 3), Significant(m.stats.meanPlusSigma, 3)};
+                                        Significant(m.stats.average, 3),
+                                        Significant(m.stats.meanPlusSigma, 3)};
         if (twoFrusta) row.push_back(method == "optimal-l1" ? twoFrustaMean : "–");
         if (published) {
             row.push_back(Significant(published->angle, 3));
@@ -120,12 +125,15 @@ TextTable ComparisonTable(const TableResult& r) {
             row.push_back(Significant(published->average, 3));
             row.push_back(Significant(published->meanPlusSigma, 3));
             if (twoFrusta)
-                row.push_back(std::isnan(published->twoFrustaMean) ? "–" : Significant(published->twoFrustaMean, 3));
+                row.push_back(std::isnan(published->twoFrustaMean)
+                                  ? "–"
+                                  : Significant(published->twoFrustaMean, 3));
         } else {
             for (int k = 0; k < (twoFrusta ? 5 : 4); ++k) row.push_back("–");
         }
         row.push_back(Fixed(m.stats.average / oursL1, 2));
-        row.push_back(published && thesisL1 ? Fixed(published->average / thesisL1->average, 2) : "–");
+        row.push_back(published && thesisL1 ? Fixed(published->average / thesisL1->average, 2)
+                                            : "–");
         table.AddRow(row);
     }
     return table;
@@ -138,11 +146,14 @@ std::string LowresSummary(const std::vector<TableResult>& results,
     int agree = 0;
     for (const auto& rows : lowres)
         for (const auto& row : rows)
-            if (row.decisionPixels == 10 && row.extraPercent[0] < 5.0 && row.extraPercent[1] < 5.0) ++agree;
+            if (row.decisionPixels == 10 && row.extraPercent[0] < 5.0 && row.extraPercent[1] < 5.0)
+                ++agree;
     std::ostringstream out;
     out << "With K = 10 decision pixels, " << agree << " of " << results.size()
-        << " cases gain under 5% extra error for both L1 and L2; the thesis reports this for most scenes: "
-        << (2 * agree > static_cast<int>(results.size()) ? "ours agrees." : "ours does not agree.") << '\n';
+        << " cases gain under 5% extra error for both L1 and L2; the thesis reports this for most "
+           "scenes: "
+        << (2 * agree > static_cast<int>(results.size()) ? "ours agrees." : "ours does not agree.")
+        << '\n';
     return out.str();
 }
 
@@ -151,8 +162,8 @@ std::string LowresSummary(const std::vector<TableResult>& results,
 std::string TablesText(const std::vector<TableResult>& results) {
     std::ostringstream out;
     for (const auto& r : results)
-        out << r.thesis.title << " (" << r.thesis.file << ", " << r.report.pixelsVisible << " visible pixels, "
-            << r.report.lexels << " lexels)\n"
+        out << r.thesis.title << " (" << r.thesis.file << ", " << r.report.pixelsVisible
+            << " visible pixels, " << r.report.lexels << " lexels)\n"
             << ComparisonTable(r).Render() << '\n';
     return out.str();
 }
@@ -160,12 +171,15 @@ std::string TablesText(const std::vector<TableResult>& results) {
 std::string TablesMarkdown(const std::vector<TableResult>& results) {
     std::ostringstream out;
     out << "# Chong 2003, ch. 4.1.3, reproduced by lexel\n\n"
-        << "Our numbers on the reconstructed cases beside the thesis's published ones. Angles in degrees "
-           "(counterclockwise from vertical), footprints in pixels per lexel. The last two columns are each "
+        << "Our numbers on the reconstructed cases beside the thesis's published ones. Angles in "
+           "degrees "
+           "(counterclockwise from vertical), footprints in pixels per lexel. The last two columns "
+           "are each "
            "row's average over our L1 optimum's average, ours and the thesis's.\n\n";
     for (const auto& r : results)
-        out << "## " << r.thesis.title << "\n\n`cases/flatland/" << r.thesis.file << "`: "
-            << r.report.pixelsVisible << " visible pixels, " << r.report.lexels << " lexels.\n\n"
+        out << "## " << r.thesis.title << "\n\n`cases/flatland/" << r.thesis.file
+            << "`: " << r.report.pixelsVisible << " visible pixels, " << r.report.lexels
+            << " lexels.\n\n"
             << ComparisonTable(r).RenderMarkdown() << "\n![" << r.thesis.title << "]("
             << fs::path(r.thesis.file).stem().string() << ".png)\n\n";
     return out.str();
@@ -174,7 +188,8 @@ std::string TablesMarkdown(const std::vector<TableResult>& results) {
 std::string TablesCsv(const std::vector<TableResult>& results) {
     std::ostringstream out;
     out.precision(17);
-    out << "case,row,method,angle,worst,average,mean_plus_sigma,thesis_angle,thesis_worst,thesis_average,"
+    out << "case,row,method,angle,worst,average,mean_plus_sigma,thesis_angle,thesis_worst,thesis_"
+           "average,"
            "thesis_mean_plus_sigma,thesis_two_frusta_mean\n";
     for (const auto& r : results)
         for (const auto& [label, method] : TableRows()) {
@@ -184,8 +199,10 @@ std::string TablesCsv(const std::vector<TableResult>& results) {
                 << m.lexelPlaneDeg << ',' << m.stats.worst() << ',' << m.stats.average << ','
                 << m.stats.meanPlusSigma << ',';
             if (p)
-                out << p->angle << ',' << p->worst << ',' << p->average << ',' << p->meanPlusSigma << ','
-                    << (std::isnan(p->twoFrustaMean) ? std::string() : std::to_string(p->twoFrustaMean));
+                out << p->angle << ',' << p->worst << ',' << p->average << ',' << p->meanPlusSigma
+                    << ','
+                    << (std::isnan(p->twoFrustaMean) ? std::string()
+                                                     : std::to_string(p->twoFrustaMean));
             else
                 out << ",,,,";
             out << '\n';
@@ -216,10 +233,12 @@ std::vector<LowresRow> RunLowresStudy(const flatland::FlatScene& scene) {
         flatland::FlatScene low = scene;
         low.decisionPixels = k;
         try {
-            const flatland::CaseReport report = flatland::RunFlatlandCase(low, methods, Metric::kL1);
+            const flatland::CaseReport report =
+                flatland::RunFlatlandCase(low, methods, Metric::kL1);
             for (int m = 0; m < 3; ++m)
-                row.extraPercent[m] =
-                    100.0 * (errorOf(report.methods[m].stats, m) / errorOf(reference.methods[m].stats, m) - 1.0);
+                row.extraPercent[m] = 100.0 * (errorOf(report.methods[m].stats, m) /
+                                                   errorOf(reference.methods[m].stats, m) -
+                                               1.0);
         } catch (const InputError&) {
             // K pixels may see no geometry, or too little to span a frustum: no decision possible.
         }
@@ -230,7 +249,8 @@ std::vector<LowresRow> RunLowresStudy(const flatland::FlatScene& scene) {
 
 namespace {
 TextTable LowresTable(const std::vector<LowresRow>& rows) {
-    TextTable table({"decision pixels K", "L1 extra (average) %", "L2 extra (mean+σ) %", "L∞ extra (worst) %"});
+    TextTable table(
+        {"decision pixels K", "L1 extra (average) %", "L2 extra (mean+σ) %", "L∞ extra (worst) %"});
     for (const auto& row : rows) {
         std::vector<std::string> cells = {std::to_string(row.decisionPixels)};
         for (double v : row.extraPercent) cells.push_back(std::isnan(v) ? "n/a" : Fixed(v, 3));
@@ -240,7 +260,8 @@ TextTable LowresTable(const std::vector<LowresRow>& rows) {
 }
 
 std::vector<LowresCurve> LowresCurves(const std::vector<LowresRow>& rows) {
-    std::vector<LowresCurve> curves = {{"L1 (average)", {}, {}}, {"L2 (mean+sigma)", {}, {}}, {"Linf (worst)", {}, {}}};
+    std::vector<LowresCurve> curves = {
+        {"L1 (average)", {}, {}}, {"L2 (mean+sigma)", {}, {}}, {"Linf (worst)", {}, {}}};
     for (const auto& row : rows)
         for (int m = 0; m < 3; ++m)
             if (!std::isnan(row.extraPercent[m])) {
@@ -256,13 +277,15 @@ std::string LowresText(const std::string& caseName, const std::vector<LowresRow>
 }
 
 std::string LowresMarkdown(const std::string& caseName, const std::vector<LowresRow>& rows) {
-    return "### Low-resolution decision: " + caseName + "\n\n" + LowresTable(rows).RenderMarkdown() +
-           "\n![lowres " + caseName + "](lowres_" + caseName + ".png)\n\n";
+    return "### Low-resolution decision: " + caseName + "\n\n" +
+           LowresTable(rows).RenderMarkdown() + "\n![lowres " + caseName + "](lowres_" + caseName +
+           ".png)\n\n";
 }
 
 int RunTablesCommand(const std::string& outDir, const std::string& casesDir) {
     const std::vector<TableResult> results = RunThesisTables(casesDir);
-    const fs::path dir = casesDir.empty() ? fs::path(LEXEL_CASES_DIR) / "flatland" : fs::path(casesDir);
+    const fs::path dir =
+        casesDir.empty() ? fs::path(LEXEL_CASES_DIR) / "flatland" : fs::path(casesDir);
     std::vector<std::vector<LowresRow>> lowres;
     std::vector<flatland::FlatScene> scenes;
     for (const auto& r : results) {
@@ -270,23 +293,26 @@ int RunTablesCommand(const std::string& outDir, const std::string& casesDir) {
         lowres.push_back(RunLowresStudy(scenes.back()));
     }
     std::cout << TablesText(results);
-    for (std::size_t i = 0; i < results.size(); ++i) std::cout << LowresText(scenes[i].name, lowres[i]) << '\n';
+    for (std::size_t i = 0; i < results.size(); ++i)
+        std::cout << LowresText(scenes[i].name, lowres[i]) << '\n';
     const std::string summary = LowresSummary(results, lowres);
     std::cout << summary;
 
     fs::create_directories(outDir);
-    std::string markdown = TablesMarkdown(results) + "## Low-resolution decision (thesis 4.1.1, Fig. 4.1)\n\n";
+    std::string markdown =
+        TablesMarkdown(results) + "## Low-resolution decision (thesis 4.1.1, Fig. 4.1)\n\n";
     std::ostringstream lowresCsv;
     lowresCsv << "case,decision_pixels,l1_extra_percent,l2_extra_percent,linf_extra_percent\n";
     for (std::size_t i = 0; i < results.size(); ++i) {
         const std::string stem = fs::path(results[i].thesis.file).stem().string();
-        WriteCaseFigure((fs::path(outDir) / (stem + ".png")).string(), scenes[i], results[i].report);
+        WriteCaseFigure((fs::path(outDir) / (stem + ".png")).string(), scenes[i],
+                        results[i].report);
         WriteLowresPlot((fs::path(outDir) / ("lowres_" + scenes[i].name + ".png")).string(),
                         "Low-resolution decision: " + scenes[i].name, LowresCurves(lowres[i]));
         markdown += LowresMarkdown(scenes[i].name, lowres[i]);
         for (const auto& row : lowres[i])
-            lowresCsv << scenes[i].name << ',' << row.decisionPixels << ',' << row.extraPercent[0] << ','
-                      << row.extraPercent[1] << ',' << row.extraPercent[2] << '\n';
+            lowresCsv << scenes[i].name << ',' << row.decisionPixels << ',' << row.extraPercent[0]
+                      << ',' << row.extraPercent[1] << ',' << row.extraPercent[2] << '\n';
     }
     markdown += summary;
     WriteFileAtomically((fs::path(outDir) / "tables.md").string(), markdown);

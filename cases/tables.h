@@ -46,7 +46,7 @@ std::string TablesCsv(const std::vector<TableResult>& results);
 // decision pixels, relative to the full-resolution optimum. Error is the thesis's: the average
 // footprint for L1, mean + σ for L2; and the worst footprint for L∞.
 struct LowresRow {
-    int decisionPixels = 0;      // K (the last row is the full resolution)
+    int decisionPixels = 0;                    // K (the last row is the full resolution)
     double extraPercent[3] = {NAN, NAN, NAN};  // L1, L2, L∞; NaN when K pixels see nothing usable
 };
 std::vector<int> LowresResolutions(int fullPixels);  // 5, 10, 20, 50, 100, 200, full

@@ -11,8 +11,8 @@ namespace lexel::flatland {
 
 namespace {
 
-// Residual i is the remapped footprint f_i(x) = f0_i (1 + tan(x) T_i)² / ((1 + tan(x) T_hi)(1 + tan(x) T_lo))
-// (lexel_remap.h, R2), templated so Ceres differentiates it with Jets.
+// Residual i is the remapped footprint f_i(x) = f0_i (1 + tan(x) T_i)² / ((1 + tan(x) T_hi)(1 +
+// tan(x) T_lo)) (lexel_remap.h, R2), templated so Ceres differentiates it with Jets.
 struct FootprintResiduals {
     const LexelSamples* samples;
 

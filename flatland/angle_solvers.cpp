@@ -64,9 +64,15 @@ double AngleObjective(const LexelSamples& samples, Metric metric, double t) {
         const double n = 1.0 + t * samples.tanOffset[i];
         const double f = samples.footprint0[i] * n * n / denom;
         switch (metric) {
-            case Metric::kL1: sum += f; break;
-            case Metric::kL2: sum += f * f; break;
-            case Metric::kLinf: worst = std::max(worst, f); break;
+            case Metric::kL1:
+                sum += f;
+                break;
+            case Metric::kL2:
+                sum += f * f;
+                break;
+            case Metric::kLinf:
+                worst = std::max(worst, f);
+                break;
         }
     }
     return metric == Metric::kLinf ? worst : sum;
@@ -87,7 +93,8 @@ L1Moments ComputeL1Moments(const LexelSamples& samples) {
             s2[k] += wt * T[i + k];
         }
     for (; i < n; ++i) s0[0] += f[i], s1[0] += f[i] * T[i], s2[0] += f[i] * T[i] * T[i];
-    return {s0[0] + s0[1] + s0[2] + s0[3], s1[0] + s1[1] + s1[2] + s1[3], s2[0] + s2[1] + s2[2] + s2[3]};
+    return {s0[0] + s0[1] + s0[2] + s0[3], s1[0] + s1[1] + s1[2] + s1[3],
+            s2[0] + s2[1] + s2[2] + s2[3]};
 }
 
 L2Moments ComputeL2Moments(const LexelSamples& samples) {
@@ -134,7 +141,9 @@ AngleSolution SolveL2Exact(const LexelSamples& samples) {
 
 AngleSolution SolveLinfExact(const LexelSamples& samples) {
     // Lines y_i(t) = a_i + b_i t with a_i = sqrt(f0_i), b_i = a_i T_i.
-    struct Line { double a, b; };
+    struct Line {
+        double a, b;
+    };
     std::vector<Line> lines(samples.size());
     for (std::size_t i = 0; i < samples.size(); ++i) {
         const double a = std::sqrt(samples.footprint0[i]);
@@ -223,8 +232,9 @@ AngleSolution SolveL2Newton(const LexelSamples& samples, const NewtonRestartOpti
         }
     }
     if (!std::isfinite(best.objective)) {
-        AngleSolution fallback = MakeSolution(samples, 0.0, AngleObjective(samples, Metric::kL2, 0.0),
-                                              totalIterations, "Newton never converged; initial angle");
+        AngleSolution fallback =
+            MakeSolution(samples, 0.0, AngleObjective(samples, Metric::kL2, 0.0), totalIterations,
+                         "Newton never converged; initial angle");
         return fallback;
     }
     best.iterations = totalIterations;
@@ -249,8 +259,10 @@ AngleSolution SolveSweep(const LexelSamples& samples, Metric metric, const Sweep
     double c = b - ratio * (b - a), d = a + ratio * (b - a);
     double fc = objectiveAt(c), fd = objectiveAt(d);
     for (int it = 0; it < options.refineIterations && b - a > 1e-16; ++it) {
-        if (fc <= fd) b = d, d = c, fd = fc, c = b - ratio * (b - a), fc = objectiveAt(c);
-        else a = c, c = d, fc = fd, d = a + ratio * (b - a), fd = objectiveAt(d);
+        if (fc <= fd)
+            b = d, d = c, fd = fc, c = b - ratio * (b - a), fc = objectiveAt(c);
+        else
+            a = c, c = d, fc = fd, d = a + ratio * (b - a), fd = objectiveAt(d);
     }
     double x = xLo + (bestCell + 0.5) * cell;
     double value = bestValue;

@@ -12,7 +12,8 @@
 //      (the same film line with its axis flipped), and solving in sin x / cos x (or the half-angle
 //      tan(x/2), where t = 2τ/(1−τ²) has two solutions τ per t) doubles them again: 2 × 2 × 2 = 8
 //      candidates, of which at most one is a valid minimum.
-// L2.  Σ f_i² = Q(t)/D(t)² with Q(t) = Σ f0_i² (1 + tT_i)⁴ = Σ_k C(4,k) M_k t^k, M_k = Σ f0_i² T_i^k
+// L2.  Σ f_i² = Q(t)/D(t)² with Q(t) = Σ f0_i² (1 + tT_i)⁴ = Σ_k C(4,k) M_k t^k, M_k = Σ f0_i²
+// T_i^k
 //      (five moments). The derivative's numerator is Q'D − 2QD', whose t⁵ terms cancel: a quartic,
 //      solved exactly through the eigenvalues of its companion matrix.
 // L∞.  max_i f_i = E(t)²/D(t), where E(t) = max_i sqrt(f0_i)(1 + tT_i) is the upper envelope of
@@ -43,8 +44,12 @@ struct AngleSolution {
 // Direct per-sample evaluation of L1 = Σf, L2 = Σf² or L∞ = max f at t (no moments).
 double AngleObjective(const LexelSamples& samples, Metric metric, double t);
 
-struct L1Moments { double s0 = 0, s1 = 0, s2 = 0; };
-struct L2Moments { double m[5] = {0, 0, 0, 0, 0}; };
+struct L1Moments {
+    double s0 = 0, s1 = 0, s2 = 0;
+};
+struct L2Moments {
+    double m[5] = {0, 0, 0, 0, 0};
+};
 L1Moments ComputeL1Moments(const LexelSamples& samples);
 L2Moments ComputeL2Moments(const LexelSamples& samples);
 
@@ -74,6 +79,7 @@ struct SweepOptions {
     int cells = 2048;
     int refineIterations = 120;
 };
-AngleSolution SolveSweep(const LexelSamples& samples, Metric metric, const SweepOptions& options = {});
+AngleSolution SolveSweep(const LexelSamples& samples, Metric metric,
+                         const SweepOptions& options = {});
 
 }  // namespace lexel::flatland

@@ -20,12 +20,14 @@ BaselineAxis PlaneOptimalAxis(const FlatScene& scene, const Vec2& wsA, const Vec
     const Vec2 e = wsB - wsA;
     const double denom = Cross(e, viewPlane);
     // Parallel within 1e-12 rad: q is at infinity along the segment.
-    if (std::abs(denom) <= 1e-12 * e.norm()) return {AxisOfFilmDirection(e), "segment parallel to the view plane"};
+    if (std::abs(denom) <= 1e-12 * e.norm())
+        return {AxisOfFilmDirection(e), "segment parallel to the view plane"};
     // wsA + λ e = c + μ viewPlane.
     const double lambda = Cross(c - wsA, viewPlane) / denom;
     const Vec2 q = wsA + lambda * e;
     const Vec2 v = q - scene.wsLight;
-    if (v.norm() <= 1e-12 * e.norm())  // the light is q itself: any film through it; use the view plane
+    if (v.norm() <=
+        1e-12 * e.norm())  // the light is q itself: any film through it; use the view plane
         return {AxisOfFilmDirection(viewPlane), "light at the segment's view-plane point"};
     return {AxisOfFilmDirection(v), {}};
 }
@@ -97,7 +99,8 @@ BaselineAxis PsmAxisImpl(const FlatScene& scene, const SamplingPass& pass, PsmFi
     // a world line whose normal (in the camera's (d, u) frame) is the lexel plane's axis.
     const double nx = a.y() * A - c, ny = a.x() / tanHalf;
     const Vec2 wsNormal = nx * d + ny * u;
-    if (wsNormal.norm() == 0.0) return {pass.wsAxis0, "PSM near plane degenerate; normal axis used"};
+    if (wsNormal.norm() == 0.0)
+        return {pass.wsAxis0, "PSM near plane degenerate; normal axis used"};
     return {std::atan2(wsNormal.y(), wsNormal.x()), {}};
 }
 

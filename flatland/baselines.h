@@ -16,16 +16,17 @@
 //                pole: the one ray that never meets it (the ray parallel to the film). In PPS the
 //                pole is the ray from the light L' parallel to the film; its pre-image is a world
 //                ray from L, and the world film is parallel to it. So the world lexel plane is
-//                parallel to the pre-image of the PPS line through L' perpendicular to a. The film's
-//                offset in PPS (how far the near plane is pushed) does not change the sampling.
-//                For a light on the view plane (directional in PPS) the pole is the pre-image of
-//                the line at infinity, the view plane itself: the thesis's "ideal performance" case
-//                (§2.2.3), where PSM is optimal over a single plane.
+//                parallel to the pre-image of the PPS line through L' perpendicular to a. The
+//                film's offset in PPS (how far the near plane is pushed) does not change the
+//                sampling. For a light on the view plane (directional in PPS) the pole is the
+//                pre-image of the line at infinity, the view plane itself: the thesis's "ideal
+//                performance" case (§2.2.3), where PSM is optimal over a single plane.
 // psm-thesis     The thesis's reading of PSM (§2.2.3, §4.1.3, Fig. 2.3), used for its tables: the
 //                same PPS light with its near plane pushed as far forward as possible (through the
 //                first point the rays reach), that near plane mapped back to world space, and its
-//                world orientation taken as the lexel plane. This is what the published "Perspective
-//                SM" rows measure; it is not the sampling a PSM shadow map produces (see psm).
+//                world orientation taken as the lexel plane. This is what the published
+//                "Perspective SM" rows measure; it is not the sampling a PSM shadow map produces
+//                (see psm).
 #pragma once
 
 #include <string>

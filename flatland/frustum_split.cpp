@@ -20,10 +20,11 @@ struct Group {
 
 }  // namespace
 
-SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels, const FrustaOptions& options,
-                              SplitStrategy strategy) {
+SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
+                              const FrustaOptions& options, SplitStrategy strategy) {
     if (options.metric == Metric::kLinf)
-        throw InputError("/frusta/metric: must be l1 or l2 (the Lagrange allocation needs a sum), got linf");
+        throw InputError(
+            "/frusta/metric: must be l1 or l2 (the Lagrange allocation needs a sum), got linf");
     if (options.max < 1 || options.budget < 1)
         throw InputError("/frusta: max and budget must be at least 1");
     const int exponent = options.metric == Metric::kL1 ? 1 : 2;
@@ -35,7 +36,8 @@ SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels, const Fr
     // Bucket the samples by wedge.
     std::vector<std::vector<std::size_t>> bucket(wedges);
     for (std::size_t i = 0; i < samples.size(); ++i) {
-        const int w = std::clamp(static_cast<int>(std::floor((samples[i].lsAngle - lo) / width)), 0, wedges - 1);
+        const int w = std::clamp(static_cast<int>(std::floor((samples[i].lsAngle - lo) / width)), 0,
+                                 wedges - 1);
         bucket[w].push_back(i);
     }
     std::vector<int> occupied;
@@ -50,7 +52,8 @@ SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels, const Fr
         if (it != cache.end()) return it->second;
         std::vector<double> angle, g;
         for (int k = a; k <= b; ++k)
-            for (std::size_t i : bucket[occupied[k]]) angle.push_back(samples[i].lsAngle), g.push_back(samples[i].dpdAngle);
+            for (std::size_t i : bucket[occupied[k]])
+                angle.push_back(samples[i].lsAngle), g.push_back(samples[i].dpdAngle);
         // Outer bounds are the samples' own extremes, exactly; inner ones are wedge edges.
         const double gLow = occupied[a] == 0 ? lo : lo + occupied[a] * width;
         const double gHigh = occupied[b] == wedges - 1 ? hi : lo + (occupied[b] + 1) * width;
@@ -118,19 +121,21 @@ SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels, const Fr
     return result;
 }
 
-MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full, const SplitResult& split) {
+MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full,
+                           const SplitResult& split) {
     const std::size_t count = split.frusta.size();
     std::vector<SamplingPass> parts(count);
     std::vector<std::vector<std::size_t>> partIndex(count);  // full-pass index of each part sample
     std::vector<double> low(count), high(count);
-    for (std::size_t j = 0; j < count; ++j) low[j] = split.frusta[j].lsLow, high[j] = split.frusta[j].lsHigh;
+    for (std::size_t j = 0; j < count; ++j)
+        low[j] = split.frusta[j].lsLow, high[j] = split.frusta[j].lsHigh;
     for (std::size_t i = 0; i < full.samples.size(); ++i) {
         const FlatSample& s = full.samples[i];
         const double rel = WrapAngle(full.wsAxis0 + s.lsAngle - split.wsAxis0);
         std::size_t owner = 0;
         double distance = std::numeric_limits<double>::infinity();
         for (std::size_t j = 0; j < count; ++j) {
-            const double d = rel < split.frusta[j].lsLow ? split.frusta[j].lsLow - rel
+            const double d = rel < split.frusta[j].lsLow    ? split.frusta[j].lsLow - rel
                              : rel > split.frusta[j].lsHigh ? rel - split.frusta[j].lsHigh
                                                             : 0.0;
             if (d < distance) distance = d, owner = j;

@@ -43,12 +43,13 @@ struct SplitResult {
 };
 
 // Plans the split from the decision pass. Throws InputError for a metric other than l1/l2.
-SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels, const FrustaOptions& options,
-                              SplitStrategy strategy);
+SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
+                              const FrustaOptions& options, SplitStrategy strategy);
 
 // Measures a planned split at full resolution: each full-resolution sample goes to the frustum
 // whose bounds hold its light angle (one in a gap goes to the nearer frustum, whose bound then
 // widens to include it), footprints are computed from scratch in world space.
-MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full, const SplitResult& split);
+MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full,
+                           const SplitResult& split);
 
 }  // namespace lexel::flatland

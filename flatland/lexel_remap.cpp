@@ -67,13 +67,15 @@ double TFromLexelPlaneDeg(const LexelSamples& samples, double lexelPlaneDeg) {
     return std::tan(lexelPlaneDeg * M_PI / 180.0 - samples.wsAxis0);
 }
 
-std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass, const Vec2& wsLight,
-                                                         double wsAxis, double lexels) {
+std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
+                                                         const Vec2& wsLight, double wsAxis,
+                                                         double lexels) {
     return FootprintsFromScratch(pass, wsLight, wsAxis, lexels, NAN, NAN);
 }
 
-std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass, const Vec2& wsLight,
-                                                         double wsAxis, double lexels, double wsRayLow,
+std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
+                                                         const Vec2& wsLight, double wsAxis,
+                                                         double lexels, double wsRayLow,
                                                          double wsRayHigh) {
     const Vec2 a{std::cos(wsAxis), std::sin(wsAxis)};
     const Vec2 b{-a.y(), a.x()};

@@ -31,10 +31,10 @@
 namespace lexel::flatland {
 
 struct LexelSamples {
-    double wsAxis0 = 0.0;  // θ0, world radians: the bisector of this sample set's sweep
-    double tanLow = 0.0;   // T_lo = tan(α_min − θ0) < 0
-    double tanHigh = 0.0;  // T_hi = tan(α_max − θ0) > 0
-    double lexels = 1.0;   // N (real-valued so that frusta can be measured at N = 1)
+    double wsAxis0 = 0.0;            // θ0, world radians: the bisector of this sample set's sweep
+    double tanLow = 0.0;             // T_lo = tan(α_min − θ0) < 0
+    double tanHigh = 0.0;            // T_hi = tan(α_max − θ0) > 0
+    double lexels = 1.0;             // N (real-valued so that frusta can be measured at N = 1)
     std::vector<double> tanOffset;   // T_i
     std::vector<double> footprint0;  // f0_i = dp/dl at θ0, pixels per lexel
     std::size_t size() const { return tanOffset.size(); }
@@ -75,12 +75,14 @@ double TFromLexelPlaneDeg(const LexelSamples& samples, double lexelPlaneDeg);
 // coordinate s = (d·b)/(d·a) with d = X − L, tight extents, dl/dλ from the segment tangent, and
 // dp/dλ from the pass. Independent of (R1)/(R2); used for reporting and to test them.
 // Returns nothing when some visible point is not strictly in front of the film.
-std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass, const Vec2& wsLight,
-                                                         double wsAxis, double lexels);
+std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
+                                                         const Vec2& wsLight, double wsAxis,
+                                                         double lexels);
 // As above for a frustum bounded by the world rays at angles wsRayLow < wsRayHigh (radians)
 // rather than by its samples' extremes.
-std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass, const Vec2& wsLight,
-                                                         double wsAxis, double lexels, double wsRayLow,
+std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
+                                                         const Vec2& wsLight, double wsAxis,
+                                                         double lexels, double wsRayLow,
                                                          double wsRayHigh);
 
 }  // namespace lexel::flatland

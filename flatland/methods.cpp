@@ -16,9 +16,10 @@ namespace lexel::flatland {
 
 const std::vector<std::string>& FlatlandMethodNames() {
     static const std::vector<std::string> names = {
-        "optimal-l1", "optimal-l2", "optimal-l2-newton", "optimal-l2-ceres", "optimal-linf",
-        "sweep",      "normal",     "psm",               "psm-thesis",       "plane-optimal",
-        "split-greedy", "split-dp"};
+        "optimal-l1",       "optimal-l2",   "optimal-l2-newton",
+        "optimal-l2-ceres", "optimal-linf", "sweep",
+        "normal",           "psm",          "psm-thesis",
+        "plane-optimal",    "split-greedy", "split-dp"};
     return names;
 }
 
@@ -33,14 +34,16 @@ void CheckFlatlandMethod(const std::string& name) {
 namespace {
 
 double ElapsedMs(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
 }
 
 // Measures a single-frustum axis at full resolution. The decision pass may see a narrower sweep
 // than the full pass, so an axis valid for it can be invalid at full resolution; it is then
 // clamped one part in 1e3 of the valid range inside the nearer end, and the note says so.
-MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full, const LexelSamples& fullSamples,
-                          std::string method, double wsAxis, std::string note, double solveMs) {
+MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full,
+                          const LexelSamples& fullSamples, std::string method, double wsAxis,
+                          std::string note, double solveMs) {
     const ValidInterval valid = ValidTInterval(fullSamples);
     double t = std::tan(wsAxis - fullSamples.wsAxis0);
     if (!valid.Contains(t) || !std::isfinite(t)) {
@@ -67,7 +70,8 @@ MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full, cons
 
 }  // namespace
 
-CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods, Metric metric) {
+CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods,
+                           Metric metric) {
     for (const auto& m : methods) CheckFlatlandMethod(m);
     CheckSceneGeometry(scene);
     CaseReport report;
@@ -78,7 +82,8 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
     report.metric = metric;
 
     auto start = std::chrono::steady_clock::now();
-    const auto fullPass = std::make_shared<const SamplingPass>(RunSamplingPass(scene, scene.camera.pixels));
+    const auto fullPass =
+        std::make_shared<const SamplingPass>(RunSamplingPass(scene, scene.camera.pixels));
     const SamplingPass& full = *fullPass;
     report.fullPass = fullPass;
     const SamplingPass decision = scene.DecisionPixels() == scene.camera.pixels
@@ -93,9 +98,9 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
         start = std::chrono::steady_clock::now();
         if (method == "split-greedy" || method == "split-dp") {
             const FrustaOptions options = scene.frusta.value_or(FrustaOptions{});
-            const SplitResult split = SplitLightFrustum(decision, scene.lexels, options,
-                                                        method == "split-dp" ? SplitStrategy::kDynamicProgram
-                                                                             : SplitStrategy::kGreedy);
+            const SplitResult split = SplitLightFrustum(
+                decision, scene.lexels, options,
+                method == "split-dp" ? SplitStrategy::kDynamicProgram : SplitStrategy::kGreedy);
             const double ms = ElapsedMs(start);
             MethodReport r = EvaluateSplit(scene, full, split);
             r.method = method;
@@ -105,18 +110,28 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
         }
         AngleSolution solution;
         std::string note;
-        if (method == "optimal-l1") solution = SolveL1Exact(samples);
-        else if (method == "optimal-l2") solution = SolveL2Exact(samples);
-        else if (method == "optimal-l2-newton") solution = SolveL2Newton(samples);
-        else if (method == "optimal-l2-ceres") solution = SolveL2Ceres(samples);
-        else if (method == "optimal-linf") solution = SolveLinfExact(samples);
-        else if (method == "sweep") solution = SolveSweep(samples, metric);
+        if (method == "optimal-l1")
+            solution = SolveL1Exact(samples);
+        else if (method == "optimal-l2")
+            solution = SolveL2Exact(samples);
+        else if (method == "optimal-l2-newton")
+            solution = SolveL2Newton(samples);
+        else if (method == "optimal-l2-ceres")
+            solution = SolveL2Ceres(samples);
+        else if (method == "optimal-linf")
+            solution = SolveLinfExact(samples);
+        else if (method == "sweep")
+            solution = SolveSweep(samples, metric);
         else {
             BaselineAxis axis;
-            if (method == "normal") axis = NormalAxis(decision);
-            else if (method == "psm") axis = PsmAxis(scene, decision);
-            else if (method == "psm-thesis") axis = PsmThesisAxis(scene, decision);
-            else axis = PlaneOptimalAxis(scene);
+            if (method == "normal")
+                axis = NormalAxis(decision);
+            else if (method == "psm")
+                axis = PsmAxis(scene, decision);
+            else if (method == "psm-thesis")
+                axis = PsmThesisAxis(scene, decision);
+            else
+                axis = PlaneOptimalAxis(scene);
             solution.wsAxis = axis.wsAxis;
             solution.note = axis.note;
         }

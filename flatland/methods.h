@@ -23,10 +23,10 @@ struct FrustumReport {
 
 struct MethodReport {
     std::string method;
-    double lexelPlaneDeg = 0.0;  // for split methods: the first frustum's
-    FootprintStats stats;        // over Ω at full resolution
-    double solveMs = 0.0;        // the solver alone, on the decision samples
-    std::string note;            // fallbacks and clamps, if any
+    double lexelPlaneDeg = 0.0;         // for split methods: the first frustum's
+    FootprintStats stats;               // over Ω at full resolution
+    double solveMs = 0.0;               // the solver alone, on the decision samples
+    std::string note;                   // fallbacks and clamps, if any
     std::vector<FrustumReport> frusta;  // split methods only
     double wsAxis = 0.0;                // optical axis, world radians (first frustum's when split)
     std::vector<double> footprints;     // f per visible full-resolution pixel, in fullPass order
@@ -46,6 +46,7 @@ const std::vector<std::string>& FlatlandMethodNames();
 // Throws InputError naming an unknown method.
 void CheckFlatlandMethod(const std::string& name);
 
-CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods, Metric metric);
+CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods,
+                           Metric metric);
 
 }  // namespace lexel::flatland

@@ -14,8 +14,8 @@ Vec2 Perp(const Vec2& v) { return {-v.y(), v.x()}; }  // +90°
 double Deg2Rad(double d) { return d * std::numbers::pi / 180.0; }
 }  // namespace
 
-std::optional<RayHit> CastPixelRay(const FlatCamera& camera, const std::vector<FlatSegment>& segments,
-                                   int pixels, double p) {
+std::optional<RayHit> CastPixelRay(const FlatCamera& camera,
+                                   const std::vector<FlatSegment>& segments, int pixels, double p) {
     const Vec2 d = camera.wsDirection;
     const Vec2 u = Perp(d);
     const double sigma = 2.0 * p / pixels - 1.0;
@@ -99,8 +99,9 @@ SamplingPass RunSamplingPass(const FlatScene& scene, int pixels) {
     // Zero extent: all visible points on one ray from the light (1e-12 rad is the angular
     // resolution of double-precision atan2 at unit scale).
     if (sweep <= 1e-12)
-        throw InputError("/light/position: all visible points lie on one ray from the light; the "
-                         "lexel plane would have zero extent");
+        throw InputError(
+            "/light/position: all visible points lie on one ray from the light; the "
+            "lexel plane would have zero extent");
     const double mid = 0.5 * (lo + hi);
     pass.wsAxis0 = WrapAngle(wsRef + mid);
     pass.halfSweep = 0.5 * sweep;

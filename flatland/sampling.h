@@ -23,14 +23,14 @@
 namespace lexel::flatland {
 
 struct FlatSample {
-    int pixel = 0;          // k at this pass's resolution
-    double p = 0.0;         // continuous pixel coordinate of the center, k + ½
-    Vec2 wsPoint{0, 0};     // hit point
-    Vec2 wsTangent{0, 0};   // e = B − A of the hit segment
-    double depth = 0.0;     // x_c, distance along the camera direction
-    int segment = 0;        // index into Segments(scene)
-    double dpdLambda = 0.0; // dp/dλ along e
-    double lsAngle = 0.0;   // α − θ0: light angle relative to the pass's reference axis, radians
+    int pixel = 0;           // k at this pass's resolution
+    double p = 0.0;          // continuous pixel coordinate of the center, k + ½
+    Vec2 wsPoint{0, 0};      // hit point
+    Vec2 wsTangent{0, 0};    // e = B − A of the hit segment
+    double depth = 0.0;      // x_c, distance along the camera direction
+    int segment = 0;         // index into Segments(scene)
+    double dpdLambda = 0.0;  // dp/dλ along e
+    double lsAngle = 0.0;  // α − θ0: light angle relative to the pass's reference axis, radians
     double dpdAngle = 0.0;  // g = |dp/dα|, pixels per radian of light angle
 };
 
@@ -49,8 +49,8 @@ struct RayHit {
 };
 
 // Nearest hit of the camera ray through continuous pixel coordinate p (P pixels), or none.
-std::optional<RayHit> CastPixelRay(const FlatCamera& camera, const std::vector<FlatSegment>& segments,
-                                   int pixels, double p);
+std::optional<RayHit> CastPixelRay(const FlatCamera& camera,
+                                   const std::vector<FlatSegment>& segments, int pixels, double p);
 
 // dp/dλ of a point on a segment line with tangent e (closed form above).
 double PixelDerivativeAlong(const FlatCamera& camera, int pixels, const Vec2& wsPoint,

@@ -13,7 +13,8 @@ std::vector<FlatSegment> Segments(const FlatScene& scene) {
     for (std::size_t i = 0; i < scene.geometry.size(); ++i) {
         const auto& polyline = scene.geometry[i];
         for (std::size_t j = 0; j + 1 < polyline.size(); ++j)
-            segments.push_back({polyline[j], polyline[j + 1], static_cast<int>(i), static_cast<int>(j)});
+            segments.push_back(
+                {polyline[j], polyline[j + 1], static_cast<int>(i), static_cast<int>(j)});
     }
     return segments;
 }
@@ -45,7 +46,8 @@ bool InsideClosed(const Vec2& p, const std::vector<Vec2>& polyline) {
 double SceneScale(const FlatScene& scene) {
     double scale = (scene.camera.wsPosition - scene.wsLight).norm();
     for (const auto& polyline : scene.geometry)
-        for (const Vec2& p : polyline) scale = std::max(scale, (p - scene.camera.wsPosition).norm());
+        for (const Vec2& p : polyline)
+            scale = std::max(scale, (p - scene.camera.wsPosition).norm());
     return std::max(scale, 1e-300);
 }
 
@@ -68,7 +70,8 @@ void CheckSceneGeometry(const FlatScene& scene) {
             if (DistanceToSegment(scene.camera.wsPosition, polyline[j], polyline[j + 1]) <= onEps)
                 throw InputError("/camera/position: the camera lies on segment " + seg);
         }
-        const bool closed = polyline.size() >= 4 && (polyline.front() - polyline.back()).norm() <= onEps;
+        const bool closed =
+            polyline.size() >= 4 && (polyline.front() - polyline.back()).norm() <= onEps;
         if (closed && InsideClosed(scene.wsLight, polyline))
             throw InputError("/light/position: the light is inside the closed polyline " + where);
         if (closed && InsideClosed(scene.camera.wsPosition, polyline))

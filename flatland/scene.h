@@ -26,8 +26,8 @@ struct FlatCamera {
 
 // Thesis §3.2 partitioning options (the "frusta" object of a case file).
 struct FrustaOptions {
-    int max = 16;     // initial even split of the light's angular range
-    int budget = 2;   // frusta that remain
+    int max = 16;    // initial even split of the light's angular range
+    int budget = 2;  // frusta that remain
     Metric metric = Metric::kL1;
 };
 

@@ -9,7 +9,7 @@
 namespace lexel {
 
 class InputError : public std::runtime_error {
-public:
+  public:
     explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 

@@ -64,7 +64,8 @@ FootprintStats SummarizeFootprints(std::span<const double> footprints,
         const std::size_t mid = f.size() / 2;
         std::nth_element(f.begin(), f.begin() + mid, f.end());
         double median = f[mid];
-        if (f.size() % 2 == 0) median = 0.5 * (median + *std::max_element(f.begin(), f.begin() + mid));
+        if (f.size() % 2 == 0)
+            median = 0.5 * (median + *std::max_element(f.begin(), f.begin() + mid));
         stats.median = median;
     } else {
         std::sort(order.begin(), order.end(),
@@ -83,9 +84,12 @@ FootprintStats SummarizeFootprints(std::span<const double> footprints,
 
 std::string_view MetricName(Metric metric) {
     switch (metric) {
-        case Metric::kL1: return "l1";
-        case Metric::kL2: return "l2";
-        case Metric::kLinf: return "linf";
+        case Metric::kL1:
+            return "l1";
+        case Metric::kL2:
+            return "l2";
+        case Metric::kLinf:
+            return "linf";
     }
     return "?";
 }
@@ -99,18 +103,24 @@ Metric ParseMetric(std::string_view name) {
 
 double MetricValue(const FootprintStats& stats, Metric metric) {
     switch (metric) {
-        case Metric::kL1: return stats.l1;
-        case Metric::kL2: return stats.l2;
-        case Metric::kLinf: return stats.linf;
+        case Metric::kL1:
+            return stats.l1;
+        case Metric::kL2:
+            return stats.l2;
+        case Metric::kLinf:
+            return stats.linf;
     }
     return std::numeric_limits<double>::quiet_NaN();
 }
 
 std::string_view BadnessName(Badness badness) {
     switch (badness) {
-        case Badness::kFrobeniusInverseSquared: return "frobenius_inverse_squared";
-        case Badness::kGeometricStretch: return "geometric_stretch";
-        case Badness::kLargestSingularValue: return "largest_singular_value";
+        case Badness::kFrobeniusInverseSquared:
+            return "frobenius_inverse_squared";
+        case Badness::kGeometricStretch:
+            return "geometric_stretch";
+        case Badness::kLargestSingularValue:
+            return "largest_singular_value";
     }
     return "?";
 }
@@ -129,7 +139,8 @@ Eigen::Vector2d SingularValues2x2(const Eigen::Matrix2d& m) {
 }
 
 double JacobianBadness(const Eigen::Matrix2d& texelsPerPixel, Badness badness) {
-    const double det = texelsPerPixel(0, 0) * texelsPerPixel(1, 1) - texelsPerPixel(0, 1) * texelsPerPixel(1, 0);
+    const double det =
+        texelsPerPixel(0, 0) * texelsPerPixel(1, 1) - texelsPerPixel(0, 1) * texelsPerPixel(1, 0);
     const double scale = texelsPerPixel.cwiseAbs().maxCoeff();
     // A determinant below 1e-300 of the squared entry scale is a rank-deficient J at double
     // precision: a screen direction that moves zero texels, i.e. an unbounded footprint.
@@ -141,9 +152,12 @@ double JacobianBadness(const Eigen::Matrix2d& texelsPerPixel, Badness badness) {
         texelsPerPixel(0, 0);
     inverse /= det;
     switch (badness) {
-        case Badness::kFrobeniusInverseSquared: return inverse.squaredNorm();
-        case Badness::kGeometricStretch: return std::sqrt(0.5 * inverse.squaredNorm());
-        case Badness::kLargestSingularValue: return SingularValues2x2(inverse)[0];
+        case Badness::kFrobeniusInverseSquared:
+            return inverse.squaredNorm();
+        case Badness::kGeometricStretch:
+            return std::sqrt(0.5 * inverse.squaredNorm());
+        case Badness::kLargestSingularValue:
+            return SingularValues2x2(inverse)[0];
     }
     return std::numeric_limits<double>::quiet_NaN();
 }

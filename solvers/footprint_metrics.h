@@ -16,8 +16,8 @@
 // Per-sample badness values go through the same aggregates as the 2D footprints.
 //
 // Weights: every aggregate accepts optional non-negative per-sample weights w (e.g. pixel areas
-// or importance). Weighted forms: L1 = Σ w f, L2 = Σ w f², mean = Σ w f / Σ w, σ² = Σ w (f-mean)²/Σ w,
-// median = weighted median, L∞ = max over samples with w > 0. Unweighted is w ≡ 1.
+// or importance). Weighted forms: L1 = Σ w f, L2 = Σ w f², mean = Σ w f / Σ w, σ² = Σ w (f-mean)²/Σ
+// w, median = weighted median, L∞ = max over samples with w > 0. Unweighted is w ≡ 1.
 #pragma once
 
 #include <Eigen/Core>
@@ -29,15 +29,15 @@ namespace lexel {
 
 // Aggregates of per-sample footprints (or 3D badness values); the columns of the thesis tables.
 struct FootprintStats {
-    std::size_t count = 0;      // samples with positive weight
-    double weightSum = 0.0;     // Σ w (== count when unweighted)
-    double l1 = 0.0;            // Σ w f
-    double l2 = 0.0;            // Σ w f²
-    double linf = 0.0;          // max f (the thesis's "Worst")
-    double average = 0.0;       // Σ w f / Σ w
-    double sigma = 0.0;         // population standard deviation
-    double meanPlusSigma = 0.0; // average + sigma (the thesis's "Mean+σ")
-    double median = 0.0;        // (weighted) median
+    std::size_t count = 0;       // samples with positive weight
+    double weightSum = 0.0;      // Σ w (== count when unweighted)
+    double l1 = 0.0;             // Σ w f
+    double l2 = 0.0;             // Σ w f²
+    double linf = 0.0;           // max f (the thesis's "Worst")
+    double average = 0.0;        // Σ w f / Σ w
+    double sigma = 0.0;          // population standard deviation
+    double meanPlusSigma = 0.0;  // average + sigma (the thesis's "Mean+σ")
+    double median = 0.0;         // (weighted) median
     double worst() const { return linf; }
 };
 
@@ -48,8 +48,8 @@ FootprintStats SummarizeFootprints(std::span<const double> footprints,
 
 // The three norms the optimizers minimize (ch. 2.1).
 enum class Metric { kL1, kL2, kLinf };
-std::string_view MetricName(Metric metric);   // "l1", "l2", "linf"
-Metric ParseMetric(std::string_view name);    // throws InputError on an unknown name
+std::string_view MetricName(Metric metric);  // "l1", "l2", "linf"
+Metric ParseMetric(std::string_view name);   // throws InputError on an unknown name
 double MetricValue(const FootprintStats& stats, Metric metric);
 
 // 3D badness of one sample from J = ∂u/∂x (texels per pixel).

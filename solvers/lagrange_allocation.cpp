@@ -9,9 +9,7 @@
 
 namespace lexel {
 
-double AllocationTerm(double error, int exponent) {
-    return std::pow(error, 1.0 / (exponent + 1));
-}
+double AllocationTerm(double error, int exponent) { return std::pow(error, 1.0 / (exponent + 1)); }
 
 double AllocatedTotal(double termSum, int exponent, double lexels) {
     return std::pow(termSum, exponent + 1) / std::pow(lexels, exponent);
@@ -57,7 +55,8 @@ std::vector<int> AllocateLexelsInteger(std::span<const double> errors, int expon
         double bestLoss = std::numeric_limits<double>::infinity();
         for (std::size_t j = 0; j < n; ++j) {
             if (alloc[j] <= 1) continue;
-            const double loss = Cost(errors[j], alloc[j] - 1, exponent) - Cost(errors[j], alloc[j], exponent);
+            const double loss =
+                Cost(errors[j], alloc[j] - 1, exponent) - Cost(errors[j], alloc[j], exponent);
             if (loss < bestLoss) bestLoss = loss, best = j;
         }
         --alloc[best];
@@ -69,7 +68,8 @@ std::vector<int> AllocateLexelsInteger(std::span<const double> errors, int expon
         double bestGain = -1.0;
         for (std::size_t j = 0; j < n; ++j) {
             if (errors[j] == 0.0) continue;
-            const double gain = Cost(errors[j], alloc[j], exponent) - Cost(errors[j], alloc[j] + 1, exponent);
+            const double gain =
+                Cost(errors[j], alloc[j], exponent) - Cost(errors[j], alloc[j] + 1, exponent);
             if (gain > bestGain) bestGain = gain, best = j;
         }
         if (best == n) {  // no frustum holds samples: park the lexels on the first one
@@ -85,10 +85,12 @@ std::vector<int> AllocateLexelsInteger(std::span<const double> errors, int expon
         double bestLoss = std::numeric_limits<double>::infinity(), bestGain = 0.0;
         for (std::size_t j = 0; j < n; ++j) {
             if (errors[j] == 0.0) continue;
-            const double gain = Cost(errors[j], alloc[j], exponent) - Cost(errors[j], alloc[j] + 1, exponent);
+            const double gain =
+                Cost(errors[j], alloc[j], exponent) - Cost(errors[j], alloc[j] + 1, exponent);
             if (gain > bestGain) bestGain = gain, taker = j;
             if (alloc[j] > 1) {
-                const double loss = Cost(errors[j], alloc[j] - 1, exponent) - Cost(errors[j], alloc[j], exponent);
+                const double loss =
+                    Cost(errors[j], alloc[j] - 1, exponent) - Cost(errors[j], alloc[j], exponent);
                 if (loss < bestLoss) bestLoss = loss, giver = j;
             }
         }

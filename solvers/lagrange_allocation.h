@@ -22,7 +22,7 @@
 namespace lexel {
 
 // k = 1 (L1) or 2 (L2).
-double AllocationTerm(double error, int exponent);                  // e^(1/(k+1))
+double AllocationTerm(double error, int exponent);                   // e^(1/(k+1))
 double AllocatedTotal(double termSum, int exponent, double lexels);  // (Σ terms)^(k+1) / L^k
 
 std::vector<double> AllocateLexelsReal(std::span<const double> errors, int exponent, double lexels);

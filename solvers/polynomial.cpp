@@ -56,8 +56,10 @@ std::vector<double> QuadraticRealRoots(double c0, double c1, double c2) {
     const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
     std::vector<double> roots;
     roots.push_back(q / c2);
-    if (q != 0.0) roots.push_back(c0 / q);
-    else roots.push_back(0.0);
+    if (q != 0.0)
+        roots.push_back(c0 / q);
+    else
+        roots.push_back(0.0);
     std::sort(roots.begin(), roots.end());
     if (roots[0] == roots[1]) roots.pop_back();
     return roots;

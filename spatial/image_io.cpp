@@ -21,7 +21,8 @@ void WriteImage(const std::string& path, const Image& image) {
     auto out = OIIO::ImageOutput::create(temporary.string());
     if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
     const bool isFloat = target.extension() == ".exr";
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    OIIO::ImageSpec spec(image.width, image.height, image.channels,
+                         isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     if (!out->open(temporary.string(), spec) ||
         !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close()) {
         const std::string message = out->geterror();

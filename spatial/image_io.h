@@ -11,8 +11,12 @@ namespace lexel::spatial {
 struct Image {
     int width = 0, height = 0, channels = 0;
     std::vector<float> pixels;
-    float& at(int x, int y, int c) { return pixels[(static_cast<std::size_t>(y) * width + x) * channels + c]; }
-    float at(int x, int y, int c) const { return pixels[(static_cast<std::size_t>(y) * width + x) * channels + c]; }
+    float& at(int x, int y, int c) {
+        return pixels[(static_cast<std::size_t>(y) * width + x) * channels + c];
+    }
+    float at(int x, int y, int c) const {
+        return pixels[(static_cast<std::size_t>(y) * width + x) * channels + c];
+    }
 };
 
 Image MakeImage(int width, int height, int channels, float fill = 0.0f);

@@ -41,6 +41,7 @@ int main() {
         for (std::size_t i = 0; i < f->size(); i += f->size() / 5) std::printf("  %9.4f", (*f)[i]);
         std::printf("  %10.2f  %8.4f\n", l1, linf);
     }
-    std::printf("\nAt Theorem 1's angle the footprint is the same at every pixel: the floor is\n"
-                "sampled by the light exactly as densely as the camera needs it.\n");
+    std::printf(
+        "\nAt Theorem 1's angle the footprint is the same at every pixel: the floor is\n"
+        "sampled by the light exactly as densely as the camera needs it.\n");
 }

@@ -28,8 +28,8 @@ int main() {
 
     const LexelSamples samples = MakeLexelSamples(RunSamplingPass(scene, 1000), scene.lexels);
     const L1Moments m = ComputeL1Moments(samples);
-    std::printf("moments: S0 = %.6f  S1 = %.6f  S2 = %.6f   (extents T_lo = %.4f, T_hi = %.4f)\n", m.s0,
-                m.s1, m.s2, samples.tanLow, samples.tanHigh);
+    std::printf("moments: S0 = %.6f  S1 = %.6f  S2 = %.6f   (extents T_lo = %.4f, T_hi = %.4f)\n",
+                m.s0, m.s1, m.s2, samples.tanLow, samples.tanHigh);
     const double initial = AngleObjective(samples, Metric::kL1, 0.0);
     const AngleSolution exact = SolveL1Exact(samples);
     const AngleSolution sweep = SolveSweep(samples, Metric::kL1);

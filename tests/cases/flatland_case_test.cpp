@@ -49,7 +49,8 @@ TEST(FlatlandCase, BadFieldsAreNamed) {
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/camera/fov_deg", "value": 190}])"),
               "/camera/fov_deg: must be in (0, 180), got 190");
     EXPECT_EQ(ErrorFor(R"([{"op": "add", "path": "/camera/zoom", "value": 2}])"),
-              "/camera/zoom: unknown key (allowed here: position, direction, fov_deg, pixels, near, far)");
+              "/camera/zoom: unknown key (allowed here: position, direction, fov_deg, pixels, "
+              "near, far)");
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/camera/direction", "value": [0, 0]}])"),
               "/camera/direction: must be a non-zero vector");
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/lexels", "value": 0}])"),
@@ -64,9 +65,12 @@ TEST(FlatlandCase, BadFieldsAreNamed) {
               "/frusta/budget: must be in [1, 8], got 9");
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/frusta/metric", "value": "linf"}])"),
               "/frusta/metric: must be one of l1, l2, got 'linf'");
-    EXPECT_EQ(ErrorFor(R"([{"op": "add", "path": "/camera/far", "value": 1}, {"op": "add", "path": "/camera/near", "value": 2}])"),
-              "/camera/far: must be greater than near (2), got 1");
-    EXPECT_EQ(ErrorFor(R"([{"op": "remove", "path": "/light"}])"), "/light: required key is missing");
+    EXPECT_EQ(
+        ErrorFor(
+            R"([{"op": "add", "path": "/camera/far", "value": 1}, {"op": "add", "path": "/camera/near", "value": 2}])"),
+        "/camera/far: must be greater than near (2), got 1");
+    EXPECT_EQ(ErrorFor(R"([{"op": "remove", "path": "/light"}])"),
+              "/light: required key is missing");
 }
 
 TEST(FlatlandCase, SpatialCasesAreRecognized) {

@@ -11,7 +11,7 @@ namespace lexel::cases {
 namespace {
 
 class ThesisTables : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() { results_ = new std::vector<TableResult>(RunThesisTables("")); }
     static void TearDownTestSuite() { delete results_; }
     static const TableResult& Case(const std::string& title) {
@@ -70,14 +70,16 @@ TEST_F(ThesisTables, EveryOutputCarriesTheThesisNumbers) {
     for (const char* published : {"0.975", "4.33", "1.54", "73.7", "7.75", "25.3"})
         EXPECT_NE(markdown.find(published), std::string::npos) << published;
     const std::string csv = TablesCsv(*results_);
-    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 4 * static_cast<long>(TableRows().size()));
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'),
+              1 + 4 * static_cast<long>(TableRows().size()));
 }
 
 // Low-resolution decisions (thesis 4.1.1): the full-resolution row adds nothing, and no coarser
 // decision beats the full-resolution optimum of the metric it minimizes (L1's average, L∞'s worst;
 // mean+σ is not what L2 minimizes, so it may dip below).
 TEST(LowresStudy, FullRowIsZeroAndCoarserNeverWins) {
-    const auto scene = LoadFlatScene(std::string(LEXEL_CASES_DIR) + "/flatland/simple_geometry.json");
+    const auto scene =
+        LoadFlatScene(std::string(LEXEL_CASES_DIR) + "/flatland/simple_geometry.json");
     const auto rows = RunLowresStudy(scene);
     ASSERT_EQ(rows.size(), 7u);
     EXPECT_EQ(rows.back().decisionPixels, scene.camera.pixels);

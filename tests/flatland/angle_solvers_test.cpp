@@ -24,14 +24,16 @@ TEST(AngleSolvers, Theorem1SingleSegmentGivesConstantFootprint) {
     for (std::uint64_t seed = 0; seed < 25; ++seed) {
         const FlatScene scene = SingleSegmentScene(seed);
         SCOPED_TRACE(Describe(scene));
-        const std::vector<std::string> methods = {"optimal-l1", "optimal-l2", "optimal-linf", "plane-optimal"};
+        const std::vector<std::string> methods = {"optimal-l1", "optimal-l2", "optimal-linf",
+                                                  "plane-optimal"};
         const CaseReport report = RunFlatlandCase(scene, methods, Metric::kL1);
         const double geometric = report.methods[3].lexelPlaneDeg;
         for (int m = 0; m < 3; ++m) {
             const auto& r = report.methods[m];
             EXPECT_LT(r.stats.worst() / r.stats.average - 1.0, 1e-9) << r.method;
             double diff = std::remainder(r.lexelPlaneDeg - geometric, 180.0);
-            EXPECT_LT(std::abs(diff), 1e-7) << r.method << " " << r.lexelPlaneDeg << " vs " << geometric;
+            EXPECT_LT(std::abs(diff), 1e-7)
+                << r.method << " " << r.lexelPlaneDeg << " vs " << geometric;
         }
     }
 }
@@ -49,9 +51,12 @@ TEST(AngleSolvers, OptimaMatchSweepOnRandomScenes) {
         const AngleSolution l1 = SolveL1Exact(samples);
         const AngleSolution l2 = SolveL2Exact(samples);
         const AngleSolution linf = SolveLinfExact(samples);
-        EXPECT_LE(l1.objective, SolveSweep(samples, Metric::kL1, sweepOptions).objective * (1 + 1e-6));
-        EXPECT_LE(l2.objective, SolveSweep(samples, Metric::kL2, sweepOptions).objective * (1 + 1e-6));
-        EXPECT_LE(linf.objective, SolveSweep(samples, Metric::kLinf, sweepOptions).objective * (1 + 1e-6));
+        EXPECT_LE(l1.objective,
+                  SolveSweep(samples, Metric::kL1, sweepOptions).objective * (1 + 1e-6));
+        EXPECT_LE(l2.objective,
+                  SolveSweep(samples, Metric::kL2, sweepOptions).objective * (1 + 1e-6));
+        EXPECT_LE(linf.objective,
+                  SolveSweep(samples, Metric::kLinf, sweepOptions).objective * (1 + 1e-6));
         EXPECT_TRUE(l1.note.empty() && l2.note.empty() && linf.note.empty());
         const AngleSolution newton = SolveL2Newton(samples);
         const AngleSolution ceres = SolveL2Ceres(samples);
@@ -77,8 +82,10 @@ TEST(AngleSolvers, LinfAngleMatchesGoldenSectionToNanodegrees) {
         EXPECT_LT(std::abs(Deg(std::atan(linf.t) - std::atan(sweep.t))), 1e-6);
         // Moving 1e-9° either way never lowers the maximum.
         const double x = std::atan(linf.t), step = 1e-9 * M_PI / 180;
-        EXPECT_GE(AngleObjective(samples, Metric::kLinf, std::tan(x + step)), linf.objective * (1 - 1e-15));
-        EXPECT_GE(AngleObjective(samples, Metric::kLinf, std::tan(x - step)), linf.objective * (1 - 1e-15));
+        EXPECT_GE(AngleObjective(samples, Metric::kLinf, std::tan(x + step)),
+                  linf.objective * (1 - 1e-15));
+        EXPECT_GE(AngleObjective(samples, Metric::kLinf, std::tan(x - step)),
+                  linf.objective * (1 - 1e-15));
     }
 }
 

@@ -74,7 +74,8 @@ TEST(Baselines, PsmIsOptimalForALightOnTheViewPlaneOverOnePlane) {
     scene.geometry = {{{-50, 0}, {200, 0}}};
     const Vec2 viewPlane{-scene.camera.wsDirection.y(), scene.camera.wsDirection.x()};
     scene.wsLight = scene.camera.wsPosition + 6.0 * viewPlane;
-    const CaseReport report = RunFlatlandCase(scene, std::vector<std::string>{"psm", "optimal-l1"}, Metric::kL1);
+    const CaseReport report =
+        RunFlatlandCase(scene, std::vector<std::string>{"psm", "optimal-l1"}, Metric::kL1);
     EXPECT_LT(report.methods[0].stats.worst() / report.methods[0].stats.average - 1, 1e-9);
     EXPECT_NEAR(report.methods[0].stats.average, report.methods[1].stats.average, 1e-9);
 }
@@ -82,7 +83,8 @@ TEST(Baselines, PsmIsOptimalForALightOnTheViewPlaneOverOnePlane) {
 // PSM in general is no optimum: on the example it loses to the L1 optimum.
 TEST(Baselines, PsmIsWorseThanOptimalOnTheExample) {
     const FlatScene scene = testing::ExampleScene();
-    const CaseReport report = RunFlatlandCase(scene, std::vector<std::string>{"psm", "optimal-l1"}, Metric::kL1);
+    const CaseReport report =
+        RunFlatlandCase(scene, std::vector<std::string>{"psm", "optimal-l1"}, Metric::kL1);
     EXPECT_GT(report.methods[0].stats.average, report.methods[1].stats.average * 1.05);
 }
 

@@ -24,8 +24,10 @@ TEST(FrustumSplit, DynamicProgramNeverLosesToGreedy) {
         for (Metric metric : {Metric::kL1, Metric::kL2})
             for (int budget : {1, 2, 3, 5}) {
                 const FrustaOptions options{12, budget, metric};
-                const SplitResult greedy = SplitLightFrustum(pass, scene.lexels, options, SplitStrategy::kGreedy);
-                const SplitResult dp = SplitLightFrustum(pass, scene.lexels, options, SplitStrategy::kDynamicProgram);
+                const SplitResult greedy =
+                    SplitLightFrustum(pass, scene.lexels, options, SplitStrategy::kGreedy);
+                const SplitResult dp =
+                    SplitLightFrustum(pass, scene.lexels, options, SplitStrategy::kDynamicProgram);
                 EXPECT_LE(dp.realTotal, greedy.realTotal * (1 + 1e-12)) << "budget " << budget;
                 EXPECT_LE(static_cast<int>(dp.frusta.size()), budget);
                 EXPECT_LE(static_cast<int>(greedy.frusta.size()), budget);
@@ -46,7 +48,8 @@ TEST(FrustumSplit, BudgetOneIsTheSingleFrustumOptimum) {
         SCOPED_TRACE(Describe(scene));
         const SamplingPass pass = RunSamplingPass(scene, scene.camera.pixels);
         for (auto strategy : {SplitStrategy::kGreedy, SplitStrategy::kDynamicProgram}) {
-            const SplitResult split = SplitLightFrustum(pass, scene.lexels, {16, 1, Metric::kL1}, strategy);
+            const SplitResult split =
+                SplitLightFrustum(pass, scene.lexels, {16, 1, Metric::kL1}, strategy);
             ASSERT_EQ(split.frusta.size(), 1u);
             const MethodReport r = EvaluateSplit(scene, pass, split);
             const AngleSolution single = SolveL1Exact(MakeLexelSamples(pass, scene.lexels));
@@ -62,7 +65,8 @@ TEST(FrustumSplit, BudgetOneIsTheSingleFrustumOptimum) {
 TEST(FrustumSplit, ReportedFrustaRecomputeFromScratch) {
     const FlatScene scene = RandomScene(9, 400);
     const SamplingPass pass = RunSamplingPass(scene, 400);
-    const SplitResult split = SplitLightFrustum(pass, scene.lexels, {16, 3, Metric::kL1}, SplitStrategy::kDynamicProgram);
+    const SplitResult split =
+        SplitLightFrustum(pass, scene.lexels, {16, 3, Metric::kL1}, SplitStrategy::kDynamicProgram);
     const MethodReport r = EvaluateSplit(scene, pass, split);
     ASSERT_EQ(r.frusta.size(), split.frusta.size());
     double total = 0;
@@ -95,7 +99,8 @@ TEST(FrustumSplit, ReportedFrustaRecomputeFromScratch) {
 TEST(FrustumSplit, LinfMetricIsRejected) {
     const FlatScene scene = RandomScene(1);
     const SamplingPass pass = RunSamplingPass(scene, 100);
-    EXPECT_THROW(SplitLightFrustum(pass, 100, {16, 2, Metric::kLinf}, SplitStrategy::kGreedy), InputError);
+    EXPECT_THROW(SplitLightFrustum(pass, 100, {16, 2, Metric::kLinf}, SplitStrategy::kGreedy),
+                 InputError);
 }
 
 }  // namespace

@@ -28,10 +28,12 @@ TEST(LexelRemap, RemappedFootprintsEqualFromScratch) {
         for (int k = 0; k < 5; ++k) {
             const double t = std::tan(xLo + u(rng) * (xHi - xLo));
             const auto remapped = RemappedFootprints(samples, t);
-            const auto scratch = FootprintsFromScratch(pass, scene.wsLight, WsAxisFromT(samples, t), scene.lexels);
+            const auto scratch =
+                FootprintsFromScratch(pass, scene.wsLight, WsAxisFromT(samples, t), scene.lexels);
             ASSERT_TRUE(scratch.has_value()) << "t = " << t;
             for (std::size_t i = 0; i < remapped.size(); ++i)
-                ASSERT_NEAR(remapped[i] / (*scratch)[i], 1.0, 1e-9) << "t = " << t << " sample " << i;
+                ASSERT_NEAR(remapped[i] / (*scratch)[i], 1.0, 1e-9)
+                    << "t = " << t << " sample " << i;
         }
     }
 }
@@ -45,8 +47,10 @@ TEST(LexelRemap, ValidityMatchesPointsInFront) {
     // The valid range of the axis is (Δ/2 − 90°, 90° − Δ/2) about the bisector.
     EXPECT_NEAR(xHi, M_PI / 2 - pass.halfSweep, 1e-12);
     EXPECT_NEAR(xLo, -(M_PI / 2 - pass.halfSweep), 1e-12);
-    EXPECT_TRUE(FootprintsFromScratch(pass, scene.wsLight, pass.wsAxis0 + xHi - 1e-6, 1).has_value());
-    EXPECT_FALSE(FootprintsFromScratch(pass, scene.wsLight, pass.wsAxis0 + xHi + 1e-6, 1).has_value());
+    EXPECT_TRUE(
+        FootprintsFromScratch(pass, scene.wsLight, pass.wsAxis0 + xHi - 1e-6, 1).has_value());
+    EXPECT_FALSE(
+        FootprintsFromScratch(pass, scene.wsLight, pass.wsAxis0 + xHi + 1e-6, 1).has_value());
     // f → ∞ at the ends.
     EXPECT_GT(RemappedFootprints(samples, std::tan(xHi - 1e-9)).front() +
                   RemappedFootprints(samples, std::tan(xHi - 1e-9)).back(),
@@ -65,7 +69,8 @@ TEST(LexelRemap, SubFrustumSamplesEqualTheThesisRescaling) {
     std::vector<std::size_t> index;
     for (std::size_t i = 0; i < pass.samples.size(); ++i)
         if (pass.samples[i].lsAngle >= lo && pass.samples[i].lsAngle <= hi)
-            angle.push_back(pass.samples[i].lsAngle), g.push_back(pass.samples[i].dpdAngle), index.push_back(i);
+            angle.push_back(pass.samples[i].lsAngle), g.push_back(pass.samples[i].dpdAngle),
+                index.push_back(i);
     ASSERT_GT(angle.size(), 5u);
     const double subLexels = 300;
     const LexelSamples sub = MakeLexelSamples(angle, g, pass.wsAxis0, subLexels, lo, hi);
@@ -73,7 +78,8 @@ TEST(LexelRemap, SubFrustumSamplesEqualTheThesisRescaling) {
     // frustum's scaled by (sub film width / whole film width) · (N_whole / N_sub).
     const double sizeRatio = (std::tan(hi) - std::tan(lo)) / (whole.tanHigh - whole.tanLow);
     for (std::size_t k = 0; k < index.size(); ++k) {
-        EXPECT_NEAR(sub.footprint0[k], whole.footprint0[index[k]] * sizeRatio * scene.lexels / subLexels,
+        EXPECT_NEAR(sub.footprint0[k],
+                    whole.footprint0[index[k]] * sizeRatio * scene.lexels / subLexels,
                     1e-12 * whole.footprint0[index[k]]);
         // l re-expressed: l_sub = N_sub (l/N − l_lo/N) / (l_hi/N − l_lo/N) on the film.
         const double lWhole = LexelCoordinate(whole, index[k]) / scene.lexels;

@@ -26,7 +26,8 @@ TEST(Sampling, FloorHitsLieOnTheFloorAtPixelCenters) {
         EXPECT_NEAR(s.wsPoint.y(), 0.0, 1e-12);
         EXPECT_DOUBLE_EQ(s.p, s.pixel + 0.5);
         // depth is the distance along the unit camera direction
-        EXPECT_NEAR(s.depth, (s.wsPoint - scene.camera.wsPosition).dot(scene.camera.wsDirection), 1e-9);
+        EXPECT_NEAR(s.depth, (s.wsPoint - scene.camera.wsPosition).dot(scene.camera.wsDirection),
+                    1e-9);
     }
     const double slopeLimit = std::tan(std::atan(0.25)) / std::tan(M_PI / 6);  // σ at the horizon
     const int lastVisible = static_cast<int>(std::floor(100 * (1 + slopeLimit) / 2 - 0.5));
@@ -55,7 +56,8 @@ TEST(Sampling, AnalyticFootprintMatchesFiniteDifference) {
             const auto& s = pass.samples[i];
             const auto plus = CastPixelRay(scene.camera, segments, pass.pixels, s.p + h);
             const auto minus = CastPixelRay(scene.camera, segments, pass.pixels, s.p - h);
-            if (!plus || !minus || plus->segment != s.segment || minus->segment != s.segment) continue;
+            if (!plus || !minus || plus->segment != s.segment || minus->segment != s.segment)
+                continue;
             const double dldp = (lexelOf(plus->wsPoint) - lexelOf(minus->wsPoint)) / (2 * h);
             EXPECT_NEAR(samples.footprint0[i] * std::abs(dldp), 1.0, 1e-6) << "pixel " << s.pixel;
             ++checked;
@@ -82,7 +84,9 @@ TEST(Sampling, NoVisiblePixelIsAnError) {
         RunSamplingPass(scene, 100);
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("no camera pixel sees any geometry"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("no camera pixel sees any geometry"),
+                  std::string::npos)
+            << e.what();
     }
 }
 
@@ -99,7 +103,8 @@ TEST(Sampling, SweepOfHalfACircleHasNoValidAngle) {
         RunSamplingPass(scene, 400);
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("no lexel plane has them all in front"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("no lexel plane has them all in front"),
+                  std::string::npos)
             << e.what();
     }
 }
@@ -119,12 +124,14 @@ TEST(Scene, DegenerateGeometryIsRejected) {
     lightOn.wsLight = {10, 0};
     EXPECT_THROW(CheckSceneGeometry(lightOn), InputError);
     FlatScene inside = ExampleScene();
-    inside.geometry.push_back({{-1, 1}, {1, 1}, {1, 3}, {-1, 3}, {-1, 1}});  // a box around the camera
+    inside.geometry.push_back(
+        {{-1, 1}, {1, 1}, {1, 3}, {-1, 3}, {-1, 1}});  // a box around the camera
     try {
         CheckSceneGeometry(inside);
         FAIL();
     } catch (const InputError& e) {
-        EXPECT_EQ(std::string(e.what()), "/camera/position: the camera is inside the closed polyline /geometry/2");
+        EXPECT_EQ(std::string(e.what()),
+                  "/camera/position: the camera is inside the closed polyline /geometry/2");
     }
 }
 

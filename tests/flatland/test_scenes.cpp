@@ -88,8 +88,8 @@ std::string Describe(const FlatScene& scene) {
     out.precision(17);
     out << scene.name << ": camera " << scene.camera.wsPosition.transpose() << " dir "
         << scene.camera.wsDirection.transpose() << " fov " << scene.camera.fovDeg << " pixels "
-        << scene.camera.pixels << " light " << scene.wsLight.transpose() << " lexels " << scene.lexels
-        << " geometry";
+        << scene.camera.pixels << " light " << scene.wsLight.transpose() << " lexels "
+        << scene.lexels << " geometry";
     for (const auto& polyline : scene.geometry) {
         out << " [";
         for (const auto& p : polyline) out << " (" << p.x() << "," << p.y() << ")";

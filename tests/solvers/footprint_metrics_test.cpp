@@ -2,11 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <cmath>
 #include <limits>
 #include <vector>
-
-#include <Eigen/LU>
 
 #include "solvers/errors.h"
 
@@ -56,7 +55,8 @@ TEST(FootprintMetrics, LexelScaleInvariance) {
 TEST(FootprintMetrics, BadInputIsAnError) {
     EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, NAN}), InputError);
     EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, -1}), InputError);
-    EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, 2}, std::vector<double>{1}), InputError);
+    EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, 2}, std::vector<double>{1}),
+                 InputError);
     EXPECT_EQ(SummarizeFootprints(std::vector<double>{}).count, 0u);
     EXPECT_THROW(ParseMetric("l3"), InputError);
     EXPECT_EQ(ParseMetric("linf"), Metric::kLinf);
@@ -66,7 +66,8 @@ TEST(JacobianBadness, DiagonalClosedForms) {
     Eigen::Matrix2d j;
     j << 2, 0, 0, 4;  // J⁻¹ = diag(1/2, 1/4)
     EXPECT_DOUBLE_EQ(JacobianBadness(j, Badness::kFrobeniusInverseSquared), 0.25 + 0.0625);
-    EXPECT_DOUBLE_EQ(JacobianBadness(j, Badness::kGeometricStretch), std::sqrt((0.25 + 0.0625) / 2));
+    EXPECT_DOUBLE_EQ(JacobianBadness(j, Badness::kGeometricStretch),
+                     std::sqrt((0.25 + 0.0625) / 2));
     EXPECT_DOUBLE_EQ(JacobianBadness(j, Badness::kLargestSingularValue), 0.5);
 }
 
@@ -77,21 +78,24 @@ TEST(JacobianBadness, RotationInvariance) {
     for (double angle : {0.3, 1.1, -2.0}) {
         Eigen::Matrix2d r;
         r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
-        for (auto b : {Badness::kFrobeniusInverseSquared, Badness::kGeometricStretch, Badness::kLargestSingularValue}) {
+        for (auto b : {Badness::kFrobeniusInverseSquared, Badness::kGeometricStretch,
+                       Badness::kLargestSingularValue}) {
             EXPECT_NEAR(JacobianBadness(r * j, b), JacobianBadness(j, b), 1e-14);
             EXPECT_NEAR(JacobianBadness(j * r, b), JacobianBadness(j, b), 1e-14);
         }
     }
     // Frobenius of J⁻¹ equals σ1² + σ2² of J⁻¹, i.e. 1/s1² + 1/s2² for J's singular values s.
     const Eigen::Vector2d s = SingularValues2x2(j);
-    EXPECT_NEAR(JacobianBadness(j, Badness::kFrobeniusInverseSquared), 1 / (s[0] * s[0]) + 1 / (s[1] * s[1]), 1e-14);
+    EXPECT_NEAR(JacobianBadness(j, Badness::kFrobeniusInverseSquared),
+                1 / (s[0] * s[0]) + 1 / (s[1] * s[1]), 1e-14);
     EXPECT_NEAR(s[0] * s[1], std::abs(j.determinant()), 1e-14);
 }
 
 TEST(JacobianBadness, SingularJacobianIsInfiniteNotNaN) {
     Eigen::Matrix2d j;
     j << 1, 2, 2, 4;
-    EXPECT_EQ(JacobianBadness(j, Badness::kFrobeniusInverseSquared), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(JacobianBadness(j, Badness::kFrobeniusInverseSquared),
+              std::numeric_limits<double>::infinity());
     EXPECT_EQ(JacobianBadness(Eigen::Matrix2d::Zero(), Badness::kLargestSingularValue),
               std::numeric_limits<double>::infinity());
 }

@@ -39,7 +39,8 @@ TEST(LagrangeAllocation, IntegerAllocationIsExchangeOptimal) {
         const int n = 1 + trial % 7;
         std::vector<double> e(n);
         for (double& v : e) v = u(rng) < 0.15 ? 0.0 : std::pow(10.0, -3 + 6 * u(rng));
-        const int occupied = static_cast<int>(std::count_if(e.begin(), e.end(), [](double v) { return v > 0; }));
+        const int occupied =
+            static_cast<int>(std::count_if(e.begin(), e.end(), [](double v) { return v > 0; }));
         const int lexels = std::max(occupied, 1) + static_cast<int>(200 * u(rng));
         for (int k : {1, 2}) {
             const auto alloc = AllocateLexelsInteger(e, k, lexels);
@@ -51,7 +52,8 @@ TEST(LagrangeAllocation, IntegerAllocationIsExchangeOptimal) {
                     if (i == j || alloc[j] <= (e[j] > 0 ? 1 : 0)) continue;
                     auto moved = alloc;
                     --moved[j], ++moved[i];
-                    EXPECT_GE(AllocationError(e, moved, k), total * (1 - 1e-12)) << "trial " << trial;
+                    EXPECT_GE(AllocationError(e, moved, k), total * (1 - 1e-12))
+                        << "trial " << trial;
                 }
             }
         }

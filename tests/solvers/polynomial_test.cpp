@@ -26,7 +26,8 @@ TEST(Polynomial, CompanionRootsOfKnownQuartics) {
     for (int trial = 0; trial < 200; ++trial) {
         std::vector<double> roots = {u(rng), u(rng), u(rng), u(rng)};
         std::sort(roots.begin(), roots.end());
-        if (roots[1] - roots[0] < 1e-3 || roots[2] - roots[1] < 1e-3 || roots[3] - roots[2] < 1e-3) continue;
+        if (roots[1] - roots[0] < 1e-3 || roots[2] - roots[1] < 1e-3 || roots[3] - roots[2] < 1e-3)
+            continue;
         Polynomial p = {1.0};
         for (double r : roots) p = PolyMultiply(p, std::vector<double>{-r, 1.0});
         p = PolyScale(p, 0.37);
