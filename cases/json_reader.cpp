@@ -176,11 +176,6 @@ std::string JsonField::String() const {
     return value_->get<std::string>();
 }
 
-bool JsonField::Bool() const {
-    if (!value_->is_boolean()) Fail("must be a boolean, got " + TypeName(*value_));
-    return value_->get<bool>();
-}
-
 Eigen::Vector2d JsonField::Vec2() const {
     const auto items = Array();
     if (items.size() != 2)

@@ -25,7 +25,6 @@ class JsonField {
         : value_(&value), pointer_(std::move(pointer)) {}
 
     const std::string& Pointer() const { return pointer_; }
-    const nlohmann::json& Raw() const { return *value_; }
     [[noreturn]] void Fail(const std::string& reason) const;
 
     // Requires an object whose keys are all in required ∪ optional and that has every required key.
@@ -41,7 +40,6 @@ class JsonField {
     double Positive() const;  // (0, ∞)
     long long Integer(long long lo, long long hi) const;
     std::string String() const;
-    bool Bool() const;
     Eigen::Vector2d Vec2() const;
     Eigen::Vector3d Vec3() const;
 

@@ -69,7 +69,8 @@ std::vector<TableResult> RunThesisTables(const std::string& casesDir) {
         const fs::path path = dir / thesis.file;
         const flatland::FlatScene scene = LoadFlatScene(path);
         try {
-            results.push_back({thesis, flatland::RunFlatlandCase(scene, methods, Metric::kL1)});
+            results.push_back(
+                {thesis, scene, flatland::RunFlatlandCase(scene, methods, Metric::kL1)});
         } catch (const InputError& e) {
             throw InputError(path.string() + ": " + e.what());
         }
@@ -226,6 +227,8 @@ std::vector<LowresRow> RunLowresStudy(const flatland::FlatScene& scene) {
     flatland::FlatScene full = scene;
     full.decisionPixels = 0;
     const flatland::CaseReport reference = flatland::RunFlatlandCase(full, methods, Metric::kL1);
+    // Every K is measured on the same full-resolution pass: compute it once.
+    const auto fullPass = reference.fullPass;
     std::vector<LowresRow> rows;
     for (int k : LowresResolutions(scene.camera.pixels)) {
         LowresRow row;
@@ -234,7 +237,7 @@ std::vector<LowresRow> RunLowresStudy(const flatland::FlatScene& scene) {
         low.decisionPixels = k;
         try {
             const flatland::CaseReport report =
-                flatland::RunFlatlandCase(low, methods, Metric::kL1);
+                flatland::RunFlatlandCase(low, methods, Metric::kL1, fullPass);
             for (int m = 0; m < 3; ++m)
                 row.extraPercent[m] = 100.0 * (errorOf(report.methods[m].stats, m) /
                                                    errorOf(reference.methods[m].stats, m) -
@@ -284,13 +287,11 @@ std::string LowresMarkdown(const std::string& caseName, const std::vector<Lowres
 
 int RunTablesCommand(const std::string& outDir, const std::string& casesDir) {
     const std::vector<TableResult> results = RunThesisTables(casesDir);
-    const fs::path dir =
-        casesDir.empty() ? fs::path(LEXEL_CASES_DIR) / "flatland" : fs::path(casesDir);
     std::vector<std::vector<LowresRow>> lowres;
     std::vector<flatland::FlatScene> scenes;
     for (const auto& r : results) {
-        scenes.push_back(LoadFlatScene(dir / r.thesis.file));
-        lowres.push_back(RunLowresStudy(scenes.back()));
+        scenes.push_back(r.scene);
+        lowres.push_back(RunLowresStudy(r.scene));
     }
     std::cout << TablesText(results);
     for (std::size_t i = 0; i < results.size(); ++i)

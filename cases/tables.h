@@ -31,6 +31,7 @@ const std::vector<std::pair<std::string, std::string>>& TableRows();
 
 struct TableResult {
     ThesisCase thesis;
+    flatland::FlatScene scene;  // as loaded from the case file
     flatland::CaseReport report;
     const flatland::MethodReport& Method(const std::string& name) const;
 };

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "flatland/angle_solvers.h"
 #include "flatland/baselines.h"
@@ -71,7 +72,7 @@ MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full,
 }  // namespace
 
 CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods,
-                           Metric metric) {
+                           Metric metric, std::shared_ptr<const SamplingPass> fullPass) {
     for (const auto& m : methods) CheckFlatlandMethod(m);
     CheckSceneGeometry(scene);
     CaseReport report;
@@ -82,13 +83,16 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
     report.metric = metric;
 
     auto start = std::chrono::steady_clock::now();
-    const auto fullPass =
-        std::make_shared<const SamplingPass>(RunSamplingPass(scene, scene.camera.pixels));
+    if (!fullPass)
+        fullPass =
+            std::make_shared<const SamplingPass>(RunSamplingPass(scene, scene.camera.pixels));
     const SamplingPass& full = *fullPass;
     report.fullPass = fullPass;
-    const SamplingPass decision = scene.DecisionPixels() == scene.camera.pixels
-                                      ? full
-                                      : RunSamplingPass(scene, scene.DecisionPixels());
+    // The decision pass is the full one unless the case asks for a coarser one (no copy).
+    std::optional<SamplingPass> coarse;
+    if (scene.DecisionPixels() != scene.camera.pixels)
+        coarse = RunSamplingPass(scene, scene.DecisionPixels());
+    const SamplingPass& decision = coarse ? *coarse : full;
     report.samplingMs = ElapsedMs(start);
     report.pixelsVisible = static_cast<int>(full.samples.size());
     const LexelSamples fullSamples = MakeLexelSamples(full, scene.lexels);

@@ -46,7 +46,9 @@ const std::vector<std::string>& FlatlandMethodNames();
 // Throws InputError naming an unknown method.
 void CheckFlatlandMethod(const std::string& name);
 
+// `fullPass`, when given, must be RunSamplingPass(scene, scene.camera.pixels); callers that run
+// one scene repeatedly with different decision resolutions pass it to avoid recomputing it.
 CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods,
-                           Metric metric);
+                           Metric metric, std::shared_ptr<const SamplingPass> fullPass = nullptr);
 
 }  // namespace lexel::flatland

@@ -101,30 +101,6 @@ Metric ParseMetric(std::string_view name) {
     throw InputError("metric: must be one of l1, l2, linf, got '" + std::string(name) + "'");
 }
 
-double MetricValue(const FootprintStats& stats, Metric metric) {
-    switch (metric) {
-        case Metric::kL1:
-            return stats.l1;
-        case Metric::kL2:
-            return stats.l2;
-        case Metric::kLinf:
-            return stats.linf;
-    }
-    return std::numeric_limits<double>::quiet_NaN();
-}
-
-std::string_view BadnessName(Badness badness) {
-    switch (badness) {
-        case Badness::kFrobeniusInverseSquared:
-            return "frobenius_inverse_squared";
-        case Badness::kGeometricStretch:
-            return "geometric_stretch";
-        case Badness::kLargestSingularValue:
-            return "largest_singular_value";
-    }
-    return "?";
-}
-
 Eigen::Vector2d SingularValues2x2(const Eigen::Matrix2d& m) {
     // Closed form (Blinn, "Consider the lowly 2×2 matrix"): with
     // E = (a+d)/2, F = (a-d)/2, G = (c+b)/2, H = (c-b)/2,

@@ -50,7 +50,6 @@ FootprintStats SummarizeFootprints(std::span<const double> footprints,
 enum class Metric { kL1, kL2, kLinf };
 std::string_view MetricName(Metric metric);  // "l1", "l2", "linf"
 Metric ParseMetric(std::string_view name);   // throws InputError on an unknown name
-double MetricValue(const FootprintStats& stats, Metric metric);
 
 // 3D badness of one sample from J = ∂u/∂x (texels per pixel).
 enum class Badness {
@@ -58,7 +57,6 @@ enum class Badness {
     kGeometricStretch,         // sqrt((σ1² + σ2²)/2) of J⁻¹, Sander et al. 2001 L2 stretch
     kLargestSingularValue,     // σ1 of J⁻¹, Sander et al. L∞ stretch
 };
-std::string_view BadnessName(Badness badness);
 
 // Singular values (σ1 ≥ σ2 ≥ 0) of a 2×2 matrix in closed form.
 Eigen::Vector2d SingularValues2x2(const Eigen::Matrix2d& m);
