@@ -1,0 +1,135 @@
+#include "spatial/light_matrix.h"
+
+#include <Eigen/Core>
+#include <cmath>
+#include <vector>
+
+#include "solvers/errors.h"
+#include "solvers/min_area_rectangle.h"
+
+namespace lexel::spatial {
+
+glm::dmat3 LightMatrix::Rows() const {
+    glm::dmat3 m;
+    for (int c = 0; c < 3; ++c) {
+        m[c][0] = p1[c];
+        m[c][1] = p2[c];
+        m[c][2] = p4[c];
+    }
+    return m;
+}
+
+glm::dvec3 LightMatrix::Unmap(glm::dvec2 u) const {
+    return glm::inverse(Rows()) * glm::dvec3(u, 1.0);
+}
+
+void LightMatrix::MapJacobian(const glm::dvec3& lsX, glm::dvec3* du1dX, glm::dvec3* du2dX) const {
+    const glm::dvec3 h = Homogeneous(lsX);
+    *du1dX = (p1 - (h.x / h.z) * p4) / h.z;
+    *du2dX = (p2 - (h.y / h.z) * p4) / h.z;
+}
+
+LightMatrix LightMatrix::ThenAffine(const glm::dmat3& a) const {
+    // u'^r = Σ_c a_rc (u, 1)_c, so row r of P' is a_r0 p1 + a_r1 p2 + a_r2 p4 (a_rc = a[c][r]).
+    LightMatrix out;
+    out.p1 = a[0][0] * p1 + a[1][0] * p2 + a[2][0] * p4;
+    out.p2 = a[0][1] * p1 + a[1][1] * p2 + a[2][1] * p4;
+    out.p4 = p4;
+    return out;
+}
+
+LightMatrix FromScreenRows(const LightSpace& lightSpace, const glm::dmat4& screenFromWorld,
+                           const glm::dvec3& wsCenter) {
+    const glm::dmat3 linear = lightSpace.LightFromWorldLinear();  // rows e1, e2, (e3 | 0)
+    const glm::dvec3 lsCenter = lightSpace.ToLight(wsCenter);
+    glm::dvec3 rows[3];
+    const int rowIndex[3] = {0, 1, 3};
+    for (int k = 0; k < 3; ++k) {
+        const int r = rowIndex[k];
+        const glm::dvec3 rXyz(screenFromWorld[0][r], screenFromWorld[1][r], screenFromWorld[2][r]);
+        const double rW = screenFromWorld[3][r];
+        // e_i · rXyz are the light-space components of the world covector (the frame is
+        // orthonormal, so the covector transforms like a vector).
+        glm::dvec3 p(glm::dot(glm::dvec3(linear[0][0], linear[1][0], linear[2][0]), rXyz),
+                     glm::dot(glm::dvec3(linear[0][1], linear[1][1], linear[2][1]), rXyz), 0.0);
+        const double scale = glm::length(rXyz) + std::abs(rW);
+        if (lightSpace.IsPoint()) {
+            const glm::dvec3 e3(linear[0][2], linear[1][2], linear[2][2]);
+            p.z = glm::dot(e3, rXyz);
+            const double atLight = glm::dot(rXyz, lightSpace.light().position) + rW;
+            if (std::abs(atLight) > 1e-9 * scale * (1.0 + glm::length(lightSpace.light().position)))
+                throw InputError("light matrix: row " + std::to_string(r + 1) +
+                                 " does not send the point light to infinity");
+        } else {
+            const double alongLight = glm::dot(rXyz, lightSpace.light().direction);
+            if (std::abs(alongLight) > 1e-9 * scale)
+                throw InputError("light matrix: row " + std::to_string(r + 1) +
+                                 " does not send the directional light to infinity");
+            // p·X(c) = r·[c; 1] at the centre fixes the third component.
+            p.z = (glm::dot(rXyz, wsCenter) + rW - p.x * lsCenter.x - p.y * lsCenter.y) /
+                  lsCenter.z;
+        }
+        rows[k] = p;
+    }
+    double norm = glm::length(rows[2]);
+    if (!(norm > 0.0)) throw InputError("light matrix: the optical axis row is zero");
+    if (glm::dot(rows[2], lsCenter) < 0.0) norm = -norm;
+    return {rows[0] / norm, rows[1] / norm, rows[2] / norm};
+}
+
+bool InFront(const glm::dvec3& p4, const glm::dvec3& lsX) {
+    return glm::dot(p4, lsX) > 1e-9 * glm::length(lsX);
+}
+
+void PlaneBasis(const glm::dvec3& p4, glm::dvec3* b1, glm::dvec3* b2) {
+    const glm::dvec3 a = glm::abs(p4);
+    const glm::dvec3 helper = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
+                              : (a.y <= a.z)             ? glm::dvec3(0, 1, 0)
+                                                         : glm::dvec3(0, 0, 1);
+    *b1 = glm::normalize(glm::cross(helper, p4));
+    *b2 = glm::cross(p4, *b1);
+}
+
+std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
+                                               std::span<const glm::dvec2> planePoints,
+                                               Resolution map, const FitOptions& options) {
+    if (planePoints.empty()) return std::nullopt;
+    std::vector<Eigen::Vector2d> pts(planePoints.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = {planePoints[i].x, planePoints[i].y};
+    Rectangle2 rect = MinAreaRectangle(pts);
+    rect = OrientLongSideAlong(rect, map.width >= map.height);
+    // A zero extent (all points collinear or equal) gets a sliver so the map stays invertible.
+    const double longest = std::max({rect.halfU, rect.halfV, 1e-300});
+    const double halfU = std::max(rect.halfU, 1e-9 * longest) * (1.0 + options.margin);
+    const double halfV = std::max(rect.halfV, 1e-9 * longest) * (1.0 + options.margin);
+
+    // u1 = W/2 + W/(2 halfU) · axisU·(y - c), with y = (b1·X, b2·X)/(p4·X); multiplying by p4·X
+    // gives row p1 = (W/2 - kU axisU·c) p4 + kU (axisU.x b1 + axisU.y b2), and likewise p2.
+    glm::dvec3 b1, b2;
+    PlaneBasis(p4, &b1, &b2);
+    const double kU = 0.5 * map.width / halfU, kV = 0.5 * map.height / halfV;
+    const Eigen::Vector2d& aU = rect.axisU;
+    const Eigen::Vector2d& aV = rect.axisV;
+    LightMatrix m;
+    m.p4 = p4;
+    m.p1 = (0.5 * map.width - kU * aU.dot(rect.center)) * p4 + kU * (aU.x() * b1 + aU.y() * b2);
+    m.p2 = (0.5 * map.height - kV * aV.dot(rect.center)) * p4 + kV * (aV.x() * b1 + aV.y() * b2);
+    return m;
+}
+
+std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
+                                          std::span<const glm::dvec3> lsPoints,
+                                          Resolution map, const FitOptions& options) {
+    glm::dvec3 b1, b2;
+    PlaneBasis(p4, &b1, &b2);
+    std::vector<glm::dvec2> planePoints;
+    planePoints.reserve(lsPoints.size());
+    for (const glm::dvec3& X : lsPoints) {
+        if (!InFront(p4, X)) return std::nullopt;
+        const double w = glm::dot(p4, X);
+        planePoints.emplace_back(glm::dot(b1, X) / w, glm::dot(b2, X) / w);
+    }
+    return FitMapToPlanePoints(p4, planePoints, map, options);
+}
+
+}  // namespace lexel::spatial
