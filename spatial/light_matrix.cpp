@@ -66,8 +66,8 @@ LightMatrix FromScreenRows(const LightSpace& lightSpace, const glm::dmat4& scree
                 throw InputError("light matrix: row " + std::to_string(r + 1) +
                                  " does not send the directional light to infinity");
             // p·X(c) = r·[c; 1] at the centre fixes the third component.
-            p.z = (glm::dot(rXyz, wsCenter) + rW - p.x * lsCenter.x - p.y * lsCenter.y) /
-                  lsCenter.z;
+            p.z =
+                (glm::dot(rXyz, wsCenter) + rW - p.x * lsCenter.x - p.y * lsCenter.y) / lsCenter.z;
         }
         rows[k] = p;
     }
@@ -118,8 +118,8 @@ std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
 }
 
 std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
-                                          std::span<const glm::dvec3> lsPoints,
-                                          Resolution map, const FitOptions& options) {
+                                          std::span<const glm::dvec3> lsPoints, Resolution map,
+                                          const FitOptions& options) {
     glm::dvec3 b1, b2;
     PlaneBasis(p4, &b1, &b2);
     std::vector<glm::dvec2> planePoints;

@@ -66,8 +66,8 @@ struct FitOptions {
 // in front (InFront) or there are no points. A rectangle of zero width is given a width of 1e-9
 // of its length so the map stays invertible.
 std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
-                                          std::span<const glm::dvec3> lsPoints,
-                                          Resolution map, const FitOptions& options = {});
+                                          std::span<const glm::dvec3> lsPoints, Resolution map,
+                                          const FitOptions& options = {});
 
 // The same fit from points already on the plane p4·X = 1, in the orthonormal plane basis
 // (b1, b2) returned by PlaneBasis(p4): y = (b1·X, b2·X) / (p4·X).

@@ -33,8 +33,7 @@ void FrameAround(const glm::dvec3& axis, glm::dvec3* e1, glm::dvec3* e2) {
 LightSpace::LightSpace(const Light& light, const Bounds& wsBounds) : light_(light) {
     if (wsBounds.Empty()) throw InputError("light: the scene has no geometry to light");
     if (IsPoint()) {
-        if (!Finite(light.position))
-            throw InputError("light: position is not finite");
+        if (!Finite(light.position)) throw InputError("light: position is not finite");
         if (wsBounds.Contains(light.position))
             throw InputError("light: point light at " + Vec(light.position) +
                              " is inside the geometry's bounds; no light matrix can see all of it");

@@ -52,9 +52,9 @@ class LightSpace {
 
   private:
     Light light_;
-    glm::dvec3 e1_, e2_, e3_;   // world-space frame axes (rows of the rotation)
-    glm::dvec3 origin_;         // world: the light (point) or the bounds centre (directional)
-    double s_ = 1.0;            // directional: the fixed third coordinate, twice the bounds radius
+    glm::dvec3 e1_, e2_, e3_;  // world-space frame axes (rows of the rotation)
+    glm::dvec3 origin_;        // world: the light (point) or the bounds centre (directional)
+    double s_ = 1.0;           // directional: the fixed third coordinate, twice the bounds radius
 };
 
 }  // namespace lexel::spatial

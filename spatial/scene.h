@@ -11,8 +11,8 @@
 
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <glm/glm.hpp>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -80,8 +80,8 @@ struct Camera {
 struct Light {
     enum class Type { kPoint, kDirectional };
     Type type = Type::kPoint;
-    glm::dvec3 position{0.0};                // point lights, world units
-    glm::dvec3 direction{0.0, -1.0, 0.0};    // directional lights: unit, the way light travels
+    glm::dvec3 position{0.0};              // point lights, world units
+    glm::dvec3 direction{0.0, -1.0, 0.0};  // directional lights: unit, the way light travels
 };
 
 // `light_sweep` of a case: `count` point lights uniformly at random on the upper hemisphere

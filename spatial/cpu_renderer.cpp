@@ -1,0 +1,142 @@
+// The CPU reference backend of render_backend.h: the rasterizer of raster.h with exact world
+// points, plus the shared shadow decision ShadePoint.
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+#include "spatial/raster.h"
+#include "spatial/render_backend.h"
+
+namespace lexel::spatial {
+
+ImageFromWorld ImageRows(const glm::dmat4& m) {
+    ImageFromWorld rows;
+    for (int c = 0; c < 4; ++c) rows[c] = glm::dvec3(m[c][0], m[c][1], m[c][3]);
+    return rows;
+}
+
+RasterBuffer MakeRasterBuffer(Resolution resolution) {
+    RasterBuffer b;
+    b.resolution = resolution;
+    b.depth.assign(resolution.Count(), std::numeric_limits<double>::infinity());
+    b.triangle.assign(resolution.Count(), -1);
+    b.wsPoint.assign(resolution.Count(), glm::dvec3(0.0));
+    return b;
+}
+
+Shade ShadePoint(const LightSpace& lightSpace, const ShadowMap& map, const glm::dvec3& wsPoint,
+                 const glm::dvec3& wsNormal) {
+    if (!(glm::dot(wsNormal, lightSpace.DirectionToLight(wsPoint)) > 0.0))
+        return Shade::kFacingAway;
+    const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
+    if (!InFront(map.matrix.p4, lsX)) return Shade::kLit;
+    const glm::dvec2 u = map.matrix.Map(lsX);
+    if (!(u.x >= 0.0 && u.y >= 0.0 && u.x < map.resolution.width && u.y < map.resolution.height))
+        return Shade::kLit;
+    const int tx = static_cast<int>(u.x), ty = static_cast<int>(u.y);
+    const float stored = map.depth[static_cast<std::size_t>(ty) * map.resolution.width + tx];
+    if (std::isinf(stored)) return Shade::kLit;
+
+    // Depth of the receiver's plane along the ray through the texel centre. Both ray kinds have
+    // unit direction and depth 0 at their origin, so the ray parameter is the linear depth.
+    glm::dvec3 wsOrigin, wsDirection;
+    lightSpace.Ray(map.matrix.Unmap({tx + 0.5, ty + 0.5}), &wsOrigin, &wsDirection);
+    const double facing = glm::dot(wsNormal, wsDirection);
+    double receiverDepth = lightSpace.Depth(wsPoint);
+    if (facing != 0.0) {
+        const double t = glm::dot(wsNormal, wsPoint - wsOrigin) / facing;
+        if (t > 0.0 && std::isfinite(t)) receiverDepth = t;
+    }
+    return stored < receiverDepth * (1.0 - kRelativeBias) ? Shade::kShadowed : Shade::kLit;
+}
+
+namespace {
+
+class CpuRenderer final : public RenderBackend {
+  public:
+    explicit CpuRenderer(const TriangleMesh& geometry) : geometry_(geometry) {
+        const Bounds b = geometry.ComputeBounds();
+        sceneRadius_ = b.Empty() ? 1.0 : std::max(b.Radius(), 1e-12);
+        normals_.resize(geometry.triangles.size());
+        for (std::size_t t = 0; t < normals_.size(); ++t) normals_[t] = geometry.FaceNormal(t);
+    }
+
+    std::string_view Name() const override { return "cpu"; }
+
+    CameraBuffer RenderCamera(const Camera& camera, Resolution resolution) const override {
+        const glm::dmat4 screenFromWorld = camera.ScreenFromWorld(resolution);
+        const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
+        RasterBuffer raster = MakeRasterBuffer(resolution);
+        // Depth key: distance along the view axis (= clip w); beyond the far plane is not seen.
+        const auto viewDepth = [&](const glm::dvec3& ws) {
+            const double z = glm::dot(forward, ws - camera.position);
+            return z <= camera.farPlane ? z : std::numeric_limits<double>::infinity();
+        };
+        RasterizeNearest(geometry_, ImageRows(screenFromWorld), camera.nearPlane, viewDepth,
+                         &raster);
+
+        CameraBuffer out;
+        out.resolution = resolution;
+        out.windowDepth.assign(resolution.Count(), 1.0);
+        out.wsPosition = std::move(raster.wsPoint);
+        out.wsNormal.assign(resolution.Count(), glm::dvec3(0.0));
+        out.triangle = std::move(raster.triangle);
+        tbb::parallel_for(std::size_t(0), resolution.Count(), [&](std::size_t i) {
+            if (out.triangle[i] < 0) return;
+            const glm::dvec3& ws = out.wsPosition[i];
+            const glm::dvec4 h = screenFromWorld * glm::dvec4(ws, 1.0);
+            out.windowDepth[i] = h.z / h.w;
+            glm::dvec3 n = normals_[out.triangle[i]];
+            if (glm::dot(n, camera.position - ws) < 0.0) n = -n;
+            out.wsNormal[i] = n;
+        });
+        return out;
+    }
+
+    ShadowMap RenderShadowMap(const LightSpace& lightSpace, const LightMatrix& matrix,
+                              Resolution resolution) const override {
+        // Image from world: rows p1, p2, p4 of P composed with X = A [x; 1]; A's columns are the
+        // light-space images of the world basis vectors and of the origin.
+        const glm::dvec3 lsOrigin = lightSpace.ToLight(glm::dvec3(0.0));
+        const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+        const glm::dmat3 rows = matrix.Rows();
+        ImageFromWorld view;
+        for (int c = 0; c < 3; ++c) view[c] = rows * lsFromWs[c];
+        view[3] = rows * lsOrigin;
+        RasterBuffer raster = MakeRasterBuffer(resolution);
+        const auto lightDepth = [&](const glm::dvec3& ws) { return lightSpace.Depth(ws); };
+        // w = p4·X is a length; 1e-9 scene radii keeps clipped vertices finite.
+        RasterizeNearest(geometry_, view, 1e-9 * sceneRadius_, lightDepth, &raster);
+
+        ShadowMap map;
+        map.resolution = resolution;
+        map.matrix = matrix;
+        map.depth.resize(resolution.Count());
+        for (std::size_t i = 0; i < map.depth.size(); ++i)
+            map.depth[i] = static_cast<float>(raster.depth[i]);
+        return map;
+    }
+
+    std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
+                                   const ShadowMap& map) const override {
+        std::vector<Shade> shades(frame.resolution.Count(), Shade::kEmpty);
+        tbb::parallel_for(std::size_t(0), shades.size(), [&](std::size_t i) {
+            if (frame.Covered(i))
+                shades[i] = ShadePoint(lightSpace, map, frame.wsPosition[i], frame.wsNormal[i]);
+        });
+        return shades;
+    }
+
+  private:
+    TriangleMesh geometry_;  // a copy: the backend owns what it draws, as a GPU backend would
+    std::vector<glm::dvec3> normals_;
+    double sceneRadius_ = 1.0;
+};
+
+}  // namespace
+
+std::unique_ptr<RenderBackend> MakeCpuRenderer(const TriangleMesh& geometry) {
+    return std::make_unique<CpuRenderer>(geometry);
+}
+
+}  // namespace lexel::spatial

@@ -1,0 +1,70 @@
+// The rendering passes of the 3D harness behind one interface (report Algorithm 1 steps 1–2 and
+// the experiment of §3), so that a GPU backend (spatial/gl/) can provide the same passes:
+//   1. the camera pass: per pixel the visible world point, its normal and its z-buffer value —
+//      the readback at low resolution, the final frame at full resolution;
+//   2. the shadow-map pass: linear light depth through any light matrix P;
+//   3. shading: per pixel the shadow decision for one light from one shadow map.
+//
+// The shadow decision (ShadePoint) is the bias policy, identical for every method:
+//   - a receiver whose normal faces away from the light (n · l ≤ 0) is in attached shadow and is
+//     excluded from the misclassification counts (every method and the ground truth agree);
+//   - otherwise the stored depth of texel t is compared with the depth of the receiver's own plane
+//     along the ray through t's centre ("receiver plane depth", as in Schüler, ShaderX4 2006, and
+//     Isidoro, GDC 2006): the map stores the nearest surface along exactly that ray, so a lit plane
+//     compares equal with itself whatever the texel size and slope, and acne cannot appear;
+//   - shadowed iff stored < receiverPlaneDepth · (1 - kRelativeBias), kRelativeBias = 1e-5
+//     (dimensionless, about 170 float roundings of the stored depth);
+//   - a receiver outside the map, or behind the light's plane p4·X = 0, is lit (every method's map
+//     covers the visible samples, so this only happens between readback samples).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "spatial/light_matrix.h"
+#include "spatial/light_space.h"
+#include "spatial/scene.h"
+
+namespace lexel::spatial {
+
+// What the camera sees, per pixel, row-major from the top row.
+struct CameraBuffer {
+    Resolution resolution;
+    std::vector<double> windowDepth;  // the z-buffer x³ ∈ [0, 1] (affine in 1/z_view); 1 if empty
+    std::vector<glm::dvec3> wsPosition;  // the visible point
+    std::vector<glm::dvec3> wsNormal;    // unit geometric normal, turned to face the camera
+    std::vector<std::int32_t> triangle;  // -1 where nothing is visible
+    bool Covered(std::size_t pixel) const { return triangle[pixel] >= 0; }
+};
+
+struct ShadowMap {
+    Resolution resolution;
+    LightMatrix matrix;
+    std::vector<float> depth;  // linear light depth (LightSpace::Depth); +inf where empty
+};
+
+enum class Shade : std::uint8_t { kEmpty = 0, kLit = 1, kShadowed = 2, kFacingAway = 3 };
+
+inline constexpr double kRelativeBias = 1e-5;
+
+// The shadow decision for one receiver (see the header comment).
+Shade ShadePoint(const LightSpace& lightSpace, const ShadowMap& map, const glm::dvec3& wsPoint,
+                 const glm::dvec3& wsNormal);
+
+class RenderBackend {
+  public:
+    virtual ~RenderBackend() = default;
+    virtual std::string_view Name() const = 0;
+    virtual CameraBuffer RenderCamera(const Camera& camera, Resolution resolution) const = 0;
+    virtual ShadowMap RenderShadowMap(const LightSpace& lightSpace, const LightMatrix& matrix,
+                                      Resolution resolution) const = 0;
+    virtual std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
+                                           const ShadowMap& map) const = 0;
+};
+
+// The CPU reference: exact (double) world points per pixel, TBB-parallel, deterministic.
+std::unique_ptr<RenderBackend> MakeCpuRenderer(const TriangleMesh& geometry);
+
+}  // namespace lexel::spatial
