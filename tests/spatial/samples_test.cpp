@@ -1,0 +1,132 @@
+// The readback derivatives of Appendix A against the exact screen → surface map, the
+// discontinuity rejection, and the energy h of eq. (6) against a hand-computed sample.
+#include "spatial/samples.h"
+
+#include <gtest/gtest.h>
+
+#include "spatial/spatial_test_scenes.h"
+
+namespace lexel::spatial {
+namespace {
+
+Camera ReadbackCamera() {
+    Camera c;
+    c.position = {0.5, 1.7, 9.0};
+    c.target = {0.0, 0.5, 0.0};
+    c.resolution = {180, 180};
+    return c;
+}
+
+// The exact world point under screen point xs on the plane of triangle t.
+glm::dvec3 OnTrianglePlane(const TriangleMesh& mesh, std::int32_t t, const Camera& camera,
+                           glm::dvec2 xs) {
+    const glm::dvec3 n = mesh.FaceNormal(t);
+    const glm::dvec3 v0(mesh.positions[mesh.triangles[t][0]]);
+    const glm::dvec3 d = camera.RayDirection(xs, camera.resolution);
+    return camera.position + (glm::dot(n, v0 - camera.position) / glm::dot(n, d)) * d;
+}
+
+TEST(Readback, DepthDerivativesAreExactOnPlanesAndDiscontinuitiesAreRejected) {
+    TriangleMesh scene = testing::FloorQuad(30.0);
+    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
+    const auto renderer = MakeCpuRenderer(scene);
+    const Camera camera = ReadbackCamera();
+    const Readback rb = MakeReadback(*renderer, camera, camera.resolution);
+    int smooth = 0, covered = 0, rejectedAtEdges = 0;
+    const int w = 180;
+    for (int y = 1; y < 179; ++y)
+        for (int x = 1; x < 179; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            if (!rb.buffer.Covered(i)) continue;
+            ++covered;
+            // A pixel whose 4-neighbours see another plane must be rejected when the depth jumps.
+            const glm::dvec3 n = scene.FaceNormal(rb.buffer.triangle[i]);
+            bool otherPlane = false;
+            for (std::size_t j : {i - 1, i + 1, i - w, i + w})
+                otherPlane = otherPlane || !rb.buffer.Covered(j) ||
+                             glm::dot(scene.FaceNormal(rb.buffer.triangle[j]), n) < 0.5;
+            if (!rb.smooth[i]) {
+                rejectedAtEdges += otherPlane;
+                continue;
+            }
+            ++smooth;
+            ASSERT_FALSE(otherPlane) << "pixel " << x << "," << y << " straddles an edge";
+            const double eps = 1e-3;
+            const glm::dvec2 c(x + 0.5, y + 0.5);
+            const std::int32_t t = rb.buffer.triangle[i];
+            const glm::dvec3 exact1 = (OnTrianglePlane(scene, t, camera, c + glm::dvec2(eps, 0)) -
+                                       OnTrianglePlane(scene, t, camera, c - glm::dvec2(eps, 0))) /
+                                      (2 * eps);
+            const glm::dvec3 exact2 = (OnTrianglePlane(scene, t, camera, c + glm::dvec2(0, eps)) -
+                                       OnTrianglePlane(scene, t, camera, c - glm::dvec2(0, eps))) /
+                                      (2 * eps);
+            ASSERT_NEAR(glm::length(rb.dWdx1[i] - exact1), 0.0, 1e-5 * glm::length(exact1))
+                << "pixel " << x << "," << y;
+            ASSERT_NEAR(glm::length(rb.dWdx2[i] - exact2), 0.0, 1e-5 * glm::length(exact2))
+                << "pixel " << x << "," << y;
+        }
+    EXPECT_GT(smooth, covered * 9 / 10);
+    EXPECT_GT(rejectedAtEdges, 100);
+    EXPECT_EQ(rb.wsRelevant.size(), static_cast<std::size_t>(std::count_if(
+                                        rb.buffer.triangle.begin(), rb.buffer.triangle.end(),
+                                        [](std::int32_t t) { return t >= 0; })));
+}
+
+TEST(Energy, SampleBadnessIsTheInverseJacobianFrobeniusNorm) {
+    // u = (2 X1/X3, 3 X2/X3) with X = (x¹, x², 1) + small depth: J = diag(2, 3) at X3 = 1, so
+    // ||J⁻¹||² = 1/4 + 1/9.
+    LightMatrix m;
+    m.p1 = {2, 0, 0};
+    m.p2 = {0, 3, 0};
+    m.p4 = {0, 0, 1};
+    const glm::dvec3 lsX(0.3, -0.2, 1.0), dX1(1, 0, 0), dX2(0, 1, 0);
+    EXPECT_NEAR(SampleBadness(m, lsX, dX1, dX2), 1.0 / 4 + 1.0 / 9, 1e-15);
+    // Behind the light's plane: unbounded, never NaN.
+    EXPECT_TRUE(std::isinf(SampleBadness(m, {0.3, 0.2, -1.0}, dX1, dX2)));
+    // A sample whose screen directions are parallel in the map: singular J, +inf.
+    EXPECT_TRUE(std::isinf(SampleBadness(m, lsX, dX1, dX1)));
+    LightSamples s;
+    s.lsX = {lsX, lsX};
+    s.dXdx1 = {dX1, 2.0 * dX1};
+    s.dXdx2 = {dX2, dX2};
+    EXPECT_NEAR(Energy(m, s), (1.0 / 4 + 1.0 / 9) + (1.0 / 16 + 1.0 / 9), 1e-15);
+}
+
+TEST(LightSamples, BoundarySamplesSitOnTheShadowEdge) {
+    TriangleMesh scene = testing::FloorQuad(30.0);
+    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
+    const auto renderer = MakeCpuRenderer(scene);
+    const Camera camera = ReadbackCamera();
+    const Readback rb = MakeReadback(*renderer, camera, camera.resolution);
+    Light light;
+    light.position = {-20.0, 30.0, -10.0};
+    const Bounds bounds = scene.ComputeBounds();
+    const LightSpace ls(light, bounds);
+    std::vector<glm::dvec3> corners;
+    for (const auto& c : bounds.Corners()) corners.push_back(ls.ToLight(c));
+    const Resolution mapRes{1024, 1024};
+    const ShadowMap map =
+        renderer->RenderShadowMap(ls, *FitMapToPoints({0, 0, 1}, corners, mapRes), mapRes);
+    const auto shades = renderer->ShadePixels(rb.buffer, ls, map);
+    const LightSamples s = MakeLightSamples(rb, ls, shades);
+    ASSERT_GT(s.lsX.size(), 50u);
+    EXPECT_EQ(s.lsRelevant.size(), rb.wsRelevant.size());
+    // Every boundary sample on the floor is within a few readback pixels' footprint of the
+    // analytic shadow edge: the segment to the light grazes the box.
+    for (std::size_t k = 0; k < s.lsX.size(); ++k) {
+        const std::size_t i = s.pixel[k];
+        const glm::dvec3 ws = rb.buffer.wsPosition[i];
+        if (std::abs(ws.y) > 1e-9) continue;
+        const double step = 2.0 * std::max(glm::length(rb.dWdx1[i]), glm::length(rb.dWdx2[i]));
+        bool mixed = false;
+        const bool here = testing::SegmentHitsBox(ws, light.position, {-1, 0, -1}, {1, 1.5, 1});
+        for (const glm::dvec3 d : {glm::dvec3(step, 0, 0), glm::dvec3(-step, 0, 0),
+                                   glm::dvec3(0, 0, step), glm::dvec3(0, 0, -step)})
+            mixed = mixed || testing::SegmentHitsBox(ws + d, light.position, {-1, 0, -1},
+                                                     {1, 1.5, 1}) != here;
+        EXPECT_TRUE(mixed) << "sample at " << ws.x << "," << ws.z;
+    }
+}
+
+}  // namespace
+}  // namespace lexel::spatial
