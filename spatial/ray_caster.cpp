@@ -178,8 +178,8 @@ std::optional<RayCaster::Hit> RayCaster::Intersect(const glm::dvec3& wsOrigin,
     return Hit{static_cast<double>(rayHit.ray.tfar), rayHit.hit.primID};
 }
 
-void RayCaster::OccludedBatch(std::span<const ShadowRay> rays,
-                              std::span<std::uint8_t> occluded) const {
+void RayCaster::OccludedBatch(std::span<const ShadowRay> rays, std::span<std::uint8_t> occluded,
+                              RayOrder order) const {
     if (rays.size() != occluded.size())
         throw std::invalid_argument("ray caster: " + std::to_string(rays.size()) + " rays but " +
                                     std::to_string(occluded.size()) + " result slots");
@@ -191,6 +191,8 @@ void RayCaster::OccludedBatch(std::span<const ShadowRay> rays,
         [&](const tbb::blocked_range<std::size_t>& chunks) {
             RTCIntersectContext context;
             rtcInitIntersectContext(&context);
+            context.flags = order == RayOrder::kCoherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                                         : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
             RTCRay16 packet;
             alignas(64) int valid[kPacketSize];
             for (std::size_t chunk = chunks.begin(); chunk != chunks.end(); ++chunk) {

@@ -369,14 +369,16 @@ TEST(RayCaster, BatchMatchesSingleRayForEveryRay) {
     // Not a multiple of the packet size, and more than one TBB chunk.
     const std::vector<Ray> rays = RandomRays(seed, mesh, 10'007);
     const std::vector<ShadowRay> shadowRays = ToShadowRays(rays);
-    std::vector<std::uint8_t> occluded(rays.size(), 7);
+    std::vector<std::uint8_t> occluded(rays.size(), 7), incoherent(rays.size(), 7);
     caster.OccludedBatch(shadowRays, occluded);
+    caster.OccludedBatch(shadowRays, incoherent, RayCaster::RayOrder::kIncoherent);
     int hits = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         const ShadowRay& s = shadowRays[i];
         const bool single =
             caster.Occluded(glm::dvec3(s.wsOrigin), glm::dvec3(s.wsDirection), s.tNear, s.tFar);
         ASSERT_EQ(occluded[i], single ? 1 : 0) << Describe(seed, i, rays[i]);
+        ASSERT_EQ(incoherent[i], single ? 1 : 0) << Describe(seed, i, rays[i]);
         hits += single;
     }
     EXPECT_GT(hits, 1000);
