@@ -1,0 +1,291 @@
+#include "spatial/optimizer.h"
+
+#include <ceres/ceres.h>
+#include <ceres/sphere_manifold.h>
+
+#include <Eigen/Core>
+#include <chrono>
+#include <cmath>
+
+#include "solvers/convex_hull.h"
+#include "solvers/errors.h"
+#include "spatial/energy_gradient.h"
+
+namespace lexel::spatial {
+namespace {
+
+double MsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+// Cross product and dot product for any scalar type.
+template <typename T>
+void Cross(const T* a, const T* b, T* out) {
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// The combinatorics of a minimum-area rectangle around projected hull vertices: the flush edge
+// (a → b) and the vertices extreme along and across it.
+struct RectangleStructure {
+    int a, b, minU, maxU, minV, maxV;
+    bool swapAxes;  // the long side must go on the other map axis
+};
+
+// Brute-force rotating calipers over h vertices (h is small): the minimum-area rectangle's
+// structure, ties to the first edge as in solvers/min_area_rectangle.
+std::optional<RectangleStructure> FindStructure(const std::vector<glm::dvec2>& y, Resolution map) {
+    std::vector<Eigen::Vector2d> pts(y.size());
+    for (std::size_t i = 0; i < y.size(); ++i) pts[i] = {y[i].x, y[i].y};
+    const std::vector<Eigen::Vector2d> hull = ConvexHull(pts);
+    if (hull.size() < 3) return std::nullopt;
+    std::vector<int> index(hull.size());
+    for (std::size_t k = 0; k < hull.size(); ++k)
+        for (std::size_t i = 0; i < pts.size(); ++i)
+            if (pts[i] == hull[k]) {
+                index[k] = static_cast<int>(i);
+                break;
+            }
+    std::optional<RectangleStructure> best;
+    double bestArea = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < hull.size(); ++k) {
+        const int a = index[k], b = index[(k + 1) % hull.size()];
+        const glm::dvec2 u = glm::normalize(y[b] - y[a]);
+        const glm::dvec2 v(-u.y, u.x);
+        RectangleStructure s{a, b, a, a, a, a, false};
+        double lo[2] = {glm::dot(u, y[a]), glm::dot(v, y[a])}, hi[2] = {lo[0], lo[1]};
+        for (int i : index) {
+            const double pu = glm::dot(u, y[i]), pv = glm::dot(v, y[i]);
+            if (pu < lo[0]) lo[0] = pu, s.minU = i;
+            if (pu > hi[0]) hi[0] = pu, s.maxU = i;
+            if (pv < lo[1]) lo[1] = pv, s.minV = i;
+            if (pv > hi[1]) hi[1] = pv, s.maxV = i;
+        }
+        const double area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
+        if (area < bestArea) {
+            bestArea = area;
+            s.swapAxes = (hi[0] - lo[0] >= hi[1] - lo[1]) != (map.width >= map.height);
+            best = s;
+        }
+    }
+    return best;
+}
+
+// h(fit(p4)) for the hull vertices and samples, differentiable in p4 through the fit for a fixed
+// rectangle structure (FitMapToPlanePoints written for any scalar type).
+struct RefinedEnergy {
+    const std::vector<glm::dvec3>* vertices;
+    const LightSamples* samples;
+    Resolution map;
+    double margin;
+
+    template <typename T>
+    bool operator()(const T* p4, T* energy) const {
+        // The structure and the plane basis are chosen in double, locally constant in p4.
+        const glm::dvec3 p4d(ceres::internal::AsScalar(p4[0]), ceres::internal::AsScalar(p4[1]),
+                             ceres::internal::AsScalar(p4[2]));
+        for (const glm::dvec3& v : *vertices)
+            if (!InFront(p4d, v)) return false;
+        glm::dvec3 b1d, b2d;
+        PlaneBasis(p4d, &b1d, &b2d);
+        // b1 = normalize(helper × p4), b2 = p4 × b1, with the same helper axis as PlaneBasis.
+        const glm::dvec3 a = glm::abs(p4d);
+        const glm::dvec3 helper = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
+                                  : (a.y <= a.z)             ? glm::dvec3(0, 1, 0)
+                                                             : glm::dvec3(0, 0, 1);
+        const T h[3] = {T(helper.x), T(helper.y), T(helper.z)};
+        T b1[3], b2[3];
+        Cross(h, p4, b1);
+        const T n1 = sqrt(b1[0] * b1[0] + b1[1] * b1[1] + b1[2] * b1[2]);
+        for (T& c : b1) c /= n1;
+        Cross(p4, b1, b2);
+
+        std::vector<glm::dvec2> yd(vertices->size());
+        for (std::size_t i = 0; i < yd.size(); ++i) {
+            const glm::dvec3& v = (*vertices)[i];
+            const double w = glm::dot(p4d, v);
+            yd[i] = {glm::dot(b1d, v) / w, glm::dot(b2d, v) / w};
+        }
+        const std::optional<RectangleStructure> s = FindStructure(yd, map);
+        if (!s) return false;
+        const auto project = [&](int i, T* y) {
+            const glm::dvec3& v = (*vertices)[i];
+            const T w = p4[0] * v.x + p4[1] * v.y + p4[2] * v.z;
+            y[0] = (b1[0] * v.x + b1[1] * v.y + b1[2] * v.z) / w;
+            y[1] = (b2[0] * v.x + b2[1] * v.y + b2[2] * v.z) / w;
+        };
+        T ya[2], yb[2], y[4][2];
+        project(s->a, ya);
+        project(s->b, yb);
+        project(s->minU, y[0]);
+        project(s->maxU, y[1]);
+        project(s->minV, y[2]);
+        project(s->maxV, y[3]);
+        T u[2] = {yb[0] - ya[0], yb[1] - ya[1]};
+        const T un = sqrt(u[0] * u[0] + u[1] * u[1]);
+        u[0] /= un;
+        u[1] /= un;
+        T v[2] = {-u[1], u[0]};
+        T loU = u[0] * y[0][0] + u[1] * y[0][1], hiU = u[0] * y[1][0] + u[1] * y[1][1];
+        T loV = v[0] * y[2][0] + v[1] * y[2][1], hiV = v[0] * y[3][0] + v[1] * y[3][1];
+        if (s->swapAxes) {  // +90° turn of the frame, as OrientLongSideAlong
+            const T newU[2] = {v[0], v[1]}, newV[2] = {-u[0], -u[1]};
+            const T nLoU = loV, nHiU = hiV, nLoV = -hiU, nHiV = -loU;
+            u[0] = newU[0], u[1] = newU[1], v[0] = newV[0], v[1] = newV[1];
+            loU = nLoU, hiU = nHiU, loV = nLoV, hiV = nHiV;
+        }
+        const T halfU = T(0.5 * (1.0 + margin)) * (hiU - loU);
+        const T halfV = T(0.5 * (1.0 + margin)) * (hiV - loV);
+        const T kU = T(0.5 * map.width) / halfU, kV = T(0.5 * map.height) / halfV;
+        const T cU = T(0.5) * (loU + hiU), cV = T(0.5) * (loV + hiV);
+        // p1 = (W/2 - kU cU) p4 + kU (u.x b1 + u.y b2); p2 likewise (light_matrix.cpp).
+        // SampleEnergy takes double p1, p2, so evaluate J by hand here for any T.
+        T p1[3], p2[3];
+        for (int c = 0; c < 3; ++c) {
+            p1[c] = (T(0.5 * map.width) - kU * cU) * p4[c] + kU * (u[0] * b1[c] + u[1] * b2[c]);
+            p2[c] = (T(0.5 * map.height) - kV * cV) * p4[c] + kV * (v[0] * b1[c] + v[1] * b2[c]);
+        }
+        T total(0.0);
+        const auto dot = [](const T* p, const glm::dvec3& x) {
+            return p[0] * x.x + p[1] * x.y + p[2] * x.z;
+        };
+        for (std::size_t k = 0; k < samples->lsX.size(); ++k) {
+            const glm::dvec3& X = samples->lsX[k];
+            const T w = dot(p4, X);
+            if (!(ceres::internal::AsScalar(w) > 0.0)) return false;
+            const T invW = T(1.0) / w;
+            const T a1 = dot(p1, X), a2 = dot(p2, X);
+            const T wD1 = dot(p4, samples->dXdx1[k]), wD2 = dot(p4, samples->dXdx2[k]);
+            const T j11 = (dot(p1, samples->dXdx1[k]) - a1 * wD1 * invW) * invW;
+            const T j12 = (dot(p1, samples->dXdx2[k]) - a1 * wD2 * invW) * invW;
+            const T j21 = (dot(p2, samples->dXdx1[k]) - a2 * wD1 * invW) * invW;
+            const T j22 = (dot(p2, samples->dXdx2[k]) - a2 * wD2 * invW) * invW;
+            const T det = j11 * j22 - j12 * j21;
+            total += (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22) / (det * det);
+        }
+        *energy = total;
+        return ceres::internal::AsScalar(total) < std::numeric_limits<double>::infinity();
+    }
+};
+
+}  // namespace
+
+RelevantHull::RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dvec3& p4Reference) {
+    if (lsRelevant.empty()) throw InputError("optimizer: no relevant points");
+    glm::dvec3 b1, b2;
+    PlaneBasis(p4Reference, &b1, &b2);
+    std::vector<Eigen::Vector2d> y;
+    y.reserve(lsRelevant.size());
+    for (const glm::dvec3& X : lsRelevant) {
+        if (!InFront(p4Reference, X))
+            throw InputError("optimizer: a relevant point is behind the initial axis's plane");
+        const double w = glm::dot(p4Reference, X);
+        y.emplace_back(glm::dot(b1, X) / w, glm::dot(b2, X) / w);
+    }
+    for (const Eigen::Vector2d& v : ConvexHull(y))
+        vertices_.push_back(v.x() * b1 + v.y() * b2 + p4Reference);
+}
+
+std::optional<LightMatrix> RelevantHull::Fit(const glm::dvec3& p4, Resolution map,
+                                             const FitOptions& options) const {
+    return FitMapToPoints(p4, vertices_, map, options);
+}
+
+glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& k, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return glm::normalize(p4 * c + glm::cross(k, p4) * s + k * glm::dot(k, p4) * (1.0 - c));
+}
+
+OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
+                                    Resolution map, const OptimizerOptions& options) {
+    if (samples.lsRelevant.empty()) throw InputError("optimizer: no relevant points");
+    OptimizerResult r;
+    const FitOptions fitOptions{options.margin};
+
+    auto start = std::chrono::steady_clock::now();
+    std::optional<RelevantHull> hull;
+    if (options.hullOnce) {
+        try {
+            hull.emplace(samples.lsRelevant, glm::normalize(initialP4));
+            r.hullVertices = hull->Vertices().size();
+        } catch (const InputError&) {
+            hull.reset();  // the initial axis does not see every point: use the reference path
+        }
+    }
+    r.hullMs = MsSince(start);
+    const auto fit = [&](const glm::dvec3& p4) {
+        return hull ? hull->Fit(p4, map, fitOptions)
+                    : FitMapToPoints(p4, samples.lsRelevant, map, fitOptions);
+    };
+
+    start = std::chrono::steady_clock::now();
+    glm::dvec3 p4 = glm::normalize(initialP4);
+    std::optional<LightMatrix> best = fit(p4);
+    double bestH = best ? Energy(*best, samples) : std::numeric_limits<double>::infinity();
+    r.hAfterIteration.push_back(bestH);
+    for (int it = 0; it < options.iterations && best; ++it) {
+        const glm::dvec3 g = EnergyGradientAnalytic(*best, samples);
+        const glm::dvec3 axis = glm::cross(p4, -g);
+        const double axisLength = glm::length(axis);
+        if (!(axisLength > 0.0) || !std::isfinite(axisLength)) break;
+        const glm::dvec3 unitAxis = axis / axisLength;
+        glm::dvec3 nextP4 = p4;
+        for (double deg : options.anglesDeg) {
+            ++r.candidatesTried;
+            const glm::dvec3 candidate = RotateAxis(p4, unitAxis, glm::radians(deg));
+            const std::optional<LightMatrix> m = fit(candidate);
+            if (!m) {
+                ++r.candidatesRejected;
+                continue;
+            }
+            const double h = Energy(*m, samples);
+            if (h < bestH) {
+                bestH = h;
+                best = m;
+                nextP4 = candidate;
+            }
+        }
+        p4 = nextP4;
+        r.hAfterIteration.push_back(bestH);
+    }
+    r.searchMs = MsSince(start);
+    if (!best) {
+        // Not even the initial axis sees every relevant point; nothing to optimize.
+        r.usedFallback = true;
+        best = FitMapToPoints(glm::normalize(initialP4), samples.lsRelevant, map, fitOptions);
+        if (!best) throw InputError("optimizer: no light matrix sees every relevant point");
+        bestH = Energy(*best, samples);
+    }
+    r.hBeforeRefine = bestH;
+
+    if (options.refine && hull && hull->Vertices().size() >= 3 && !samples.lsX.empty()) {
+        start = std::chrono::steady_clock::now();
+        std::vector<glm::dvec3> vertices(hull->Vertices().begin(), hull->Vertices().end());
+        double x[3] = {p4.x, p4.y, p4.z};
+        ceres::GradientProblem problem(
+            new ceres::AutoDiffFirstOrderFunction<RefinedEnergy, 3>(
+                new RefinedEnergy{&vertices, &samples, map, options.margin}),
+            new ceres::SphereManifold<3>());
+        ceres::GradientProblemSolver::Options solverOptions;
+        solverOptions.max_num_iterations = options.refineIterations;
+        solverOptions.logging_type = ceres::SILENT;
+        ceres::GradientProblemSolver::Summary summary;
+        ceres::Solve(solverOptions, problem, x, &summary);
+        const glm::dvec3 refined = glm::normalize(glm::dvec3(x[0], x[1], x[2]));
+        if (const std::optional<LightMatrix> m = fit(refined)) {
+            const double h = Energy(*m, samples);
+            if (h < bestH) {
+                bestH = h;
+                best = m;
+            }
+        }
+        r.refineMs = MsSince(start);
+    }
+    r.matrix = *best;
+    r.h = bestH;
+    return r;
+}
+
+}  // namespace lexel::spatial

@@ -1,0 +1,85 @@
+// The scene-optimized light matrix: Chong & Gortler's Algorithm 1 (report §2.3–2.4), the hull-once
+// speed-up, and a Ceres refinement of p4 on the unit sphere.
+//
+// Algorithm 1 step 4, k times: the gradient g = ∂h/∂p4 (energy_gradient.h, affine rows fixed);
+// the rotation axis p4 × (-g); for each candidate angle θ ∈ {-10, 3, 5, 9, 16, 23, 30, 40, 50}°
+// the rotated axis, its affine part re-fitted (light_matrix.h: minimum-area rectangle around the
+// convex hull of the relevant points, long side on the long map side, margin for the subsampled
+// readback), rejected when a relevant point is not strictly in front of p4·X = 0; keep the best h.
+//
+// One hull per frame. Let C be the cone of light rays through the relevant points. A point is in
+// front of p4 (p4·X > 0) for all points iff it is for the generators of C: a linear functional
+// positive on generators is positive on their conic combinations. Projecting centrally onto the
+// plane p4·X = 1 sends C to the convex set conv(projected generators) whenever every generator is
+// in front (the central projection between two planes is a homography, and a homography maps a
+// segment to a segment when no point of it crosses the horizon, so convex combinations map to
+// convex combinations, and extreme points to extreme points). The extreme rays of C are exactly
+// the vertices of the convex hull of the points projected onto any one valid plane — here the
+// initial axis's. So the hull is computed once, O(N log N), and every candidate transforms only
+// its h vertices: a rectangle around the hull of the projected vertices is the rectangle around
+// all projected points. Total O(N log N + k·|θ|·h log h) instead of O(k·|θ|·N log N).
+//
+// `optimal-refined`: after the search, Ceres' line-search solver (LBFGS) minimizes h over p4 on
+// the unit sphere (ceres::SphereManifold<3>) with the affine part re-fitted inside the objective.
+// The minimum-area rectangle is piecewise smooth in p4 (its combinatorics — the flush hull edge
+// and the four extreme vertices — are locally constant), so the objective re-derives that
+// structure in double at each evaluation and differentiates the fit through it with Jets.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "spatial/light_matrix.h"
+#include "spatial/samples.h"
+
+namespace lexel::spatial {
+
+struct OptimizerOptions {
+    int iterations = 3;                                                  // report §2.4: k = 3
+    std::vector<double> anglesDeg = {-10, 3, 5, 9, 16, 23, 30, 40, 50};  // report §2.4
+    // Fraction added to each half extent of the fitted rectangle: the readback is subsampled
+    // (180² for a 750² frame), so visible points between samples can fall just outside a tight
+    // fit (report §2.4, last paragraph).
+    double margin = 0.02;
+    bool hullOnce = true;  // false: re-fit from all relevant points per candidate (reference path)
+    bool refine = false;   // optimal-refined
+    int refineIterations = 40;
+};
+
+struct OptimizerResult {
+    LightMatrix matrix;
+    double h = 0.0;
+    std::vector<double> hAfterIteration;  // [0] the initial axis, then after each iteration
+    double hBeforeRefine = 0.0;
+    int candidatesTried = 0, candidatesRejected = 0;
+    std::size_t hullVertices = 0;
+    bool usedFallback = false;  // no valid candidate: the initial (focused) fit is returned
+    // Time profile (report Table 3): hull once, the rotation search, the refinement.
+    double hullMs = 0.0, searchMs = 0.0, refineMs = 0.0;
+};
+
+// The cone of the relevant points through its extreme rays (see the header comment).
+class RelevantHull {
+  public:
+    // Throws InputError when there are no points, or some point is not in front of p4Reference.
+    RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dvec3& p4Reference);
+    std::span<const glm::dvec3> Vertices() const { return vertices_; }
+    // FitMapToPoints(p4, all relevant points) from the hull vertices only.
+    std::optional<LightMatrix> Fit(const glm::dvec3& p4, Resolution map,
+                                   const FitOptions& options) const;
+
+  private:
+    std::vector<glm::dvec3> vertices_;  // on the plane p4Reference·X = 1
+};
+
+// p4 rotated by `angle` radians about the unit axis (Rodrigues).
+glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& unitAxis, double angle);
+
+// Algorithm 1 from `initialP4` (the focused method's axis). Throws InputError when the samples
+// have no relevant points.
+OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
+                                    Resolution map, const OptimizerOptions& options = {});
+
+}  // namespace lexel::spatial

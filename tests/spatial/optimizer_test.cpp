@@ -1,0 +1,132 @@
+// Algorithm 1's pieces against references: the Appendix A gradient against Ceres Jets and central
+// differences, the hull-once fit against the naive fit, and the search's monotone progress.
+#include "spatial/optimizer.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "spatial/energy_gradient.h"
+#include "spatial/spatial_test_scenes.h"
+
+namespace lexel::spatial {
+namespace {
+
+// Random samples in front of the plane p4 = (0, 0, 1): points in a box at depth 5..10 and random
+// screen derivatives.
+LightSamples RandomSamples(std::mt19937_64& rng, int count) {
+    std::uniform_real_distribution<double> uni(-1.0, 1.0);
+    LightSamples s;
+    for (int i = 0; i < count; ++i) {
+        s.lsX.push_back({2 * uni(rng), 2 * uni(rng), 7.5 + 2.5 * uni(rng)});
+        s.dXdx1.push_back({0.05 + 0.01 * uni(rng), 0.01 * uni(rng), 0.02 * uni(rng)});
+        s.dXdx2.push_back({0.01 * uni(rng), 0.05 + 0.01 * uni(rng), 0.02 * uni(rng)});
+        s.lsRelevant.push_back(s.lsX.back());
+    }
+    return s;
+}
+
+TEST(EnergyGradient, AnalyticMatchesJetsAndCentralDifferences) {
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> uni(-1.0, 1.0);
+        const LightSamples s = RandomSamples(rng, 50);
+        const glm::dvec3 p4 = glm::normalize(glm::dvec3(0.1 * uni(rng), 0.1 * uni(rng), 1.0));
+        const auto m = FitMapToPoints(p4, s.lsRelevant, {400, 300});
+        ASSERT_TRUE(m) << "seed " << seed;
+        const glm::dvec3 analytic = EnergyGradientAnalytic(*m, s);
+        const glm::dvec3 jets = EnergyGradientJets(*m, s);
+        const double scale = glm::length(analytic);
+        ASSERT_GT(scale, 0.0);
+        EXPECT_NEAR(glm::length(analytic - jets), 0.0, 1e-10 * scale) << "seed " << seed;
+        // Central differences of h with p1, p2 fixed (p4 need not stay unit for ∂h/∂p4).
+        for (int c = 0; c < 3; ++c) {
+            const double step = 1e-6;
+            LightMatrix plus = *m, minus = *m;
+            plus.p4[c] += step;
+            minus.p4[c] -= step;
+            const double fd = (Energy(plus, s) - Energy(minus, s)) / (2 * step);
+            EXPECT_NEAR(analytic[c], fd, 1e-5 * scale) << "seed " << seed << " component " << c;
+        }
+        // The template evaluates h exactly as Energy does.
+        double h = 0.0;
+        const double p4d[3] = {m->p4.x, m->p4.y, m->p4.z};
+        for (std::size_t k = 0; k < s.lsX.size(); ++k)
+            h += SampleEnergy(m->p1, m->p2, p4d, s.lsX[k], s.dXdx1[k], s.dXdx2[k]);
+        EXPECT_NEAR(h, Energy(*m, s), 1e-12 * h);
+    }
+}
+
+TEST(RelevantHull, FitFromHullVerticesEqualsTheNaiveFit) {
+    for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> uni(-1.0, 1.0);
+        LightSamples s = RandomSamples(rng, 2000);
+        const RelevantHull hull(s.lsRelevant, {0, 0, 1});
+        EXPECT_LT(hull.Vertices().size(), 60u);
+        for (int k = 0; k < 20; ++k) {
+            const glm::dvec3 p4 = glm::normalize(glm::dvec3(0.6 * uni(rng), 0.6 * uni(rng), 1.0));
+            const auto naive = FitMapToPoints(p4, s.lsRelevant, {400, 300}, {0.02});
+            const auto fast = hull.Fit(p4, {400, 300}, {0.02});
+            ASSERT_EQ(naive.has_value(), fast.has_value()) << "seed " << seed << " k " << k;
+            if (!naive) continue;
+            // Same map up to rounding: every relevant point lands at the same texel position.
+            for (std::size_t i = 0; i < s.lsRelevant.size(); i += 97) {
+                const glm::dvec2 a = naive->Map(s.lsRelevant[i]), b = fast->Map(s.lsRelevant[i]);
+                ASSERT_NEAR(glm::length(a - b), 0.0, 1e-7) << "seed " << seed << " k " << k;
+            }
+        }
+    }
+}
+
+TEST(Optimizer, SearchNeverIncreasesHAndRefinementNeverHurts) {
+    // A floor with a box, seen by a camera near the floor, lit from the side: real samples.
+    TriangleMesh scene = testing::FloorQuad(20.0);
+    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 2.0, 1.0}));
+    const auto renderer = MakeCpuRenderer(scene);
+    Camera camera;
+    camera.position = {0.0, 1.7, 12.0};
+    camera.target = {0.0, 0.5, 0.0};
+    const Readback rb = MakeReadback(*renderer, camera, {180, 180});
+    const Bounds bounds = scene.ComputeBounds();
+    for (const glm::dvec3 lightPos :
+         {glm::dvec3(-30, 25, -25), glm::dvec3(40, 15, 10), glm::dvec3(5, 60, -5)}) {
+        Light light;
+        light.position = lightPos;
+        const LightSpace ls(light, bounds);
+        std::vector<glm::dvec3> corners;
+        for (const auto& c : bounds.Corners()) corners.push_back(ls.ToLight(c));
+        const ShadowMap map = renderer->RenderShadowMap(
+            ls, *FitMapToPoints({0, 0, 1}, corners, {400, 400}), {400, 400});
+        const LightSamples s = MakeLightSamples(rb, ls, renderer->ShadePixels(rb.buffer, ls, map));
+        ASSERT_GT(s.lsX.size(), 20u);
+        OptimizerOptions options;
+        options.refine = true;
+        const OptimizerResult r = OptimizeLightMatrix(s, {0, 0, 1}, {400, 400}, options);
+        ASSERT_EQ(r.hAfterIteration.size(), 4u);
+        for (std::size_t i = 1; i < r.hAfterIteration.size(); ++i)
+            EXPECT_LE(r.hAfterIteration[i], r.hAfterIteration[i - 1]);
+        // From the side the focused axis is far from optimal; from straight above it is already
+        // the best axis the search can find.
+        if (lightPos.y < 50) {
+            EXPECT_LT(r.hAfterIteration.back(), 0.8 * r.hAfterIteration.front());
+        }
+        EXPECT_LE(r.h, r.hBeforeRefine);
+        EXPECT_NEAR(r.h, Energy(r.matrix, s), 1e-9 * r.h);
+        // Every relevant point is inside the map.
+        for (const glm::dvec3& X : s.lsRelevant) {
+            ASSERT_TRUE(InFront(r.matrix.p4, X));
+            const glm::dvec2 u = r.matrix.Map(X);
+            ASSERT_GE(u.x, -1e-6);
+            ASSERT_LE(u.x, 400 + 1e-6);
+            ASSERT_GE(u.y, -1e-6);
+            ASSERT_LE(u.y, 400 + 1e-6);
+        }
+        std::cout << "light (" << lightPos.x << ", " << lightPos.y << ", " << lightPos.z << "): h "
+                  << r.hAfterIteration.front() << " -> " << r.hBeforeRefine << " -> refined " << r.h
+                  << "\n";
+    }
+}
+
+}  // namespace
+}  // namespace lexel::spatial
