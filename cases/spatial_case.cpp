@@ -39,9 +39,15 @@ void CheckPose(const spatial::Camera& camera, const JsonField& field) {
     if (!(glm::length(camera.up) > 0.0)) field["up"].Fail("must be a non-zero vector");
     // |sin| of the angle between up and the view direction; lookAt needs it well away from 0.
     const double sine = glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up)));
-    if (!(sine > 1e-6))
-        field["up"].Fail("must not be parallel to the view direction (target - position = " +
-                         FormatVec(view) + ")");
+    if (!(sine > 1e-6)) {
+        const std::string reason =
+            "must not be parallel to the view direction (target - position = " + FormatVec(view) +
+            ")";
+        if (field.Has("up")) field["up"].Fail(reason);
+        // An up the file does not give here (the default, or the camera's in a camera_path pose)
+        // has no pointer of its own: name the pose.
+        field.Fail("up " + FormatVec(camera.up) + " (default or inherited) " + reason);
+    }
 }
 
 // Reads position, target and optional up into `camera`.

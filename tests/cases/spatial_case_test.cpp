@@ -270,6 +270,13 @@ TEST(SpatialCase, BadFieldsAreNamed) {
               "/camera_path/1/target: must differ from position [1, 1.7, -8]");
     EXPECT_EQ(add("/camera_path/0/fov_y_deg", "30"),
               "/camera_path/0/fov_y_deg: unknown key (allowed here: position, target, up)");
+    EXPECT_EQ(replace("/camera_path/0/target", "[0, -5, -9]"),
+              "/camera_path/0: up [0, 1, 0] (default or inherited) must not be parallel to the "
+              "view direction (target - position = [0, -6.7, 0])");
+    EXPECT_EQ(ErrorFor(R"([{"op": "remove", "path": "/camera/up"},
+                           {"op": "replace", "path": "/camera/target", "value": [0, 5, -10]}])"),
+              "/camera: up [0, 1, 0] (default or inherited) must not be parallel to the view "
+              "direction (target - position = [0, 3.3, 0])");
     EXPECT_EQ(replace("/camera_path/1/up", "[0, -1.4, 20]"),
               "/camera_path/1/up: must not be parallel to the view direction (target - position "
               "= [0, -0.7, 10])");
