@@ -6,7 +6,9 @@
 namespace lexel::cases {
 
 bool IsSpatialCase(const nlohmann::json& document) {
-    return document.is_object() && document.contains("lights");
+    // A 3D case may give only a light sweep; flatland cases have neither key.
+    return document.is_object() &&
+           (document.contains("lights") || document.contains("light_sweep"));
 }
 
 flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
@@ -75,7 +77,8 @@ flatland::FlatScene LoadFlatScene(const std::filesystem::path& path) {
     const nlohmann::json document = ParseJsonFile(path);
     if (IsSpatialCase(document))
         throw InputError(path.string() +
-                         ": this is a 3D case (it has \"lights\"); expected a flatland case");
+                         ": this is a 3D case (it has \"lights\" or \"light_sweep\"); expected a "
+                         "flatland case");
     try {
         return FlatSceneFromJson(document, path.stem().string());
     } catch (const InputError& e) {

@@ -18,7 +18,7 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
                                       const std::string& fallbackName);
 flatland::FlatScene LoadFlatScene(const std::filesystem::path& path);
 
-// True when the document is a 3D case (it has "lights"); false for flatland.
+// True when the document is a 3D case (it has "lights" or "light_sweep"); false for flatland.
 bool IsSpatialCase(const nlohmann::json& document);
 
 }  // namespace lexel::cases

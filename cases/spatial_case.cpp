@@ -1,0 +1,277 @@
+// 3D case files (see spatial_case.h and cases/README.md).
+#include "cases/spatial_case.h"
+
+#include <cmath>
+#include <limits>
+
+#include "cases/flatland_case.h"
+#include "cases/json_reader.h"
+#include "solvers/errors.h"
+#include "spatial/generator.h"
+#include "spatial/light_space.h"
+#include "spatial/mesh_loader.h"
+#include "spatial/primitives.h"
+
+namespace lexel::cases {
+namespace {
+
+glm::dvec3 ReadVec3(const JsonField& field) {
+    const Eigen::Vector3d v = field.Vec3();
+    return {v.x(), v.y(), v.z()};
+}
+
+std::string FormatVec(const glm::dvec3& v) {
+    return std::string("[") + FormatNumber(v.x) + ", " + FormatNumber(v.y) + ", " +
+           FormatNumber(v.z) + "]";
+}
+
+spatial::Resolution ReadResolution(const JsonField& field) {
+    field.ExpectObject({"width", "height"});
+    return {static_cast<int>(field["width"].Integer(1, kMaxSide)),
+            static_cast<int>(field["height"].Integer(1, kMaxSide))};
+}
+
+// Checks the pose of a camera whose position, target and up were read from `field`.
+void CheckPose(const spatial::Camera& camera, const JsonField& field) {
+    const glm::dvec3 view = camera.target - camera.position;
+    if (!(glm::length(view) > 0.0))
+        field["target"].Fail("must differ from position " + FormatVec(camera.position));
+    if (!(glm::length(camera.up) > 0.0)) field["up"].Fail("must be a non-zero vector");
+    // |sin| of the angle between up and the view direction; lookAt needs it well away from 0.
+    const double sine = glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up)));
+    if (!(sine > 1e-6)) {
+        const std::string reason =
+            "must not be parallel to the view direction (target - position = " + FormatVec(view) +
+            ")";
+        if (field.Has("up")) field["up"].Fail(reason);
+        // An up the file does not give here (the default, or the camera's in a camera_path pose)
+        // has no pointer of its own: name the pose.
+        field.Fail("up " + FormatVec(camera.up) + " (default or inherited) " + reason);
+    }
+}
+
+// Reads position, target and optional up into `camera`.
+void ReadPose(const JsonField& field, spatial::Camera* camera) {
+    camera->position = ReadVec3(field["position"]);
+    camera->target = ReadVec3(field["target"]);
+    if (field.Has("up")) camera->up = ReadVec3(field["up"]);
+}
+
+// The raw JSON under a field, for the one place the schema allows two types (`scale`).
+const nlohmann::json& Raw(const nlohmann::json& document, const JsonField& field) {
+    return document.at(nlohmann::json::json_pointer(field.Pointer()));
+}
+
+spatial::Transform ReadTransform(const nlohmann::json& document, const JsonField& field) {
+    field.ExpectObject({}, {"translate", "rotate_deg", "scale"});
+    spatial::Transform t;
+    if (field.Has("translate")) t.translate = ReadVec3(field["translate"]);
+    if (field.Has("rotate_deg")) t.rotateDeg = ReadVec3(field["rotate_deg"]);
+    if (field.Has("scale")) {
+        // A number scales uniformly, [x, y, z] per axis. Zero or negative factors would flatten
+        // or mirror the shape (a mirrored plane's floor normal would flip), so they are refused.
+        const JsonField scale = field["scale"];
+        const nlohmann::json& raw = Raw(document, scale);
+        if (raw.is_number()) {
+            t.scale = glm::dvec3(scale.Positive());
+        } else if (raw.is_array()) {
+            const auto items = scale.Array();
+            if (items.size() != 3)
+                scale.Fail("must be a number or an array of 3 numbers, got " +
+                           std::to_string(items.size()) + " elements");
+            for (int k = 0; k < 3; ++k) t.scale[k] = items[k].Positive();
+        } else {
+            scale.Fail("must be a positive number or an array [x, y, z] of positive numbers");
+        }
+    }
+    return t;
+}
+
+// The plane n·x + d = 0 of a transformed `plane` primitive, n unit on its +y side.
+glm::dvec4 TransformedPlane(const glm::dmat4& wsFromOs) {
+    // Normals transform by the inverse transpose of the linear part.
+    const glm::dvec3 wsNormal =
+        glm::normalize(glm::transpose(glm::inverse(glm::dmat3(wsFromOs))) * glm::dvec3(0, 1, 0));
+    const glm::dvec3 wsPoint(wsFromOs[3]);
+    return {wsNormal, -glm::dot(wsNormal, wsPoint)};
+}
+
+void ReadCamera(const JsonField& field, spatial::Camera* camera) {
+    field.ExpectObject({"position", "target", "fov_y_deg", "width", "height"},
+                       {"up", "near", "far"});
+    ReadPose(field, camera);
+    camera->fovYDeg = field["fov_y_deg"].NumberIn(0.0, 180.0, true, true);
+    camera->resolution = {static_cast<int>(field["width"].Integer(1, kMaxSide)),
+                          static_cast<int>(field["height"].Integer(1, kMaxSide))};
+    if (field.Has("near")) camera->nearPlane = field["near"].Positive();
+    if (field.Has("far")) camera->farPlane = field["far"].Positive();
+    if (!(camera->farPlane > camera->nearPlane))
+        field[field.Has("far") ? "far" : "near"].Fail("far (" + FormatNumber(camera->farPlane) +
+                                                      ") must be greater than near (" +
+                                                      FormatNumber(camera->nearPlane) + ")");
+    CheckPose(*camera, field);
+}
+
+spatial::Light ReadLight(const JsonField& field) {
+    const std::string type = field["type"].String();
+    spatial::Light light;
+    if (type == "point") {
+        field.ExpectObject({"type", "position"});
+        light.type = spatial::Light::Type::kPoint;
+        light.position = ReadVec3(field["position"]);
+    } else if (type == "directional") {
+        field.ExpectObject({"type", "direction"});
+        light.type = spatial::Light::Type::kDirectional;
+        const glm::dvec3 direction = ReadVec3(field["direction"]);
+        if (!(glm::length(direction) > 0.0)) field["direction"].Fail("must be a non-zero vector");
+        light.direction = glm::normalize(direction);
+    } else {
+        field["type"].Fail("must be one of point, directional, got '" + type + "'");
+    }
+    return light;
+}
+
+}  // namespace
+
+spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
+                                    const std::filesystem::path& baseDir) {
+    const JsonField root(document, "");
+    root.ExpectObject({"camera"}, {"name", "description", "lights", "shadow_map", "readback",
+                                   "geometry", "generator", "light_sweep", "camera_path"});
+    spatial::Scene scene;
+    scene.name = root.Has("name") ? root["name"].String() : fallbackName;
+    if (root.Has("description")) root["description"].String();
+
+    ReadCamera(root["camera"], &scene.camera);
+
+    if (root.Has("light_sweep")) {
+        const JsonField sweep = root["light_sweep"];
+        sweep.ExpectObject({}, {"count", "seed", "radius"});
+        spatial::LightSweep lightSweep;
+        if (sweep.Has("count"))
+            lightSweep.count = static_cast<int>(sweep["count"].Integer(1, 100000));
+        if (sweep.Has("seed"))
+            lightSweep.seed = static_cast<std::uint64_t>(
+                sweep["seed"].Integer(0, std::numeric_limits<long long>::max()));
+        if (sweep.Has("radius")) lightSweep.radius = sweep["radius"].Positive();
+        scene.lightSweep = lightSweep;
+    }
+    if (root.Has("lights")) {
+        const JsonField lights = root["lights"];
+        const auto items = lights.Array();
+        if (items.empty() && !scene.lightSweep)
+            lights.Fail("must not be empty unless light_sweep is given");
+        for (const JsonField& light : items) scene.lights.push_back(ReadLight(light));
+    } else if (!scene.lightSweep) {
+        throw InputError("/lights: required key is missing (give lights, light_sweep or both)");
+    }
+
+    if (root.Has("shadow_map")) scene.shadowMap = ReadResolution(root["shadow_map"]);
+    if (root.Has("readback")) scene.readback = ReadResolution(root["readback"]);
+
+    if (root.Has("geometry")) {
+        for (const JsonField& entry : root["geometry"].Array()) {
+            entry.ExpectObject({}, {"mesh", "primitive", "transform"});
+            if (entry.Has("mesh") == entry.Has("primitive"))
+                entry.Fail("must have exactly one of mesh, primitive");
+            const spatial::Transform transform = entry.Has("transform")
+                                                     ? ReadTransform(document, entry["transform"])
+                                                     : spatial::Transform{};
+            spatial::TriangleMesh osMesh;
+            if (entry.Has("mesh")) {
+                const JsonField mesh = entry["mesh"];
+                const std::filesystem::path file = mesh.String();
+                if (file.empty()) mesh.Fail("must be a file path, got an empty string");
+                try {
+                    osMesh = spatial::LoadMesh(file.is_absolute() ? file : baseDir / file);
+                } catch (const InputError& e) {
+                    mesh.Fail(e.what());
+                }
+            } else {
+                const JsonField primitive = entry["primitive"];
+                const std::string kind = primitive.String();
+                if (kind == "plane") {
+                    osMesh = spatial::MakePlane();
+                    if (!scene.floorPlane) scene.floorPlane = TransformedPlane(transform.Matrix());
+                } else if (kind == "box") {
+                    osMesh = spatial::MakeBox();
+                } else if (kind == "sphere") {
+                    osMesh = spatial::MakeSphere();
+                } else if (kind == "cylinder") {
+                    osMesh = spatial::MakeCylinder();
+                } else {
+                    primitive.Fail("must be one of plane, box, sphere, cylinder, got '" + kind +
+                                   "'");
+                }
+            }
+            scene.geometry.Append(spatial::TransformMesh(osMesh, transform));
+        }
+    }
+
+    if (root.Has("generator")) {
+        const JsonField generator = root["generator"];
+        generator.ExpectObject({"kind", "count", "seed"});
+        const std::string kind = generator["kind"].String();
+        if (kind != "floor_objects")
+            generator["kind"].Fail("must be floor_objects, got '" + kind + "'");
+        const int count = static_cast<int>(generator["count"].Integer(1, 1000));
+        const auto seed = static_cast<std::uint64_t>(
+            generator["seed"].Integer(0, std::numeric_limits<long long>::max()));
+        glm::dvec4 floor;
+        scene.geometry.Append(spatial::FloorObjects(count, seed, &floor));
+        // A plane primitive, when there is one, is the floor the case author chose.
+        if (!scene.floorPlane) scene.floorPlane = floor;
+    }
+
+    if (root.Has("camera_path")) {
+        for (const JsonField& pose : root["camera_path"].Array(1)) {
+            pose.ExpectObject({"position", "target"}, {"up"});
+            spatial::Camera camera = scene.camera;
+            ReadPose(pose, &camera);
+            CheckPose(camera, pose);
+            scene.cameraPath.push_back(camera);
+        }
+    }
+
+    // Checks that need the whole scene.
+    const spatial::Bounds wsBounds = scene.geometry.ComputeBounds();
+    if (wsBounds.Empty())
+        throw InputError(std::string(root.Has("geometry") ? "/geometry" : "/") +
+                         ": the scene has no geometry (give geometry entries or a generator)");
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+        const spatial::Light& light = scene.lights[k];
+        const std::string pointer = "/lights/" + std::to_string(k);
+        if (light.type == spatial::Light::Type::kPoint && wsBounds.Contains(light.position))
+            throw InputError(pointer + "/position: point light " + FormatVec(light.position) +
+                             " is inside the geometry's bounds " + FormatVec(wsBounds.lo) + " .. " +
+                             FormatVec(wsBounds.hi) + "; no light matrix can see all of it");
+        // Whatever else would stop the light space from being built (a light at the centre of
+        // flat geometry) is a case error too, not a failure later in a run.
+        try {
+            spatial::LightSpace(light, wsBounds);
+        } catch (const InputError& e) {
+            throw InputError(pointer + ": " + e.what());
+        }
+    }
+    if (scene.lightSweep && !(scene.lightSweep->radius > wsBounds.Radius()))
+        throw InputError(
+            "/light_sweep/radius: must be larger than the geometry's bounding radius " +
+            FormatNumber(wsBounds.Radius()) + " (the sweep is centred on the bounds), got " +
+            FormatNumber(scene.lightSweep->radius));
+    return scene;
+}
+
+spatial::Scene LoadSpatialScene(const std::filesystem::path& path) {
+    const nlohmann::json document = ParseJsonFile(path);
+    if (!IsSpatialCase(document))
+        throw InputError(path.string() +
+                         ": this is a flatland case (it has no \"lights\" or \"light_sweep\"); "
+                         "expected a 3D case");
+    try {
+        return SpatialSceneFromJson(document, path.stem().string(), path.parent_path());
+    } catch (const InputError& e) {
+        throw InputError(path.string() + ": " + e.what());
+    }
+}
+
+}  // namespace lexel::cases

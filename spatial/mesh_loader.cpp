@@ -1,0 +1,72 @@
+// Model files through Assimp (see mesh_loader.h). Assimp logs only through DefaultLogger, which we
+// never create, so its NullLogger keeps stdout and stderr clean.
+#include "spatial/mesh_loader.h"
+
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <system_error>
+
+#include "solvers/errors.h"
+
+namespace lexel::spatial {
+namespace {
+
+// Assimp's messages can span lines; InputError messages are one line.
+std::string OneLine(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    return text.empty() ? std::string("unknown error") : text;
+}
+
+}  // namespace
+
+TriangleMesh LoadMesh(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw InputError(name + ": mesh file not found");
+
+    Assimp::Importer importer;
+    // Points and lines are removed by aiProcess_SortByPType rather than kept as degenerate meshes.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* scene =
+        importer.ReadFile(name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                    aiProcess_PreTransformVertices | aiProcess_SortByPType);
+    if (scene == nullptr)
+        throw InputError(name + ": cannot read mesh: " + OneLine(importer.GetErrorString()));
+
+    TriangleMesh mesh;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh* in = scene->mMeshes[m];
+        if (!(in->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+        const auto offset = static_cast<unsigned long long>(mesh.positions.size());
+        if (offset + in->mNumVertices > std::numeric_limits<unsigned>::max())
+            throw InputError(name + ": too many vertices");
+        for (unsigned v = 0; v < in->mNumVertices; ++v) {
+            const aiVector3D& p = in->mVertices[v];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                throw InputError(name + ": vertex " + std::to_string(v) + " of mesh " +
+                                 std::to_string(m) + " has a non-finite coordinate");
+            mesh.positions.push_back({p.x, p.y, p.z});
+        }
+        for (unsigned f = 0; f < in->mNumFaces; ++f) {
+            const aiFace& face = in->mFaces[f];
+            if (face.mNumIndices != 3) continue;  // stray points or lines in a mixed mesh
+            mesh.triangles.push_back(
+                glm::uvec3(face.mIndices[0], face.mIndices[1], face.mIndices[2]) +
+                glm::uvec3(static_cast<unsigned>(offset)));
+        }
+    }
+    if (mesh.triangles.empty()) throw InputError(name + ": the file holds no triangles");
+    return mesh;
+}
+
+}  // namespace lexel::spatial

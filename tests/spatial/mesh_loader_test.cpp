@@ -1,0 +1,177 @@
+// Mesh loading through Assimp, on the models of Debian's assimp-testmodels package.
+#include "spatial/mesh_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "solvers/errors.h"
+
+namespace lexel::spatial {
+namespace {
+
+const std::filesystem::path kModels = "/usr/share/assimp/models";
+
+// The package is a test dependency: its absence is a failure, not a skip.
+bool ModelsInstalled() {
+    if (std::filesystem::is_directory(kModels)) return true;
+    ADD_FAILURE() << kModels << " is missing: install the Debian package assimp-testmodels "
+                  << "(apt-get install assimp-testmodels)";
+    return false;
+}
+
+std::string LoadError(const std::filesystem::path& path) {
+    try {
+        LoadMesh(path);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+void ExpectSane(const TriangleMesh& mesh) {
+    for (const glm::vec3& p : mesh.positions)
+        ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    for (const glm::uvec3& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) ASSERT_LT(t[k], mesh.positions.size());
+}
+
+TEST(MeshLoader, BoxObjHasExactBounds) {
+    if (!ModelsInstalled()) return;
+    testing::internal::CaptureStdout();
+    testing::internal::CaptureStderr();
+    const TriangleMesh box = LoadMesh(kModels / "OBJ/box.obj");
+    // Assimp must stay silent: lexel's stdout carries reports.
+    EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    ExpectSane(box);
+    // Six quads, triangulated; identical vertices joined per mesh.
+    EXPECT_EQ(box.triangles.size(), 12u);
+    const Bounds b = box.ComputeBounds();
+    EXPECT_EQ(b.lo, glm::dvec3(-0.5));
+    EXPECT_EQ(b.hi, glm::dvec3(0.5));
+}
+
+TEST(MeshLoader, LoadsRealModels) {
+    if (!ModelsInstalled()) return;
+    struct Expectation {
+        const char* file;
+        std::size_t minTriangles, maxTriangles;
+        double minExtent, maxExtent;  // largest side of the bounds
+    };
+    // Assimp 5.2 (Debian 12) reads 1368 and 3732 triangles; the ranges leave room for other
+    // versions' triangulation. The spider's OBJ is about 200 units across, its STL export 8.
+    const Expectation models[] = {
+        {"OBJ/spider.obj", 1300, 1400, 150.0, 250.0},
+        {"STL/Spider_binary.stl", 1300, 1400, 7.0, 9.0},
+        {"PLY/Wuson.ply", 3700, 3800, 3.0, 3.5},
+        {"OBJ/box.obj", 12, 12, 1.0, 1.0},
+    };
+    for (const Expectation& e : models) {
+        SCOPED_TRACE(e.file);
+        testing::internal::CaptureStdout();
+        testing::internal::CaptureStderr();
+        const TriangleMesh mesh = LoadMesh(kModels / e.file);
+        EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+        EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+        ExpectSane(mesh);
+        EXPECT_GE(mesh.triangles.size(), e.minTriangles);
+        EXPECT_LE(mesh.triangles.size(), e.maxTriangles);
+        const Bounds b = mesh.ComputeBounds();
+        ASSERT_FALSE(b.Empty());
+        const glm::dvec3 size = b.hi - b.lo;
+        const double extent = std::max({size.x, size.y, size.z});
+        EXPECT_GE(extent, e.minExtent);
+        EXPECT_LE(extent, e.maxExtent);
+    }
+}
+
+TEST(MeshLoader, WusonIsTheSameInPlyObjAndStl) {
+    if (!ModelsInstalled()) return;
+    // Three exports of one model: the same triangles within the formats' float precision.
+    const TriangleMesh ply = LoadMesh(kModels / "PLY/Wuson.ply");
+    const Bounds plyBounds = ply.ComputeBounds();
+    for (const char* other : {"OBJ/WusonOBJ.obj", "STL/Wuson.stl"}) {
+        SCOPED_TRACE(other);
+        const TriangleMesh mesh = LoadMesh(kModels / other);
+        EXPECT_EQ(mesh.triangles.size(), ply.triangles.size());
+        const Bounds b = mesh.ComputeBounds();
+        EXPECT_NEAR(glm::distance(b.lo, plyBounds.lo), 0.0, 1e-4);
+        EXPECT_NEAR(glm::distance(b.hi, plyBounds.hi), 0.0, 1e-4);
+    }
+    // Wuson stands on y = 0 (its lowest point is 0.000566 below).
+    EXPECT_NEAR(plyBounds.lo.y, 0.0, 1e-3);
+    EXPECT_NEAR(plyBounds.hi.y, 1.51525, 1e-4);
+}
+
+TEST(MeshLoader, RejectsInvalidFilesNamingThem) {
+    if (!ModelsInstalled()) return;
+    std::vector<std::filesystem::path> invalid;
+    for (const auto& entry : std::filesystem::directory_iterator(kModels / "invalid"))
+        if (entry.path().extension() == ".obj" && entry.path().filename() != "malformed2.obj")
+            invalid.push_back(entry.path());
+    invalid.push_back(kModels / "invalid/empty.ply");
+    // Only points or only lines: nothing to cast a shadow.
+    invalid.push_back(kModels / "OBJ/testpoints.obj");
+    invalid.push_back(kModels / "OBJ/testline.obj");
+    ASSERT_GE(invalid.size(), 4u);
+    for (const auto& path : invalid) {
+        SCOPED_TRACE(path.string());
+        testing::internal::CaptureStdout();
+        testing::internal::CaptureStderr();
+        const std::string message = LoadError(path);
+        EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+        EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+        EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+}
+
+TEST(MeshLoader, ToleratesTheMissingMaterialOfMalformed2) {
+    if (!ModelsInstalled()) return;
+    // invalid/malformed2.obj is the unit box with a missing material and one empty `f` line
+    // (Assimp's regression test for the material). Materials do not matter to shadows, and its
+    // five well-formed quads are real geometry, so it loads as 10 triangles, like Assimp does.
+    const TriangleMesh mesh = LoadMesh(kModels / "invalid/malformed2.obj");
+    EXPECT_EQ(mesh.triangles.size(), 10u);
+    EXPECT_EQ(mesh.ComputeBounds().hi, glm::dvec3(0.5));
+}
+
+TEST(MeshLoader, MissingFileAndGarbage) {
+    EXPECT_EQ(LoadError("/nonexistent-dir/model.obj"),
+              "/nonexistent-dir/model.obj: mesh file not found");
+    EXPECT_EQ(LoadError(std::filesystem::temp_directory_path()),
+              std::filesystem::temp_directory_path().string() + ": mesh file not found");
+    const auto garbage = std::filesystem::temp_directory_path() / "lexel_mesh_loader_garbage.xyzq";
+    std::ofstream(garbage) << "this is not a model\nat all\n";
+    const std::string message = LoadError(garbage);
+    EXPECT_EQ(message.rfind(garbage.string() + ": cannot read mesh: ", 0), 0u) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    std::filesystem::remove(garbage);
+}
+
+TEST(MeshLoader, RejectsNonFiniteCoordinates) {
+    const auto dir = std::filesystem::temp_directory_path();
+    // An overflowing OBJ literal becomes +inf; ASCII STL reads "nan" as NaN.
+    const std::pair<const char*, const char*> files[] = {
+        {"lexel_mesh_loader_inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1e999 1\nf 1 2 3\n"},
+        {"lexel_mesh_loader_nan.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+         "vertex 0 nan 0\nendloop\nendfacet\nendsolid x\n"},
+    };
+    for (const auto& [name, text] : files) {
+        const auto path = dir / name;
+        std::ofstream(path) << text;
+        EXPECT_EQ(LoadError(path),
+                  path.string() + ": vertex 2 of mesh 0 has a non-finite coordinate");
+        std::filesystem::remove(path);
+    }
+}
+
+}  // namespace
+}  // namespace lexel::spatial
