@@ -74,20 +74,35 @@ struct BaselineDiagnostics {
 LightMatrix NormalLightMatrix(const BaselineContext& context,
                               BaselineDiagnostics* diagnostics = nullptr);
 
-// Focused: normal's p4; rectangle about (projected view frustum) ∩ (projected bounds).
+// Focused: normal's p4; rectangle about (projected view frustum) ∩ (projected bounds), the
+// frustum first cut to p4·X ≥ δ (δ = half the nearest bounds corner or relevant point) because a
+// point light may sit inside it. Fallbacks: an empty or flat intersection → normal's matrix; a
+// relevant point outside the rectangle (only through rounding, or relevant points outside the
+// bounds) → refit over the intersection and the relevant points.
 LightMatrix FocusedLightMatrix(const BaselineContext& context,
                                BaselineDiagnostics* diagnostics = nullptr);
 
 // LiSPSM (directional lights directly, point lights through the light's perspective first).
+// Fallback to focused (reason in diagnostics): |sin γ| < 1e-3 (view along the light, where LiSPSM
+// itself reverts to the unwarped map), a body point or the eye behind a point light's plane,
+// FromScreenRows rejecting the rows, or the warp's p4 leaving a relevant point behind or outside.
 LightMatrix LispsmLightMatrix(const BaselineContext& context,
                               BaselineDiagnostics* diagnostics = nullptr);
 
-// PSM in the camera's post-perspective space.
+// PSM in the camera's post-perspective space (slid-back virtual camera, Kozlov's inverted
+// projection for a light behind the viewer, an orthographic NDC map for a light on the camera
+// plane). Fallback to focused (reason in diagnostics): no light frustum in NDC holds the whole
+// body (the light's NDC point surrounded by it), FromScreenRows rejecting the rows, or the warp's
+// p4 leaving a relevant point behind or outside.
 LightMatrix PsmLightMatrix(const BaselineContext& context,
                            BaselineDiagnostics* diagnostics = nullptr);
 
 // Plane-optimal for scene->floorPlane (InputError when the scene has none), refitted over
-// wsRelevant.
+// wsRelevant. When a relevant point is behind the plane-optimal p4 (off the plane, its shadow on
+// the plane behind the camera), p4 is turned toward the focused p4 along the great circle by the
+// smallest fraction that sees every relevant point (bisection, 40 steps; diagnostics'
+// rotationFraction). Fallback to focused: the light on the floor plane, no relevant points, or no
+// such fraction.
 LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
                                     BaselineDiagnostics* diagnostics = nullptr);
 
