@@ -1,0 +1,293 @@
+// Geometry shared by the baselines; see baseline_support.h for the references.
+#include "spatial/baseline_support.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solvers/convex_hull.h"
+#include "solvers/errors.h"
+
+namespace lexel::spatial::baseline_detail {
+
+std::vector<glm::dvec3> ConvexPolyhedron::Vertices() const {
+    std::vector<glm::dvec3> out;
+    for (const auto& face : faces) out.insert(out.end(), face.begin(), face.end());
+    return out;
+}
+
+ConvexPolyhedron FrustumPolyhedron(const std::array<glm::dvec3, 8>& c) {
+    ConvexPolyhedron p;
+    p.faces = {{c[0], c[1], c[2], c[3]}, {c[4], c[5], c[6], c[7]}, {c[0], c[1], c[5], c[4]},
+               {c[1], c[2], c[6], c[5]}, {c[2], c[3], c[7], c[6]}, {c[3], c[0], c[4], c[7]}};
+    return p;
+}
+
+ConvexPolyhedron ClipPolyhedron(const ConvexPolyhedron& polyhedron, const glm::dvec4& plane) {
+    const glm::dvec3 n(plane);
+    auto distance = [&](const glm::dvec3& x) { return glm::dot(n, x) + plane.w; };
+    ConvexPolyhedron out;
+    std::vector<glm::dvec3> cap;  // the new face on the plane: crossings and vertices on it
+    for (const auto& face : polyhedron.faces) {
+        std::vector<glm::dvec3> kept;
+        const std::size_t count = face.size();
+        for (std::size_t i = 0; i < count; ++i) {
+            const glm::dvec3& a = face[i];
+            const glm::dvec3& b = face[(i + 1) % count];
+            const double da = distance(a), db = distance(b);
+            if (da >= 0.0) kept.push_back(a);
+            if (da == 0.0) cap.push_back(a);
+            if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) {
+                const glm::dvec3 x = a + (da / (da - db)) * (b - a);
+                kept.push_back(x);
+                cap.push_back(x);
+            }
+        }
+        if (kept.size() >= 3) out.faces.push_back(std::move(kept));
+    }
+    if (out.faces.empty()) return out;
+    if (cap.size() >= 3) {
+        // Order the cap around its centroid: it is convex (a plane section of a convex body).
+        glm::dvec3 centroid(0.0);
+        for (const glm::dvec3& x : cap) centroid += x;
+        centroid /= static_cast<double>(cap.size());
+        glm::dvec3 b1, b2;
+        const double len = glm::length(n);
+        if (len > 0.0) {
+            PlaneBasis(n / len, &b1, &b2);
+            std::sort(cap.begin(), cap.end(), [&](const glm::dvec3& p, const glm::dvec3& q) {
+                const glm::dvec3 dp = p - centroid, dq = q - centroid;
+                return std::atan2(glm::dot(b2, dp), glm::dot(b1, dp)) <
+                       std::atan2(glm::dot(b2, dq), glm::dot(b1, dq));
+            });
+            out.faces.push_back(std::move(cap));
+        }
+    }
+    return out;
+}
+
+ConvexPolyhedron ClipToBounds(const ConvexPolyhedron& polyhedron, const Bounds& bounds) {
+    ConvexPolyhedron p = polyhedron;
+    for (int axis = 0; axis < 3 && !p.faces.empty(); ++axis) {
+        glm::dvec4 lower(0.0), upper(0.0);
+        lower[axis] = 1.0;  // x_axis - lo ≥ 0
+        lower.w = -bounds.lo[axis];
+        upper[axis] = -1.0;  // hi - x_axis ≥ 0
+        upper.w = bounds.hi[axis];
+        p = ClipPolyhedron(p, lower);
+        if (!p.faces.empty()) p = ClipPolyhedron(p, upper);
+    }
+    return p;
+}
+
+std::vector<glm::dvec2> ConvexHull2(std::span<const glm::dvec2> points) {
+    std::vector<Eigen::Vector2d> pts(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) pts[i] = {points[i].x, points[i].y};
+    const std::vector<Eigen::Vector2d> hull = ConvexHull(pts);
+    std::vector<glm::dvec2> out(hull.size());
+    for (std::size_t i = 0; i < hull.size(); ++i) out[i] = {hull[i].x(), hull[i].y()};
+    return out;
+}
+
+std::vector<glm::dvec2> IntersectConvexPolygons(std::span<const glm::dvec2> subject,
+                                                std::span<const glm::dvec2> clip) {
+    std::vector<glm::dvec2> current(subject.begin(), subject.end());
+    if (clip.size() < 3) return {};
+    for (std::size_t e = 0; e < clip.size() && !current.empty(); ++e) {
+        const glm::dvec2 a = clip[e], b = clip[(e + 1) % clip.size()];
+        const glm::dvec2 edge = b - a;
+        // Signed area × 2: ≥ 0 on the left of a→b (inside a counter-clockwise polygon).
+        auto side = [&](const glm::dvec2& p) {
+            return edge.x * (p.y - a.y) - edge.y * (p.x - a.x);
+        };
+        std::vector<glm::dvec2> next;
+        const std::size_t count = current.size();
+        for (std::size_t i = 0; i < count; ++i) {
+            const glm::dvec2 p = current[i], q = current[(i + 1) % count];
+            const double sp = side(p), sq = side(q);
+            if (sp >= 0.0) next.push_back(p);
+            if ((sp > 0.0 && sq < 0.0) || (sp < 0.0 && sq > 0.0))
+                next.push_back(p + (sp / (sp - sq)) * (q - p));
+        }
+        current = std::move(next);
+    }
+    return current;
+}
+
+glm::dvec4 WorldPlaneOfLightPlane(const LightSpace& lightSpace, const glm::dvec3& p4,
+                                  double delta) {
+    // X(x) = L x + X(0) with L = LightFromWorldLinear, so p4·X(x) = (Lᵀp4)·x + p4·X(0).
+    const glm::dmat3 linear = lightSpace.LightFromWorldLinear();
+    const glm::dvec3 n = glm::transpose(linear) * p4;
+    return {n, glm::dot(p4, lightSpace.ToLight(glm::dvec3(0.0))) - delta};
+}
+
+std::vector<glm::dvec3> ToLightAll(const LightSpace& lightSpace,
+                                   std::span<const glm::dvec3> wsPoints) {
+    std::vector<glm::dvec3> out;
+    out.reserve(wsPoints.size());
+    for (const glm::dvec3& x : wsPoints) out.push_back(lightSpace.ToLight(x));
+    return out;
+}
+
+glm::dvec2 ProjectToPlane(const glm::dvec3& p4, const glm::dvec3& lsX) {
+    glm::dvec3 b1, b2;
+    PlaneBasis(p4, &b1, &b2);
+    const double w = glm::dot(p4, lsX);
+    return {glm::dot(b1, lsX) / w, glm::dot(b2, lsX) / w};
+}
+
+bool CoversAll(const LightMatrix& m, std::span<const glm::dvec3> lsPoints, Resolution map) {
+    for (const glm::dvec3& p : {m.p1, m.p2, m.p4})
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
+    const double tol = kMapToleranceTexels;
+    for (const glm::dvec3& X : lsPoints) {
+        if (!InFront(m.p4, X)) return false;
+        const glm::dvec2 u = m.Map(X);
+        if (!(u.x >= -tol && u.x <= map.width + tol && u.y >= -tol && u.y <= map.height + tol))
+            return false;
+    }
+    return true;
+}
+
+glm::dmat4 FromRows(const glm::dvec4& r0, const glm::dvec4& r1, const glm::dvec4& r2,
+                    const glm::dvec4& r3) {
+    glm::dmat4 m;
+    for (int c = 0; c < 4; ++c) {
+        m[c][0] = r0[c];
+        m[c][1] = r1[c];
+        m[c][2] = r2[c];
+        m[c][3] = r3[c];
+    }
+    return m;
+}
+
+// The axis a of the narrowest cone around unit directions d_i: max over unit a of min_i a·d_i.
+// By duality it is the minimum-norm point x of the convex hull of the d_i, normalized, with
+// margin |x| (positive iff the directions fit in an open half-space). Gilbert's algorithm
+// (E. G. Gilbert, "An iterative procedure for computing the minimum of a quadratic form on a
+// convex set", SIAM J. Control 4(1), 1966): step toward the d_i least aligned with x, with exact
+// line search. Stops when the duality gap |x|² - min_i x·d_i is below 1e-4 |x|² (the margin
+// within 0.01% of optimal) or after 2000 steps; nullopt when the margin is not positive.
+std::optional<glm::dvec3> NarrowestConeAxis(const std::vector<glm::dvec3>& directions) {
+    if (directions.empty()) return std::nullopt;
+    glm::dvec3 x(0.0);
+    for (const glm::dvec3& d : directions) x += d;
+    x /= static_cast<double>(directions.size());
+    for (int step = 0; step < 2000; ++step) {
+        std::size_t worst = 0;
+        double worstDot = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < directions.size(); ++i) {
+            const double dot = glm::dot(x, directions[i]);
+            if (dot < worstDot) {
+                worstDot = dot;
+                worst = i;
+            }
+        }
+        const double xx = glm::dot(x, x);
+        if (xx - worstDot <= 1e-4 * xx) break;
+        const glm::dvec3 toward = directions[worst] - x;
+        const double t = std::clamp((xx - worstDot) / glm::dot(toward, toward), 0.0, 1.0);
+        x += t * toward;
+    }
+    const double len = glm::length(x);
+    if (!(len > 0.0)) return std::nullopt;
+    const glm::dvec3 a = x / len;
+    for (const glm::dvec3& d : directions)
+        if (!(glm::dot(a, d) > 0.0)) return std::nullopt;
+    return a;
+}
+
+namespace {
+
+bool AllInFront(const glm::dvec3& p4, std::span<const glm::dvec3> lsPoints) {
+    for (const glm::dvec3& X : lsPoints)
+        if (!InFront(p4, X)) return false;
+    return true;
+}
+
+// Normalized mean of the unit directions of the points (zero if they cancel out).
+glm::dvec3 MeanDirection(std::span<const glm::dvec3> lsPoints) {
+    glm::dvec3 sum(0.0);
+    for (const glm::dvec3& X : lsPoints) {
+        const double len = glm::length(X);
+        if (len > 0.0) sum += X / len;
+    }
+    const double len = glm::length(sum);
+    return len > 0.0 ? sum / len : glm::dvec3(0.0);
+}
+
+std::vector<glm::dvec3> UnitDirections(std::span<const glm::dvec3> lsPoints) {
+    std::vector<glm::dvec3> out;
+    for (const glm::dvec3& X : lsPoints)
+        if (glm::length(X) > 0.0) out.push_back(X / glm::length(X));
+    return out;
+}
+
+}  // namespace
+
+NormalAxis ChooseNormalAxis(const BaselineContext& context) {
+    const LightSpace& ls = *context.lightSpace;
+    const auto wsCorners = context.wsBounds.Corners();
+    const std::vector<glm::dvec3> lsCorners = ToLightAll(ls, wsCorners);
+    NormalAxis axis;
+    if (AllInFront(axis.p4, lsCorners)) return axis;
+    axis.p4 = MeanDirection(lsCorners);
+    axis.fallback = "normal: a bounds corner is behind p4 = (0, 0, 1); p4 = mean corner direction";
+    if (glm::length(axis.p4) > 0.0 && AllInFront(axis.p4, lsCorners)) return axis;
+    // The mean is pulled toward clusters of corners; the narrowest cone's axis sees them all
+    // whenever any axis does (the light outside the box but near the plane of a face).
+    if (const auto cone = NarrowestConeAxis(UnitDirections(lsCorners));
+        cone && AllInFront(*cone, lsCorners)) {
+        axis.p4 = *cone;
+        axis.fallback =
+            "normal: p4 = (0, 0, 1) and the mean corner direction miss a bounds "
+            "corner; p4 = axis of the narrowest cone around the corners";
+        return axis;
+    }
+    // Last resort (a light in the plane of a box face): only the relevant points must be seen.
+    const std::vector<glm::dvec3> lsRelevant = ToLightAll(ls, context.wsRelevant);
+    axis.cornersInFront = false;
+    axis.fallback =
+        "normal: no axis sees every bounds corner; p4 = axis of the narrowest cone "
+        "around the relevant points, fitted over them only";
+    if (const auto cone = NarrowestConeAxis(UnitDirections(lsRelevant));
+        cone && AllInFront(*cone, lsRelevant)) {
+        axis.p4 = *cone;
+        return axis;
+    }
+    throw InputError("baselines: no optical axis sees every relevant point from this light");
+}
+
+double LightPlaneOffset(const BaselineContext& context, const NormalAxis& axis) {
+    const LightSpace& ls = *context.lightSpace;
+    double smallest = std::numeric_limits<double>::infinity();
+    auto consider = [&](const glm::dvec3& wsPoint) {
+        const glm::dvec3 X = ls.ToLight(wsPoint);
+        if (InFront(axis.p4, X)) smallest = std::min(smallest, glm::dot(axis.p4, X));
+    };
+    for (const glm::dvec3& x : context.wsBounds.Corners()) consider(x);
+    for (const glm::dvec3& x : context.wsRelevant) consider(x);
+    // Half the nearest depth: strictly positive, and below every point the map must see.
+    return std::isfinite(smallest) ? 0.5 * smallest : 1e-9;
+}
+
+std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAxis& axis) {
+    const Camera& camera = context.scene->camera;
+    ConvexPolyhedron body = FrustumPolyhedron(camera.FrustumCorners());
+    body = ClipPolyhedron(body, WorldPlaneOfLightPlane(*context.lightSpace, axis.p4,
+                                                       LightPlaneOffset(context, axis)));
+    if (!body.faces.empty()) body = ClipToBounds(body, context.wsBounds);
+    std::vector<glm::dvec3> out = body.Vertices();
+    out.insert(out.end(), context.wsRelevant.begin(), context.wsRelevant.end());
+    return out;
+}
+
+void CheckContext(const BaselineContext& context) {
+    if (context.scene == nullptr || context.lightSpace == nullptr)
+        throw InputError("baselines: the context needs a scene and a light space");
+    if (context.wsBounds.Empty()) throw InputError("baselines: the scene bounds are empty");
+}
+
+}  // namespace lexel::spatial::baseline_detail

@@ -1,0 +1,85 @@
+// Geometry shared by the shadow-map baselines (spatial/baselines.h): convex polyhedra clipped by
+// planes (the view frustum ∩ scene bounds "body" of Wimmer et al., LiSPSM, EGSR 2004, and the
+// frustum-limiting step of Chong & Gortler report §3), Sutherland–Hodgman intersection of convex
+// polygons (I. E. Sutherland, G. W. Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974),
+// and the validity test every baseline must pass (report §2.1: relevant points strictly in front
+// of p4 and inside [0, W] × [0, H]).
+#pragma once
+
+#include <array>
+#include <glm/glm.hpp>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "spatial/baselines.h"
+#include "spatial/light_matrix.h"
+#include "spatial/light_space.h"
+
+namespace lexel::spatial::baseline_detail {
+
+// How far outside [0, W] × [0, H] a relevant point may map, in texels: the rectangle fit is exact
+// up to rounding, which is ~1e-12 texel at these resolutions.
+inline constexpr double kMapToleranceTexels = 1e-6;
+
+// A convex polyhedron as its faces, each a planar convex polygon (orientation irrelevant).
+struct ConvexPolyhedron {
+    std::vector<std::vector<glm::dvec3>> faces;
+    std::vector<glm::dvec3> Vertices() const;  // with repeats (each vertex once per face)
+};
+
+// The frustum of FrustumCorners' layout (near face 0-3, far face 4-7, same winding).
+ConvexPolyhedron FrustumPolyhedron(const std::array<glm::dvec3, 8>& wsCorners);
+// The part with plane.xyz · x + plane.w ≥ 0; empty (no faces) when nothing is left.
+ConvexPolyhedron ClipPolyhedron(const ConvexPolyhedron& polyhedron, const glm::dvec4& plane);
+ConvexPolyhedron ClipToBounds(const ConvexPolyhedron& polyhedron, const Bounds& bounds);
+
+// Counter-clockwise convex hull (solvers/convex_hull, exact orientation) of 2D points.
+std::vector<glm::dvec2> ConvexHull2(std::span<const glm::dvec2> points);
+// subject ∩ clip for two counter-clockwise convex polygons (Sutherland–Hodgman: clip the subject
+// by each edge's left half-plane in turn). Empty when they do not overlap; a clip polygon with
+// fewer than 3 vertices gives an empty result.
+std::vector<glm::dvec2> IntersectConvexPolygons(std::span<const glm::dvec2> subject,
+                                                std::span<const glm::dvec2> clip);
+
+// The world half-space p4 · X(x) ≥ delta as a plane (n, d) with n·x + d ≥ 0 (X is affine in x).
+glm::dvec4 WorldPlaneOfLightPlane(const LightSpace& lightSpace, const glm::dvec3& p4, double delta);
+
+std::vector<glm::dvec3> ToLightAll(const LightSpace& lightSpace,
+                                   std::span<const glm::dvec3> wsPoints);
+
+// Central projection of X onto the plane p4·X = 1, in PlaneBasis(p4) coordinates (the same
+// coordinates FitMapToPlanePoints expects). X must be in front.
+glm::dvec2 ProjectToPlane(const glm::dvec3& p4, const glm::dvec3& lsX);
+
+// Whether every point is InFront of m.p4 and maps into [0, W] × [0, H] within kMapToleranceTexels,
+// and m is finite.
+bool CoversAll(const LightMatrix& m, std::span<const glm::dvec3> lsPoints, Resolution map);
+
+// A glm matrix from four rows (glm is column-major: m[c][r]).
+glm::dmat4 FromRows(const glm::dvec4& r0, const glm::dvec4& r1, const glm::dvec4& r2,
+                    const glm::dvec4& r3);
+
+// The axis a of the narrowest cone around unit directions (max over unit a of min_i a·d_i), or
+// nullopt when no open half-space holds them all (or there are none). See the .cpp for the method.
+std::optional<glm::dvec3> NarrowestConeAxis(const std::vector<glm::dvec3>& directions);
+
+// The normal baseline's optical axis and whether it had to fall back (see NormalLightMatrix).
+struct NormalAxis {
+    glm::dvec3 p4{0.0, 0.0, 1.0};
+    bool cornersInFront = true;  // every bounds corner is InFront of p4
+    std::string fallback;
+};
+NormalAxis ChooseNormalAxis(const BaselineContext& context);
+
+// The "body" of LiSPSM / PSM: world vertices of view frustum ∩ scene bounds ∩ {p4·X ≥ δ} with
+// the normal axis p4 and δ half the smallest p4·X of the in-front bounds corners and relevant
+// points (so no point the map must see is cut), followed by the relevant points themselves.
+std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAxis& axis);
+// δ above: the light-space depth along p4 below which nothing relevant lies (> 0).
+double LightPlaneOffset(const BaselineContext& context, const NormalAxis& axis);
+
+// Throws InputError unless the context has a scene, a light space and a non-empty bounds.
+void CheckContext(const BaselineContext& context);
+
+}  // namespace lexel::spatial::baseline_detail

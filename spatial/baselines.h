@@ -1,0 +1,131 @@
+// The shadow-map baselines of Chong & Gortler, "Scene Optimized Shadow Mapping" (report §3): the
+// light matrices they compared their optimizer against, each returned as a LightMatrix (report
+// §2.1: rows p1, p2, p4 in light space).
+//
+//   normal         the light's frustum around the scene bounds (p4 = axis to the bounds centre),
+//                  affine part = min-area rectangle of the projected bounds corners (report §2.3,
+//                  step 4b-ii).
+//   focused        report §3's "frustum limiting step": the projected view frustum intersected with
+//                  the normal extent on the light's near plane, min-area rectangle about the
+//                  intersection (S. Brabec, T. Annen, H.-P. Seidel, "Practical Shadow Mapping",
+//                  JGT 7(4), 2002: a tight light frustum, minimum enclosing rectangle, Fig. 3).
+//   lispsm         M. Wimmer, D. Scherzer, W. Purgathofer, "Light Space Perspective Shadow Maps",
+//                  EGSR 2004: a perspective warp along the view direction projected perpendicular
+//                  to the light, n_opt = (z_n + √(z_f z_n)) / sin γ (their general-γ optimum; the
+//                  paper is not in /work/shared/papers, the γ = 90° case is B. Lloyd et al.,
+//                  "Warping and Partitioning for Low Error Shadow Maps", EGSR 2006, §4.1 and
+//                  Fig. 3: n' = n + √(fn) for an overhead light).
+//   psm            M. Stamminger, G. Drettakis, "Perspective Shadow Maps", SIGGRAPH 2002: the
+//                  shadow map taken in the camera's post-perspective space; with S. Kozlov,
+//                  "Perspective Shadow Maps: Care and Feeding", GPU Gems ch. 14, 2004 (the light
+//                  behind the viewer as an inverted projection, the virtual camera slide back).
+//                  Neither text is in /work/shared/papers; Lloyd 2006 §4.1 (n' = n for PSM) and
+//                  Chong's 2003 thesis (003: "pulling the view plane back") summarize them.
+//   plane-optimal  H. Chong, S. Gortler, "A Lixel for Every Pixel", EGSR 2004: the floor plane
+//                  sampled exactly one lexel per pixel (the light map restricted to the plane is an
+//                  affine image of the camera's screen restricted to it).
+//
+// Every function returns a matrix under which every point of wsRelevant is strictly in front
+// (InFront) and maps into [0, W] × [0, H] of scene->shadowMap (up to rounding, far below 1e-6
+// texel). Where a method's own construction cannot guarantee that, it falls back as documented at
+// the function and reports why in BaselineDiagnostics::fallback.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <span>
+#include <string>
+
+#include "spatial/light_matrix.h"
+#include "spatial/light_space.h"
+#include "spatial/scene.h"
+
+namespace lexel::spatial {
+
+struct BaselineContext {
+    const Scene* scene = nullptr;  // camera, floorPlane, shadowMap resolution
+    const LightSpace* lightSpace = nullptr;
+    Bounds wsBounds;                         // bounds of the scene geometry
+    std::span<const glm::dvec3> wsRelevant;  // visible receiver samples (world)
+};
+
+// What a baseline did, for tests and reports. Fields a method does not use stay at their default.
+struct BaselineDiagnostics {
+    // Empty when the method's own construction was used; otherwise which fallback and why.
+    std::string fallback;
+    // lispsm, in the light-directional space (world units for a directional light): sin γ, the
+    // body's near and far distance along the view direction, and n_opt.
+    double sinGamma = 0.0, zNear = 0.0, zFar = 0.0, nOpt = 0.0;
+    // psm: the homogeneous light in the virtual camera's clip space, and the slide-back distance
+    // (world units) of the virtual camera.
+    glm::dvec4 clipLight{0.0};
+    double slideBack = 0.0;
+    // plane-optimal: the great-circle fraction by which p4 was turned toward the focused p4 (0 when
+    // the plane-optimal p4 sees every relevant point).
+    double rotationFraction = 0.0;
+};
+
+// Normal shadow map: p4 = (0, 0, 1), fitted over the eight bounds corners. Fallbacks (a point light
+// so close to a long box that a corner is not in front of p4 = (0, 0, 1)): p4 = the normalized mean
+// of the unit corner directions; else the axis of the narrowest cone around the corner
+// directions (it exists whenever any axis sees every corner); else (a light in the plane of a
+// box face) the narrowest cone around the relevant points, fitted over them only. Throws
+// InputError when no axis sees every relevant point (they surround the light: no single light
+// matrix sees them). Focused, LiSPSM and PSM start from this same axis.
+LightMatrix NormalLightMatrix(const BaselineContext& context,
+                              BaselineDiagnostics* diagnostics = nullptr);
+
+// Focused: normal's p4; rectangle about (projected view frustum) ∩ (projected bounds), the
+// frustum first cut to p4·X ≥ δ (δ = half the nearest bounds corner or relevant point) because a
+// point light may sit inside it. Fallbacks: an empty or flat intersection → normal's matrix; a
+// relevant point outside the rectangle (only through rounding, or relevant points outside the
+// bounds) → refit over the intersection and the relevant points.
+LightMatrix FocusedLightMatrix(const BaselineContext& context,
+                               BaselineDiagnostics* diagnostics = nullptr);
+
+// LiSPSM (directional lights directly, point lights through the light's perspective first).
+// Fallback to focused (reason in diagnostics): |sin γ| < 1e-3 (view along the light, where LiSPSM
+// itself reverts to the unwarped map), a body point or the eye behind a point light's plane,
+// FromScreenRows rejecting the rows, or the warp's p4 leaving a relevant point behind or outside.
+LightMatrix LispsmLightMatrix(const BaselineContext& context,
+                              BaselineDiagnostics* diagnostics = nullptr);
+
+// PSM in the camera's post-perspective space (slid-back virtual camera, Kozlov's inverted
+// projection for a light behind the viewer, an orthographic NDC map for a light on the camera
+// plane). Fallback to focused (reason in diagnostics): no light frustum in NDC holds the whole
+// body (the light's NDC point surrounded by it), FromScreenRows rejecting the rows, or the warp's
+// p4 leaving a relevant point behind or outside.
+LightMatrix PsmLightMatrix(const BaselineContext& context,
+                           BaselineDiagnostics* diagnostics = nullptr);
+
+// Plane-optimal for scene->floorPlane (InputError when the scene has none), refitted over
+// wsRelevant. When a relevant point is behind the plane-optimal p4 (off the plane, its shadow on
+// the plane behind the camera), p4 is turned toward the focused p4 along the great circle by the
+// smallest fraction that sees every relevant point (bisection, 40 steps; diagnostics'
+// rotationFraction). Fallback to focused: the light on the floor plane, no relevant points, or no
+// such fraction.
+LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
+                                    BaselineDiagnostics* diagnostics = nullptr);
+
+// The plane-optimal matrix before the affine refit: for A = identity, a floor point seen at
+// screen point x (pixels of scene->shadowMap's size) maps to u = x. Throws InputError when the
+// scene has no floor plane or the light lies on it (no plane-optimal matrix exists).
+LightMatrix PlaneOptimalProjectiveMatrix(const BaselineContext& context);
+
+// Wimmer et al.'s optimal distance from the warp's projection centre to the body's near face:
+// n_opt = (z_n + √(z_f z_n)) / sin γ; z_n + √(z_f z_n) when γ = 90° (Lloyd 2006 §4.1).
+double LispsmOptimalNear(double zNear, double zFar, double sinGamma);
+
+// PSM's virtual camera (Kozlov's slide back): `camera` slid back along its view direction by
+// `slideBack` world units, its near and far planes moved to [zNear, zFar] + slideBack (zNear, zFar:
+// the depths of the focus body from the real eye). Same field of view, so its frustum contains the
+// body.
+Camera PsmVirtualCamera(const Camera& camera, double zNear, double zFar, double slideBack);
+
+// The slide-back distance PSM uses for a body spanning view depths [zNear, zFar]: the smallest
+// δ ≥ 0 with (zNear + δ) / (zFar + δ) ≥ kPsmMinNearFarRatio.
+double PsmSlideBack(double zNear, double zFar);
+// Our choice (not a value from the papers): the virtual near plane at least 1/20 of the virtual
+// far plane, so that post-perspective depth keeps a usable range.
+inline constexpr double kPsmMinNearFarRatio = 0.05;
+
+}  // namespace lexel::spatial
