@@ -1,6 +1,10 @@
 // lexel — the command line. Subcommands:
 //   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv]
-//   [--out DIR] lexel tables [--out DIR] [--cases DIR] lexel lowres CASE.json [--out DIR]
+//             [--out DIR] [--no-map-truth]          flatland and 3D cases alike
+//   lexel sweep CASE.json [--lights N] [--methods NAME...] [--format table|markdown|csv|json]
+//             [--out DIR]                           the 3D report's Table 1
+//   lexel tables [--out DIR] [--cases DIR]
+//   lexel lowres CASE.json [--out DIR]
 // Exit status: 0 success, 2 bad input (one line on stderr naming the field and the reason),
 // 1 an I/O failure while writing results.
 #include <CLI/CLI.hpp>
@@ -8,7 +12,9 @@
 #include <iostream>
 
 #include "cases/flatland_case.h"
+#include "cases/json_reader.h"
 #include "cases/report.h"
+#include "cases/spatial_report.h"
 #include "cases/tables.h"
 #include "solvers/errors.h"
 
@@ -21,8 +27,20 @@ namespace {
 using namespace lexel;
 
 int RunCommand(const std::vector<std::string>& casePaths, std::vector<std::string> methods,
-               const std::string& metricName, const std::string& format,
-               const std::string& outDir) {
+               const std::string& metricName, const std::string& format, const std::string& outDir,
+               bool mapTruth) {
+    // 3D cases (they have "lights") go to the spatial harness, one at a time.
+    if (cases::IsSpatialCase(cases::ParseJsonFile(casePaths.front()))) {
+        if (casePaths.size() != 1)
+            throw InputError("run: give one 3D case at a time (got " +
+                             std::to_string(casePaths.size()) + " files)");
+        cases::SpatialRunOptions options;
+        options.methods = methods;
+        options.format = format;
+        options.outDir = outDir;
+        options.mapTruth = mapTruth;
+        return cases::RunSpatialCommand(casePaths.front(), options);
+    }
     const Metric metric = ParseMetric(metricName);
     if (methods.empty()) methods = flatland::FlatlandMethodNames();
     for (const auto& m : methods) flatland::CheckFlatlandMethod(m);
@@ -73,7 +91,26 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"l1", "l2", "linf"}));
     run->add_option("--format", format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
-    run->add_option("--out", runOut, "Also write <case>.json/.csv/.md into this directory");
+    run->add_option("--out", runOut,
+                    "Also write <case>.json/.csv/.md (and for 3D cases the images) here");
+    bool noMapTruth = false;
+    run->add_flag("--no-map-truth", noMapTruth,
+                  "3D cases: skip the report's focused 4000² truth map (rays are the truth)");
+
+    auto* sweep = app.add_subcommand(
+        "sweep", "3D: evaluate every method over the case's light sweep (report Table 1)");
+    std::string sweepCase, sweepFormat = "table", sweepOut;
+    std::vector<std::string> sweepMethods;
+    int sweepLights = 0;
+    sweep->add_option("case", sweepCase, "3D case file (JSON) with a light_sweep")
+        ->required()
+        ->check(CLI::ExistingFile);
+    sweep->add_option("--lights", sweepLights, "Number of hemisphere lights (default: the case's)")
+        ->check(CLI::Range(1, 100000));
+    sweep->add_option("--methods,--method", sweepMethods, "Methods to run (default: all)");
+    sweep->add_option("--format", sweepFormat, "Output format")
+        ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
+    sweep->add_option("--out", sweepOut, "Also write table1.md/.csv, sweep.json, lights.csv here");
 
     auto* tables =
         app.add_subcommand("tables", "Reproduce the thesis tables (Chong 2003, ch. 4.1.3)");
@@ -98,7 +135,15 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
     try {
-        if (*run) return RunCommand(casePaths, methods, metric, format, runOut);
+        if (*run) return RunCommand(casePaths, methods, metric, format, runOut, !noMapTruth);
+        if (*sweep) {
+            cases::SweepOptions options;
+            options.lights = sweepLights;
+            options.methods = sweepMethods;
+            options.format = sweepFormat;
+            options.outDir = sweepOut;
+            return cases::RunSweepCommand(sweepCase, options);
+        }
         if (*tables) return cases::RunTablesCommand(tablesOut, casesDir);
         if (*lowres) return cases::RunLowresCommand(lowresCase, lowresOut);
     } catch (const InputError& e) {

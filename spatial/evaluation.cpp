@@ -1,0 +1,138 @@
+#include "spatial/evaluation.h"
+
+#include <chrono>
+
+#include "solvers/errors.h"
+#include "spatial/methods.h"
+#include "spatial/ray_caster.h"
+
+namespace lexel::spatial {
+
+Evaluator::Evaluator(const Scene& scene, const RenderBackend& backend)
+    : scene_(scene), backend_(backend), bounds_(scene.geometry.ComputeBounds()) {
+    if (bounds_.Empty()) throw InputError("geometry: the scene has no triangles");
+    frame_ = backend.RenderCamera(scene.camera, scene.camera.resolution);
+    readback_ = MakeReadback(backend, scene.camera, scene.readback);
+    if (readback_.wsRelevant.empty())
+        throw InputError("camera: no geometry is visible at the readback resolution");
+    caster_ = std::make_unique<RayCaster>(scene.geometry);
+}
+
+Evaluator::~Evaluator() = default;
+
+std::vector<std::uint8_t> Evaluator::TraceTruth(const LightSpace& lightSpace) const {
+    const double offset = kRayOffset * bounds_.Radius();
+    std::vector<ShadowRay> rays;
+    std::vector<std::size_t> pixels;
+    for (std::size_t i = 0; i < frame_.triangle.size(); ++i) {
+        if (!frame_.Covered(i)) continue;
+        const glm::dvec3& ws = frame_.wsPosition[i];
+        const glm::dvec3 toLight = lightSpace.DirectionToLight(ws);
+        if (!(glm::dot(frame_.wsNormal[i], toLight) > 0.0)) continue;
+        const glm::dvec3 origin = ws + offset * frame_.wsNormal[i];
+        const double distance = lightSpace.DistanceToLight(origin);
+        const float tFar = std::isinf(distance) ? std::numeric_limits<float>::infinity()
+                                                : static_cast<float>(distance - offset);
+        rays.push_back({glm::vec3(origin), glm::vec3(toLight), 0.0f, tFar});
+        pixels.push_back(i);
+    }
+    std::vector<std::uint8_t> occluded(rays.size(), 0);
+    caster_->OccludedBatch(rays, occluded);
+    std::vector<std::uint8_t> truth(frame_.triangle.size(), 0);
+    for (std::size_t k = 0; k < pixels.size(); ++k) truth[pixels[k]] = occluded[k];
+    return truth;
+}
+
+std::int64_t Evaluator::Misclassified(const Light& light, const LightMatrix& matrix) const {
+    const LightSpace lightSpace(light, bounds_);
+    const std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
+    const std::vector<Shade> shades = backend_.ShadePixels(
+        frame_, lightSpace, backend_.RenderShadowMap(lightSpace, matrix, scene_.shadowMap));
+    std::int64_t wrong = 0;
+    for (std::size_t i = 0; i < shades.size(); ++i)
+        if (shades[i] == Shade::kLit || shades[i] == Shade::kShadowed)
+            wrong += (shades[i] == Shade::kShadowed) != static_cast<bool>(truth[i]);
+    return wrong;
+}
+
+LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& options) const {
+    LightOutcome out;
+    out.light = light;
+    const LightSpace lightSpace(light, bounds_);
+
+    MethodContext context;
+    context.baseline.scene = &scene_;
+    context.baseline.lightSpace = &lightSpace;
+    context.baseline.wsBounds = bounds_;
+    context.baseline.wsRelevant = readback_.wsRelevant;
+
+    // Step 1 of Algorithm 1: boundary samples from a standard (focused) shadow map.
+    const ShadowMap standardMap = backend_.RenderShadowMap(
+        lightSpace, FocusedLightMatrix(context.baseline), scene_.shadowMap);
+    out.samples = MakeLightSamples(readback_, lightSpace,
+                                   backend_.ShadePixels(readback_.buffer, lightSpace, standardMap));
+    context.samples = &out.samples;
+
+    // Which frame pixels count, and the truth there.
+    std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
+    std::vector<std::uint8_t> counted(frame_.triangle.size(), 0);
+    for (std::size_t i = 0; i < counted.size(); ++i) {
+        if (!frame_.Covered(i)) continue;
+        counted[i] =
+            glm::dot(frame_.wsNormal[i], lightSpace.DirectionToLight(frame_.wsPosition[i])) > 0.0;
+        out.receiverPixels += counted[i];
+        out.truthShadowed += counted[i] && truth[i];
+    }
+    const auto countWrong = [&](const std::vector<Shade>& shades, std::int64_t* falseShadow) {
+        std::int64_t wrong = 0, shadowWrong = 0;
+        for (std::size_t i = 0; i < shades.size(); ++i) {
+            if (!counted[i]) continue;
+            const bool shadowed = shades[i] != Shade::kLit;
+            if (shadowed != static_cast<bool>(truth[i])) {
+                ++wrong;
+                shadowWrong += shadowed;
+            }
+        }
+        if (falseShadow) *falseShadow = shadowWrong;
+        return wrong;
+    };
+
+    if (options.mapTruth) {
+        const Resolution size{options.truthMapSize, options.truthMapSize};
+        // The focused matrix is fitted for the case's map; scale its texels to the truth map's.
+        glm::dmat3 toTruth(1.0);
+        toTruth[0][0] = static_cast<double>(size.width) / scene_.shadowMap.width;
+        toTruth[1][1] = static_cast<double>(size.height) / scene_.shadowMap.height;
+        const ShadowMap truthMap = backend_.RenderShadowMap(
+            lightSpace, FocusedLightMatrix(context.baseline).ThenAffine(toTruth), size);
+        out.mapTruthDisagree =
+            countWrong(backend_.ShadePixels(frame_, lightSpace, truthMap), nullptr);
+    }
+
+    for (const std::string& method : options.methods) {
+        MethodOutcome m;
+        m.method = method;
+        const auto start = std::chrono::steady_clock::now();
+        const MethodMatrix computed = ComputeLightMatrix(method, context);
+        m.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                   .count();
+        m.matrix = computed.matrix;
+        if (computed.optimizer) {
+            m.hAfterIteration = computed.optimizer->hAfterIteration;
+            m.hBeforeRefine = computed.optimizer->hBeforeRefine;
+        }
+        ShadowMap map = backend_.RenderShadowMap(lightSpace, m.matrix, scene_.shadowMap);
+        std::vector<Shade> shades = backend_.ShadePixels(frame_, lightSpace, map);
+        m.misclassified = countWrong(shades, &m.falseShadow);
+        m.h = Energy(m.matrix, out.samples);
+        if (options.keepBuffers) {
+            m.shades = std::move(shades);
+            m.map = std::move(map);
+        }
+        out.methods.push_back(std::move(m));
+    }
+    if (options.keepBuffers) out.truth = std::move(truth);
+    return out;
+}
+
+}  // namespace lexel::spatial

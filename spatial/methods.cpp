@@ -1,0 +1,40 @@
+#include "spatial/methods.h"
+
+#include "solvers/errors.h"
+
+namespace lexel::spatial {
+
+std::vector<std::string> SpatialMethodNames() {
+    return {"optimal", "focused", "lispsm", "plane-optimal", "normal", "psm", "optimal-refined"};
+}
+
+void CheckSpatialMethod(std::string_view name) {
+    std::string known;
+    for (const std::string& m : SpatialMethodNames()) {
+        if (m == name) return;
+        known += (known.empty() ? "" : ", ") + m;
+    }
+    throw InputError("--methods: unknown 3D method '" + std::string(name) + "' (known: " + known +
+                     ")");
+}
+
+MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
+    if (name == "normal") return {NormalLightMatrix(context.baseline), std::nullopt};
+    if (name == "focused") return {FocusedLightMatrix(context.baseline), std::nullopt};
+    if (name == "lispsm") return {LispsmLightMatrix(context.baseline), std::nullopt};
+    if (name == "psm") return {PsmLightMatrix(context.baseline), std::nullopt};
+    if (name == "plane-optimal") return {PlaneOptimalLightMatrix(context.baseline), std::nullopt};
+    if (name == "optimal" || name == "optimal-refined") {
+        if (!context.samples) throw InputError("internal: optimal needs the light's samples");
+        OptimizerOptions options;
+        options.refine = name == "optimal-refined";
+        const glm::dvec3 initialP4 = FocusedLightMatrix(context.baseline).p4;
+        OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4,
+                                                context.baseline.scene->shadowMap, options);
+        return {r.matrix, std::move(r)};
+    }
+    CheckSpatialMethod(name);
+    throw InputError("internal: method '" + std::string(name) + "' has no implementation");
+}
+
+}  // namespace lexel::spatial

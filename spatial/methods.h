@@ -1,0 +1,35 @@
+// The named light-matrix methods of the 3D harness (report §3): one registry so that `lexel run`,
+// `lexel sweep` and the tests agree on names, order and inputs.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "spatial/baselines.h"
+#include "spatial/optimizer.h"
+#include "spatial/samples.h"
+
+namespace lexel::spatial {
+
+struct MethodContext {
+    BaselineContext baseline;               // scene, light space, bounds, visible points (world)
+    const LightSamples* samples = nullptr;  // boundary samples and relevant points (light space)
+};
+
+// Every method, in the column order of the report's Table 1 followed by the extra ones.
+std::vector<std::string> SpatialMethodNames();
+// Throws InputError naming the unknown method and listing the known ones.
+void CheckSpatialMethod(std::string_view name);
+// The matrix, and for `optimal` / `optimal-refined` the optimizer's trace (h per iteration, time
+// profile). `optimal` is Algorithm 1 as published (initial axis: focused's); `optimal-refined`
+// adds the Ceres refinement on the unit sphere.
+struct MethodMatrix {
+    LightMatrix matrix;
+    std::optional<OptimizerResult> optimizer;
+};
+MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context);
+
+}  // namespace lexel::spatial

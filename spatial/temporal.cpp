@@ -1,0 +1,62 @@
+#include "spatial/temporal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace lexel::spatial {
+
+double MedianBadness(const LightMatrix& matrix, const LightSamples& samples) {
+    std::vector<double> values;
+    values.reserve(samples.lsX.size());
+    for (std::size_t k = 0; k < samples.lsX.size(); ++k)
+        values.push_back(SampleBadness(matrix, samples.lsX[k], samples.dXdx1[k], samples.dXdx2[k]));
+    if (values.empty()) return std::numeric_limits<double>::infinity();
+    const std::size_t mid = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + mid, values.end());
+    if (values.size() % 2) return values[mid];
+    const double upper = values[mid];
+    return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + mid));
+}
+
+std::optional<LightMatrix> RescaleToCover(const LightMatrix& previous, const LightSamples& samples,
+                                          Resolution map, double margin) {
+    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const glm::dvec3& X : samples.lsRelevant) {
+        if (!InFront(previous.p4, X)) return std::nullopt;
+        const glm::dvec2 u = previous.Map(X);
+        lo = glm::min(lo, u);
+        hi = glm::max(hi, u);
+    }
+    if (samples.lsRelevant.empty()) return previous;
+    const glm::dvec2 center = 0.5 * (lo + hi);
+    const glm::dvec2 half = glm::max(0.5 * (hi - lo) * (1.0 + margin), glm::dvec2(1e-12));
+    // u' = W/2 + (u - c) · W/(2 half): a scale and a shift per axis.
+    const glm::dvec2 scale(0.5 * map.width / half.x, 0.5 * map.height / half.y);
+    glm::dmat3 a(0.0);
+    a[0][0] = scale.x;
+    a[1][1] = scale.y;
+    a[2][0] = 0.5 * map.width - scale.x * center.x;
+    a[2][1] = 0.5 * map.height - scale.y * center.y;
+    a[2][2] = 1.0;
+    return previous.ThenAffine(a);
+}
+
+HysteresisDecision ApplyHysteresis(const std::optional<LightMatrix>& previous,
+                                   const LightMatrix& candidate, const LightSamples& samples,
+                                   Resolution map, double margin) {
+    HysteresisDecision d;
+    d.matrix = candidate;
+    d.medianCandidate = MedianBadness(candidate, samples);
+    d.medianPrevious = std::numeric_limits<double>::infinity();
+    if (!previous) return d;
+    const std::optional<LightMatrix> kept = RescaleToCover(*previous, samples, map, margin);
+    if (!kept) return d;  // the old axis no longer sees every relevant point: must change
+    d.medianPrevious = MedianBadness(*kept, samples);
+    if (d.medianCandidate < kSufficientImprovement * d.medianPrevious) return d;
+    d.matrix = *kept;
+    d.changed = false;
+    return d;
+}
+
+}  // namespace lexel::spatial
