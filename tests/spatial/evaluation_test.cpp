@@ -1,0 +1,89 @@
+// The 3D harness end to end on the shipped walkthrough case: the report's focused 4000² truth
+// map agrees with exact Embree rays, every method's map covers every visible sample, results are
+// deterministic, and the acceptance of the optimizer issue: over 100 hemisphere lights the
+// optimized matrix misclassifies fewer pixels on average than focused, LiSPSM, plane-optimal and
+// normal (report Table 1's first row).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "cases/spatial_case.h"
+#include "cases/spatial_report.h"
+#include "spatial/methods.h"
+
+namespace lexel::spatial {
+namespace {
+
+const Scene& Walkthrough() {
+    static const Scene scene = cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) /
+                                                       "spatial/walkthrough.json");
+    return scene;
+}
+
+TEST(Evaluation, FocusedTruthMapAgreesWithShadowRays) {
+    const Scene& scene = Walkthrough();
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Evaluator evaluator(scene, *backend);
+    EvaluationOptions options;
+    options.mapTruth = true;
+    for (const Light& light : scene.lights) {
+        const LightOutcome o = evaluator.Evaluate(light, options);
+        ASSERT_GT(o.receiverPixels, 100000);
+        ASSERT_GT(o.truthShadowed, 1000);
+        // The report's ground truth differs from exact rays on under 0.5% of counted pixels
+        // (measured 0.04% and 0.21% for the two fixed lights).
+        EXPECT_LT(o.mapTruthDisagree, o.receiverPixels / 200)
+            << "of " << o.receiverPixels << " pixels";
+    }
+}
+
+TEST(Evaluation, EveryMethodCoversEveryVisibleSampleAndIsDeterministic) {
+    const Scene& scene = Walkthrough();
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Evaluator evaluator(scene, *backend);
+    EvaluationOptions options;
+    options.methods = SpatialMethodNames();
+    const std::vector<Light> lights = cases::SweepLightsOf(scene, 6);
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        const LightOutcome a = evaluator.Evaluate(lights[l], options);
+        const LightOutcome b = evaluator.Evaluate(lights[l], options);
+        ASSERT_GT(a.samples.lsX.size(), 0u) << "light " << l;
+        for (std::size_t m = 0; m < a.methods.size(); ++m) {
+            const MethodOutcome& mo = a.methods[m];
+            EXPECT_EQ(mo.misclassified, b.methods[m].misclassified) << mo.method;
+            EXPECT_TRUE(std::isfinite(mo.h)) << mo.method << " light " << l;
+            for (const glm::dvec3& lsX : a.samples.lsRelevant) {
+                ASSERT_TRUE(InFront(mo.matrix.p4, lsX)) << mo.method << " light " << l;
+                const glm::dvec2 u = mo.matrix.Map(lsX);
+                ASSERT_TRUE(u.x > -1e-6 && u.y > -1e-6 && u.x < scene.shadowMap.width + 1e-6 &&
+                            u.y < scene.shadowMap.height + 1e-6)
+                    << mo.method << " light " << l << " maps a visible sample to " << u.x << ","
+                    << u.y;
+            }
+        }
+        // The optimizer never ends above its starting point (the focused axis).
+        for (const MethodOutcome& mo : a.methods)
+            if (!mo.hAfterIteration.empty())
+                EXPECT_LE(mo.hAfterIteration.back(), mo.hAfterIteration.front()) << mo.method;
+    }
+}
+
+TEST(Evaluation, OptimalBeatsTheBaselinesOverOneHundredLights) {
+    const Scene& scene = Walkthrough();
+    const std::vector<std::string> methods = {"optimal", "focused", "lispsm", "plane-optimal",
+                                              "normal"};
+    const cases::SweepResult r =
+        cases::RunSweep(scene, methods, cases::SweepLightsOf(scene, 100), false);
+    std::vector<double> mean(methods.size(), 0.0);
+    for (const auto& light : r.cells)
+        for (std::size_t m = 0; m < methods.size(); ++m) mean[m] += light[m].misclassified / 100.0;
+    for (std::size_t m = 1; m < methods.size(); ++m) {
+        std::cout << methods[m] << ": " << mean[m] << " vs optimal " << mean[0] << " ("
+                  << 100.0 * (mean[m] - mean[0]) / mean[0] << "% more)\n";
+        EXPECT_LT(mean[0], mean[m]) << methods[m];
+    }
+}
+
+}  // namespace
+}  // namespace lexel::spatial
