@@ -1,0 +1,52 @@
+// 03 — The scene-optimized light matrix in 3D (Chong & Gortler, Algorithm 1).
+//
+// The light matrix P maps a light-space point X to the shadow map at u^i = p_i·X / p4·X. Its
+// fourth row p4 is the optical axis; the first two rows only stretch, shear and shift the map.
+// Algorithm 1 reads back a low-resolution view of the scene, keeps the pixels near shadow
+// boundaries (the samples), and minimizes the energy
+//     h(P) = Σ_samples ||(∂u/∂x)⁻¹||²_F            (report eq. 6)
+// — how many screen pixels one texel covers, squared, summed — by rotating p4 against the
+// gradient ∂h/∂p4 (Appendix A) and re-fitting the map's rectangle around the visible points after
+// every rotation. This program runs it for the walkthrough case's point light, prints h after each
+// iteration (initial → final), compares the misclassified pixels with the focused map, and writes
+// the report's Fig. 2: the optimized shadow map with the samples in red.
+//
+//   ./build/notebooks_cpp/notebook_03_scene_optimized [out.png]
+#include <cstdio>
+#include <filesystem>
+
+#include "cases/spatial_case.h"
+#include "spatial/evaluation.h"
+#include "spatial/harness_images.h"
+
+int main(int argc, char** argv) {
+    using namespace lexel::spatial;
+    const std::string outPath = argc > 1 ? argv[1] : "notebook_03_optimal_map.png";
+    const Scene scene = lexel::cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) /
+                                                       "spatial/walkthrough.json");
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Evaluator evaluator(scene, *backend);  // renders the frame and the 180² readback once
+
+    EvaluationOptions options;
+    options.methods = {"focused", "optimal"};
+    options.keepBuffers = true;
+    const LightOutcome o = evaluator.Evaluate(scene.lights.front(), options);
+    std::printf("%zu readback pixels see geometry; %zu are boundary samples for this light\n",
+                o.samples.lsRelevant.size(), o.samples.lsX.size());
+
+    const MethodOutcome& focused = o.methods[0];
+    const MethodOutcome& optimal = o.methods[1];
+    std::printf("h per Algorithm 1 iteration (start: the focused axis):\n");
+    for (std::size_t i = 0; i < optimal.hAfterIteration.size(); ++i)
+        std::printf("  iteration %zu: h = %.6g\n", i, optimal.hAfterIteration[i]);
+    std::printf("optical axis p4: (%.4f, %.4f, %.4f) -> (%.4f, %.4f, %.4f)\n", focused.matrix.p4.x,
+                focused.matrix.p4.y, focused.matrix.p4.z, optimal.matrix.p4.x, optimal.matrix.p4.y,
+                optimal.matrix.p4.z);
+    std::printf("misclassified pixels (vs exact shadow rays): focused %lld -> optimal %lld\n",
+                static_cast<long long>(focused.misclassified),
+                static_cast<long long>(optimal.misclassified));
+    WriteImage(outPath, ShadowMapImage(optimal.map, o.samples));
+    std::printf("wrote %s (the optimized map; red: samples, green: visible points)\n",
+                outPath.c_str());
+    return 0;
+}
