@@ -28,12 +28,16 @@ using namespace lexel;
 
 int RunCommand(const std::vector<std::string>& casePaths, std::vector<std::string> methods,
                const std::string& metricName, const std::string& format, const std::string& outDir,
-               bool mapTruth) {
+               bool mapTruth, bool metricGiven) {
     // 3D cases (they have "lights") go to the spatial harness, one at a time.
     if (cases::IsSpatialCase(cases::ParseJsonFile(casePaths.front()))) {
         if (casePaths.size() != 1)
             throw InputError("run: give one 3D case at a time (got " +
                              std::to_string(casePaths.size()) + " files)");
+        if (metricGiven)
+            throw InputError(
+                "--metric: 3D cases are measured by the report's h (eq. 6) and "
+                "misclassified pixels; --metric applies to flatland cases");
         cases::SpatialRunOptions options;
         options.methods = methods;
         options.format = format;
@@ -135,7 +139,9 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
     try {
-        if (*run) return RunCommand(casePaths, methods, metric, format, runOut, !noMapTruth);
+        if (*run)
+            return RunCommand(casePaths, methods, metric, format, runOut, !noMapTruth,
+                              run->count("--metric") > 0);
         if (*sweep) {
             cases::SweepOptions options;
             options.lights = sweepLights;

@@ -249,7 +249,15 @@ void CameraPathSection(const spatial::Scene& scene, const spatial::RenderBackend
         for (std::size_t k = 0; k < scene.cameraPath.size(); ++k) {
             spatial::Scene poseScene = scene;
             poseScene.camera = scene.cameraPath[k];
-            const spatial::Evaluator evaluator(poseScene, backend);
+            std::optional<spatial::Evaluator> built;
+            try {
+                built.emplace(poseScene, backend);
+            } catch (const InputError& e) {
+                std::string reason = e.what();
+                if (reason.rfind("/camera: ", 0) == 0) reason = reason.substr(9);
+                throw InputError("/camera_path/" + std::to_string(k) + ": " + reason);
+            }
+            const spatial::Evaluator& evaluator = *built;
             const spatial::LightOutcome o = evaluator.Evaluate(light, evalOptions);
             const spatial::HysteresisDecision d = spatial::ApplyHysteresis(
                 previous, o.methods[0].matrix, o.samples, scene.shadowMap, margin);
@@ -282,7 +290,7 @@ void CameraPathSection(const spatial::Scene& scene, const spatial::RenderBackend
 
 std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights) {
     if (!scene.lightSweep)
-        throw InputError("light_sweep: the case has none; add {\"count\", \"seed\", \"radius\"}");
+        throw InputError("/light_sweep: the case has none; add {\"count\", \"seed\", \"radius\"}");
     spatial::LightSweep sweep = *scene.lightSweep;
     if (lights > 0) sweep.count = lights;
     return spatial::SweepLights(sweep, scene.geometry.ComputeBounds().Center());
@@ -378,8 +386,37 @@ nlohmann::json SweepJson(const SweepResult& r) {
     return doc;
 }
 
-int RunSweepCommand(const std::filesystem::path& casePath, const SweepOptions& options) {
+namespace {
+int RunSweepLoaded(const std::filesystem::path& casePath, const spatial::Scene& scene,
+                   const SweepOptions& options);
+int RunSpatialLoaded(const std::filesystem::path& casePath, const spatial::Scene& scene,
+                     const SpatialRunOptions& options);
+
+// Errors found after loading (no visible geometry, a light the evaluation rejects, a missing
+// light_sweep) get the case file's name in front, like the loader's own.
+template <class Options>
+int WithCaseName(const std::filesystem::path& casePath, const Options& options,
+                 int (*body)(const std::filesystem::path&, const spatial::Scene&, const Options&)) {
     const spatial::Scene scene = LoadSpatialScene(casePath);
+    try {
+        return body(casePath, scene, options);
+    } catch (const InputError& e) {
+        throw InputError(casePath.string() + ": " + e.what());
+    }
+}
+}  // namespace
+
+int RunSweepCommand(const std::filesystem::path& casePath, const SweepOptions& options) {
+    return WithCaseName(casePath, options, &RunSweepLoaded);
+}
+
+int RunSpatialCommand(const std::filesystem::path& casePath, const SpatialRunOptions& options) {
+    return WithCaseName(casePath, options, &RunSpatialLoaded);
+}
+
+namespace {
+int RunSweepLoaded(const std::filesystem::path&, const spatial::Scene& scene,
+                   const SweepOptions& options) {
     const std::vector<std::string> methods = ResolveMethods(options.methods);
     const std::vector<Light> lights = SweepLightsOf(scene, options.lights);
     const SweepResult r = RunSweep(scene, methods, lights, true);
@@ -422,12 +459,12 @@ int RunSweepCommand(const std::filesystem::path& casePath, const SweepOptions& o
     return 0;
 }
 
-int RunSpatialCommand(const std::filesystem::path& casePath, const SpatialRunOptions& options) {
-    const spatial::Scene scene = LoadSpatialScene(casePath);
+int RunSpatialLoaded(const std::filesystem::path&, const spatial::Scene& scene,
+                     const SpatialRunOptions& options) {
     const std::vector<std::string> methods = ResolveMethods(options.methods);
     if (scene.lights.empty())
         throw InputError(
-            "lights: the case has no fixed lights; run `lexel sweep` for its "
+            "/lights: the case has no fixed lights; run `lexel sweep` for its "
             "light_sweep");
     const auto backend = spatial::MakeCpuRenderer(scene.geometry);
     const spatial::Evaluator evaluator(scene, *backend);
@@ -529,5 +566,7 @@ int RunSpatialCommand(const std::filesystem::path& casePath, const SpatialRunOpt
     }
     return 0;
 }
+
+}  // namespace
 
 }  // namespace lexel::cases

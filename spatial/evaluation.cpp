@@ -14,7 +14,9 @@ Evaluator::Evaluator(const Scene& scene, const RenderBackend& backend)
     frame_ = backend.RenderCamera(scene.camera, scene.camera.resolution);
     readback_ = MakeReadback(backend, scene.camera, scene.readback);
     if (readback_.wsRelevant.empty())
-        throw InputError("camera: no geometry is visible at the readback resolution");
+        throw InputError("/camera: no geometry is visible at the readback resolution (" +
+                         std::to_string(scene.readback.width) + "×" +
+                         std::to_string(scene.readback.height) + ")");
     caster_ = std::make_unique<RayCaster>(scene.geometry);
 }
 

@@ -61,7 +61,8 @@ struct LightOutcome {
 class Evaluator {
   public:
     // Renders the frame (camera.resolution) and the readback (scene.readback) once; builds the
-    // ray caster. Throws InputError when the camera sees no geometry.
+    // ray caster. Throws InputError "/camera: no geometry is visible ..." when the readback sees
+    // nothing.
     Evaluator(const Scene& scene, const RenderBackend& backend);
     ~Evaluator();
 

@@ -14,7 +14,7 @@ void CheckSpatialMethod(std::string_view name) {
         if (m == name) return;
         known += (known.empty() ? "" : ", ") + m;
     }
-    throw InputError("--methods: unknown 3D method '" + std::string(name) + "' (known: " + known +
+    throw InputError("--method: unknown 3D method '" + std::string(name) + "' (known: " + known +
                      ")");
 }
 

@@ -261,3 +261,10 @@ expect_run(0 "^light 0: point \\(12, 25, -8\\)[^\n]*\nmethod +misclassified[^\n]
 # lowres on a shipped case.
 expect_run(0 "decision pixels K.*\n *5 .*\n *10 " "" lowres "${good}")
 message(STATUS "cli tests passed")
+
+# --metric chooses the flatland objective; a 3D case says so instead of ignoring it.
+expect_run(2 "^$" "^lexel: error: --metric: 3D cases are measured by the report's h .*\n$"
+           run "${DATA}/spatial_small.json" --metric l2)
+# Errors found after loading name the case file and the JSON pointer.
+expect_run(2 "^$" "spatial_path_no_visible.json: /camera_path/1: no geometry is visible"
+           run "${DATA}/spatial_path_no_visible.json")
