@@ -7,16 +7,42 @@
 // towards a light at distance 100 from the floor's centre, with the offsets recommended in
 // ray_caster.h.
 //
+// The walkthrough benchmarks (BM_Walkthrough*) time the harness on the shipped
+// cases/spatial/walkthrough.json (report §3's scene), loaded once:
+//   - the passes of report Algorithm 1 steps 1–2 and of the experiment, on all TBB workers:
+//     camera pass at 750² (pixels/s), readback at 180² with its screen derivatives (pixels/s),
+//     the first light's shadow map at 400² through the focused matrix (texels/s), and shading of
+//     the 750² frame against that map (pixels/s);
+//   - the light matrix per light on ONE core (tbb::global_control, as the report's Table 3 is a
+//     single-CPU profile), over the first kProfileLights lights of the case's light sweep with
+//     their LightSamples precomputed: focused, optimal (Algorithm 1: 3 iterations × 9 angles,
+//     hull once), optimal-refined, and optimal with hullOnce = false (the naive reference that
+//     re-fits from every relevant point per candidate). Counters are ms per light.
+//   - BM_WalkthroughProfile: all four in one run, light by light, so the ratios optimal/focused
+//     and naive/optimal come from the same conditions, plus a Table 3-like split: readback ms
+//     (per frame), per-light sampling ms (step 1: standard map + readback shading + samples),
+//     hull ms, search ms, refine ms, hull vertices and boundary samples.
+//
 //   ./build/bench/spatial_bench --benchmark_counters_tabular=true
+//   ./build/bench/spatial_bench --benchmark_filter=Walkthrough --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
+#include "cases/spatial_case.h"
+#include "cases/spatial_report.h"
+#include "spatial/baselines.h"
+#include "spatial/optimizer.h"
 #include "spatial/ray_caster.h"
+#include "spatial/render_backend.h"
+#include "spatial/samples.h"
 
 namespace {
 
@@ -196,6 +222,263 @@ void BM_OccludedSingleParallel(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * rays.size());
 }
 BENCHMARK(BM_OccludedSingleParallel)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// ---------------------------------------------------------------------------------------------
+// The shipped walkthrough case.
+
+constexpr int kProfileLights = 16;  // the first lights of the case's light sweep
+
+struct PerLight {
+    LightSpace lightSpace;
+    LightMatrix focused;
+    LightSamples samples;
+};
+
+struct Walkthrough {
+    lexel::spatial::Scene scene;  // (Scene() above is the ray benchmarks' mesh)
+    std::unique_ptr<RenderBackend> backend;
+    Bounds bounds;
+    CameraBuffer frame;  // scene.camera.resolution (750²)
+    Readback readback;   // scene.readback (180²)
+    std::vector<PerLight> lights;
+
+    BaselineContext Context(const LightSpace& lightSpace) const {
+        BaselineContext c;
+        c.scene = &scene;
+        c.lightSpace = &lightSpace;
+        c.wsBounds = bounds;
+        c.wsRelevant = readback.wsRelevant;
+        return c;
+    }
+};
+
+const Walkthrough& Case() {
+    static const Walkthrough w = [] {
+        Walkthrough w;
+        w.scene = lexel::cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
+        w.backend = MakeCpuRenderer(w.scene.geometry);
+        w.bounds = w.scene.geometry.ComputeBounds();
+        w.frame = w.backend->RenderCamera(w.scene.camera, w.scene.camera.resolution);
+        w.readback = MakeReadback(*w.backend, w.scene.camera, w.scene.readback);
+        // As Evaluator::Evaluate does (Algorithm 1 step 1): boundary samples from the focused map.
+        for (const Light& light : lexel::cases::SweepLightsOf(w.scene, kProfileLights)) {
+            const LightSpace lightSpace(light, w.bounds);
+            const LightMatrix focused = FocusedLightMatrix(w.Context(lightSpace));
+            const ShadowMap map =
+                w.backend->RenderShadowMap(lightSpace, focused, w.scene.shadowMap);
+            LightSamples samples = MakeLightSamples(
+                w.readback, lightSpace, w.backend->ShadePixels(w.readback.buffer, lightSpace, map));
+            w.lights.push_back({lightSpace, focused, std::move(samples)});
+        }
+        return w;
+    }();
+    return w;
+}
+
+// The case's first light (scene.lights[0]), its focused matrix and map.
+struct FirstLight {
+    LightSpace lightSpace;
+    LightMatrix focused;
+    ShadowMap map;
+};
+
+const FirstLight& First() {
+    static const FirstLight f = [] {
+        const Walkthrough& w = Case();
+        const LightSpace lightSpace(w.scene.lights.at(0), w.bounds);
+        const LightMatrix focused = FocusedLightMatrix(w.Context(lightSpace));
+        return FirstLight{lightSpace, focused,
+                          w.backend->RenderShadowMap(lightSpace, focused, w.scene.shadowMap)};
+    }();
+    return f;
+}
+
+double MsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+// --- the passes (all TBB workers) ---
+
+void BM_WalkthroughCameraPass(benchmark::State& state) {
+    const Walkthrough& w = Case();
+    const Resolution at = w.scene.camera.resolution;
+    for (auto _ : state) {
+        CameraBuffer buffer = w.backend->RenderCamera(w.scene.camera, at);
+        benchmark::DoNotOptimize(buffer.triangle.data());
+    }
+    state.counters["side"] = at.width;
+    state.SetItemsProcessed(state.iterations() * at.Count());
+}
+BENCHMARK(BM_WalkthroughCameraPass)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_WalkthroughReadback(benchmark::State& state) {
+    const Walkthrough& w = Case();
+    const Resolution at = w.scene.readback;
+    for (auto _ : state) {
+        Readback r = MakeReadback(*w.backend, w.scene.camera, at);
+        benchmark::DoNotOptimize(r.wsRelevant.data());
+    }
+    state.counters["side"] = at.width;
+    state.counters["relevant"] = static_cast<double>(w.readback.wsRelevant.size());
+    state.SetItemsProcessed(state.iterations() * at.Count());
+}
+BENCHMARK(BM_WalkthroughReadback)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_WalkthroughShadowMapPass(benchmark::State& state) {
+    const Walkthrough& w = Case();
+    const FirstLight& f = First();
+    const Resolution at = w.scene.shadowMap;
+    for (auto _ : state) {
+        ShadowMap map = w.backend->RenderShadowMap(f.lightSpace, f.focused, at);
+        benchmark::DoNotOptimize(map.depth.data());
+    }
+    state.counters["side"] = at.width;
+    state.SetItemsProcessed(state.iterations() * at.Count());
+}
+BENCHMARK(BM_WalkthroughShadowMapPass)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_WalkthroughShadePass(benchmark::State& state) {
+    const Walkthrough& w = Case();
+    const FirstLight& f = First();
+    for (auto _ : state) {
+        std::vector<Shade> shades = w.backend->ShadePixels(w.frame, f.lightSpace, f.map);
+        benchmark::DoNotOptimize(shades.data());
+    }
+    state.counters["side"] = w.frame.resolution.width;
+    state.SetItemsProcessed(state.iterations() * w.frame.resolution.Count());
+}
+BENCHMARK(BM_WalkthroughShadePass)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// --- the light matrix per light, one core ---
+
+enum Variant { kFocused = 0, kOptimal = 1, kRefined = 2, kNaive = 3 };
+
+OptimizerOptions OptionsFor(int variant) {
+    OptimizerOptions o;  // Algorithm 1: 3 iterations × 9 angles, hull once
+    if (variant == kRefined) o.refine = true;
+    if (variant == kNaive) o.hullOnce = false;
+    return o;
+}
+
+// One iteration = every profiled light once; ms_per_light is the mean over lights.
+void BM_WalkthroughLightMatrix(benchmark::State& state) {
+    tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
+    const Walkthrough& w = Case();
+    const int variant = static_cast<int>(state.range(0));
+    const OptimizerOptions options = OptionsFor(variant);
+    double wallMs = 0.0, hullMs = 0.0, searchMs = 0.0, refineMs = 0.0, hullVertices = 0.0;
+    for (auto _ : state) {
+        const auto start = std::chrono::steady_clock::now();
+        for (const PerLight& l : w.lights) {
+            if (variant == kFocused) {
+                LightMatrix m = FocusedLightMatrix(w.Context(l.lightSpace));
+                benchmark::DoNotOptimize(m);
+            } else {
+                OptimizerResult r =
+                    OptimizeLightMatrix(l.samples, l.focused.p4, w.scene.shadowMap, options);
+                hullMs += r.hullMs;
+                searchMs += r.searchMs;
+                refineMs += r.refineMs;
+                hullVertices += static_cast<double>(r.hullVertices);
+                benchmark::DoNotOptimize(r);
+            }
+        }
+        wallMs += MsSince(start);
+    }
+    const double calls = static_cast<double>(state.iterations()) * w.lights.size();
+    state.counters["lights"] = static_cast<double>(w.lights.size());
+    state.counters["ms_per_light"] = wallMs / calls;  // wall clock
+    if (variant != kFocused) {
+        state.counters["hull_ms"] = hullMs / calls;
+        state.counters["search_ms"] = searchMs / calls;
+        state.counters["refine_ms"] = refineMs / calls;
+        state.counters["hull_vertices"] = hullVertices / calls;
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(calls));
+}
+BENCHMARK(BM_WalkthroughLightMatrix)
+    ->ArgName("focused0_optimal1_refined2_naive3")
+    ->DenseRange(kFocused, kNaive)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// All four methods light by light in one run (ratios under the same conditions), plus the
+// Table 3-like split on one core.
+void BM_WalkthroughProfile(benchmark::State& state) {
+    tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
+    const Walkthrough& w = Case();
+    double readbackMs = 0.0, samplingMs = 0.0, focusedMs = 0.0;
+    double ms[4] = {0.0, 0.0, 0.0, 0.0};
+    double hullMs = 0.0, searchMs = 0.0, refineMs = 0.0, naiveSearchMs = 0.0;
+    double hullVertices = 0.0, samples = 0.0, boundaryPixels = 0.0, relevant = 0.0;
+    double rejected = 0.0, tried = 0.0;
+    for (auto _ : state) {
+        auto start = std::chrono::steady_clock::now();
+        Readback r = MakeReadback(*w.backend, w.scene.camera, w.scene.readback);
+        benchmark::DoNotOptimize(r.wsRelevant.data());
+        readbackMs += MsSince(start);
+        for (const PerLight& l : w.lights) {
+            // Step 1: standard (focused) map, readback shading, boundary samples.
+            start = std::chrono::steady_clock::now();
+            const ShadowMap map =
+                w.backend->RenderShadowMap(l.lightSpace, l.focused, w.scene.shadowMap);
+            LightSamples s = MakeLightSamples(
+                w.readback, l.lightSpace, w.backend->ShadePixels(w.readback.buffer, l.lightSpace, map));
+            benchmark::DoNotOptimize(s.lsX.data());
+            samplingMs += MsSince(start);
+
+            start = std::chrono::steady_clock::now();
+            LightMatrix focused = FocusedLightMatrix(w.Context(l.lightSpace));
+            benchmark::DoNotOptimize(focused);
+            focusedMs += MsSince(start);
+            for (int variant : {kOptimal, kRefined, kNaive}) {
+                start = std::chrono::steady_clock::now();
+                OptimizerResult o = OptimizeLightMatrix(l.samples, l.focused.p4,
+                                                        w.scene.shadowMap, OptionsFor(variant));
+                ms[variant] += MsSince(start);
+                benchmark::DoNotOptimize(o);
+                if (variant == kOptimal) {
+                    hullMs += o.hullMs;
+                    searchMs += o.searchMs;
+                    hullVertices += static_cast<double>(o.hullVertices);
+                    tried += o.candidatesTried;
+                    rejected += o.candidatesRejected;
+                } else if (variant == kRefined) {
+                    refineMs += o.refineMs;
+                } else {
+                    naiveSearchMs += o.searchMs;
+                }
+            }
+            samples += static_cast<double>(l.samples.lsX.size());
+            boundaryPixels += static_cast<double>(l.samples.boundaryPixels);
+            relevant += static_cast<double>(l.samples.lsRelevant.size());
+        }
+    }
+    ms[kFocused] = focusedMs;
+    const double frames = static_cast<double>(state.iterations());
+    const double calls = frames * w.lights.size();
+    state.counters["readback_ms"] = readbackMs / frames;
+    state.counters["sampling_ms"] = samplingMs / calls;
+    state.counters["focused_ms"] = ms[kFocused] / calls;
+    state.counters["optimal_ms"] = ms[kOptimal] / calls;
+    state.counters["refined_ms"] = ms[kRefined] / calls;
+    state.counters["naive_ms"] = ms[kNaive] / calls;
+    state.counters["optimal_over_focused"] = ms[kOptimal] / ms[kFocused];
+    state.counters["refined_over_focused"] = ms[kRefined] / ms[kFocused];
+    state.counters["naive_over_optimal"] = ms[kNaive] / ms[kOptimal];
+    state.counters["hull_ms"] = hullMs / calls;
+    state.counters["search_ms"] = searchMs / calls;
+    state.counters["refine_ms"] = refineMs / calls;
+    state.counters["naive_search_ms"] = naiveSearchMs / calls;
+    state.counters["hull_vertices"] = hullVertices / calls;
+    state.counters["boundary_samples"] = samples / calls;
+    state.counters["boundary_pixels"] = boundaryPixels / calls;
+    state.counters["relevant_points"] = relevant / calls;
+    state.counters["candidates_tried"] = tried / calls;
+    state.counters["candidates_rejected"] = rejected / calls;
+}
+BENCHMARK(BM_WalkthroughProfile)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
