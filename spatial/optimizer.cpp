@@ -184,7 +184,35 @@ RelevantHull::RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dv
         const double w = glm::dot(p4Reference, X);
         y.emplace_back(glm::dot(b1, X) / w, glm::dot(b2, X) / w);
     }
-    for (const Eigen::Vector2d& v : ConvexHull(y))
+    // Akl–Toussaint pre-filter (S. G. Akl & G. T. Toussaint, "A fast convex hull algorithm",
+    // Information Processing Letters 7(5), 1978): a point strictly inside the quadrilateral of the
+    // four axis extremes cannot be a hull vertex. One O(N) pass leaves only a thin boundary layer
+    // for the O(N log N) sort of the monotone chain. A point is dropped only when the rounded
+    // cross product clears its error bound (1e-14 of the operands' magnitude, far above the few
+    // ulps of rounding), so only points certainly inside go; borderline ones stay for the exact
+    // hull.
+    std::size_t extreme[4] = {0, 0, 0, 0};  // min x, min y, max x, max y
+    for (std::size_t i = 1; i < y.size(); ++i) {
+        if (y[i].x() < y[extreme[0]].x()) extreme[0] = i;
+        if (y[i].y() < y[extreme[1]].y()) extreme[1] = i;
+        if (y[i].x() > y[extreme[2]].x()) extreme[2] = i;
+        if (y[i].y() > y[extreme[3]].y()) extreme[3] = i;
+    }
+    std::vector<Eigen::Vector2d> candidates;
+    candidates.reserve(y.size() / 4 + 4);
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        bool inside = true;  // strictly left of every counter-clockwise quadrilateral edge
+        for (int e = 0; e < 4 && inside; ++e) {
+            const Eigen::Vector2d& a = y[extreme[e]];
+            const Eigen::Vector2d ab = y[extreme[(e + 1) % 4]] - a, ap = y[i] - a;
+            const double cross = ab.x() * ap.y() - ab.y() * ap.x();
+            const double bound = 1e-14 * (std::abs(ab.x()) + std::abs(ab.y())) *
+                                 (std::abs(ap.x()) + std::abs(ap.y()));
+            inside = cross > bound;
+        }
+        if (!inside) candidates.push_back(y[i]);
+    }
+    for (const Eigen::Vector2d& v : ConvexHull(candidates))
         vertices_.push_back(v.x() * b1 + v.y() * b2 + p4Reference);
 }
 

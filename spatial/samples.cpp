@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "solvers/footprint_metrics.h"
+#include "spatial/energy_gradient.h"
 
 namespace lexel::spatial {
 
@@ -107,9 +108,17 @@ double SampleBadness(const LightMatrix& matrix, const glm::dvec3& lsX, const glm
 }
 
 double Energy(const LightMatrix& matrix, const LightSamples& samples) {
+    // The closed form of energy_gradient.h's SampleEnergy (the template Ceres differentiates),
+    // which the search evaluates 27 times per light; SampleBadness is the readable reference.
+    const double p4[3] = {matrix.p4.x, matrix.p4.y, matrix.p4.z};
     double h = 0.0;
-    for (std::size_t k = 0; k < samples.lsX.size(); ++k)
-        h += SampleBadness(matrix, samples.lsX[k], samples.dXdx1[k], samples.dXdx2[k]);
+    for (std::size_t k = 0; k < samples.lsX.size(); ++k) {
+        if (!InFront(matrix.p4, samples.lsX[k])) return std::numeric_limits<double>::infinity();
+        const double f = SampleEnergy(matrix.p1, matrix.p2, p4, samples.lsX[k], samples.dXdx1[k],
+                                      samples.dXdx2[k]);
+        // det(J) = 0 gives S/0 = +inf, or 0/0 when J vanishes: both an unbounded footprint.
+        h += std::isnan(f) ? std::numeric_limits<double>::infinity() : f;
+    }
     return h;
 }
 
