@@ -423,8 +423,9 @@ void BM_WalkthroughProfile(benchmark::State& state) {
             start = std::chrono::steady_clock::now();
             const ShadowMap map =
                 w.backend->RenderShadowMap(l.lightSpace, l.focused, w.scene.shadowMap);
-            LightSamples s = MakeLightSamples(
-                w.readback, l.lightSpace, w.backend->ShadePixels(w.readback.buffer, l.lightSpace, map));
+            LightSamples s =
+                MakeLightSamples(w.readback, l.lightSpace,
+                                 w.backend->ShadePixels(w.readback.buffer, l.lightSpace, map));
             benchmark::DoNotOptimize(s.lsX.data());
             samplingMs += MsSince(start);
 
@@ -434,8 +435,8 @@ void BM_WalkthroughProfile(benchmark::State& state) {
             focusedMs += MsSince(start);
             for (int variant : {kOptimal, kRefined, kNaive}) {
                 start = std::chrono::steady_clock::now();
-                OptimizerResult o = OptimizeLightMatrix(l.samples, l.focused.p4,
-                                                        w.scene.shadowMap, OptionsFor(variant));
+                OptimizerResult o = OptimizeLightMatrix(l.samples, l.focused.p4, w.scene.shadowMap,
+                                                        OptionsFor(variant));
                 ms[variant] += MsSince(start);
                 benchmark::DoNotOptimize(o);
                 if (variant == kOptimal) {

@@ -24,8 +24,12 @@ RasterBuffer MakeRasterBuffer(Resolution resolution) {
     return b;
 }
 
-Shade ShadePoint(const LightSpace& lightSpace, const ShadowMap& map, const glm::dvec3& wsPoint,
-                 const glm::dvec3& wsNormal) {
+namespace {
+
+// ShadePoint with M⁻¹ = (rows p1, p2, p4)⁻¹ given, so a pass inverts it once, not per pixel.
+Shade ShadeWithInverse(const LightSpace& lightSpace, const ShadowMap& map,
+                       const glm::dmat3& lsFromMap, const glm::dvec3& wsPoint,
+                       const glm::dvec3& wsNormal) {
     if (!(glm::dot(wsNormal, lightSpace.DirectionToLight(wsPoint)) > 0.0))
         return Shade::kFacingAway;
     const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
@@ -40,7 +44,7 @@ Shade ShadePoint(const LightSpace& lightSpace, const ShadowMap& map, const glm::
     // Depth of the receiver's plane along the ray through the texel centre. Both ray kinds have
     // unit direction and depth 0 at their origin, so the ray parameter is the linear depth.
     glm::dvec3 wsOrigin, wsDirection;
-    lightSpace.Ray(map.matrix.Unmap({tx + 0.5, ty + 0.5}), &wsOrigin, &wsDirection);
+    lightSpace.Ray(lsFromMap * glm::dvec3(tx + 0.5, ty + 0.5, 1.0), &wsOrigin, &wsDirection);
     const double facing = glm::dot(wsNormal, wsDirection);
     double receiverDepth = lightSpace.Depth(wsPoint);
     if (facing != 0.0) {
@@ -48,6 +52,13 @@ Shade ShadePoint(const LightSpace& lightSpace, const ShadowMap& map, const glm::
         if (t > 0.0 && std::isfinite(t)) receiverDepth = t;
     }
     return stored < receiverDepth * (1.0 - kRelativeBias) ? Shade::kShadowed : Shade::kLit;
+}
+
+}  // namespace
+
+Shade ShadePoint(const LightSpace& lightSpace, const ShadowMap& map, const glm::dvec3& wsPoint,
+                 const glm::dvec3& wsNormal) {
+    return ShadeWithInverse(lightSpace, map, glm::inverse(map.matrix.Rows()), wsPoint, wsNormal);
 }
 
 namespace {
@@ -120,9 +131,11 @@ class CpuRenderer final : public RenderBackend {
     std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                    const ShadowMap& map) const override {
         std::vector<Shade> shades(frame.resolution.Count(), Shade::kEmpty);
+        const glm::dmat3 lsFromMap = glm::inverse(map.matrix.Rows());
         tbb::parallel_for(std::size_t(0), shades.size(), [&](std::size_t i) {
             if (frame.Covered(i))
-                shades[i] = ShadePoint(lightSpace, map, frame.wsPosition[i], frame.wsNormal[i]);
+                shades[i] = ShadeWithInverse(lightSpace, map, lsFromMap, frame.wsPosition[i],
+                                             frame.wsNormal[i]);
         });
         return shades;
     }

@@ -45,8 +45,8 @@ glm::dvec3 EnergyGradientJets(const LightMatrix& m, const LightSamples& samples)
     glm::dvec3 grad(0.0);
     for (std::size_t s = 0; s < samples.lsX.size(); ++s) {
         if (!InFront(m.p4, samples.lsX[s])) continue;
-        const Jet f =
-            SampleEnergy(m.p1, m.p2, p4, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s]);
+        const Jet f = SampleEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4, samples.lsX[s],
+                                   samples.dXdx1[s], samples.dXdx2[s]);
         if (!std::isfinite(f.a)) continue;
         grad += glm::dvec3(f.v[0], f.v[1], f.v[2]);
     }

@@ -14,25 +14,31 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "spatial/light_matrix.h"
 #include "spatial/samples.h"
 
 namespace lexel::spatial {
 
-// ||J⁻¹||_F² of one sample for rows p1, p2 (double) and axis p4 (T: double or a Ceres Jet).
-template <typename T>
-T SampleEnergy(const glm::dvec3& p1, const glm::dvec3& p2, const T* p4, const glm::dvec3& lsX,
+// ||J⁻¹||_F² of one sample for rows p1, p2 (R) and axis p4 (T), each a pointer to 3 scalars.
+// R and T are double or a Ceres Jet: the gradient differentiates p4 alone (R = double), the
+// refinement also the re-fitted rows (R = T).
+template <typename R, typename T>
+T SampleEnergy(const R* p1, const R* p2, const T* p4, const glm::dvec3& lsX,
                const glm::dvec3& dXdx1, const glm::dvec3& dXdx2) {
-    const T w = p4[0] * lsX.x + p4[1] * lsX.y + p4[2] * lsX.z;
-    const T wD1 = p4[0] * dXdx1.x + p4[1] * dXdx1.y + p4[2] * dXdx1.z;
-    const T wD2 = p4[0] * dXdx2.x + p4[1] * dXdx2.y + p4[2] * dXdx2.z;
-    const double a1 = glm::dot(p1, lsX), a2 = glm::dot(p2, lsX);
+    const auto dot = [](const auto* p, const glm::dvec3& v) {
+        return p[0] * v.x + p[1] * v.y + p[2] * v.z;
+    };
+    const T w = dot(p4, lsX);
+    const T wD1 = dot(p4, dXdx1);
+    const T wD2 = dot(p4, dXdx2);
+    const R a1 = dot(p1, lsX), a2 = dot(p2, lsX);
     const T invW = T(1.0) / w;
-    const T j11 = (glm::dot(p1, dXdx1) - a1 * wD1 * invW) * invW;
-    const T j12 = (glm::dot(p1, dXdx2) - a1 * wD2 * invW) * invW;
-    const T j21 = (glm::dot(p2, dXdx1) - a2 * wD1 * invW) * invW;
-    const T j22 = (glm::dot(p2, dXdx2) - a2 * wD2 * invW) * invW;
+    const T j11 = (dot(p1, dXdx1) - a1 * wD1 * invW) * invW;
+    const T j12 = (dot(p1, dXdx2) - a1 * wD2 * invW) * invW;
+    const T j21 = (dot(p2, dXdx1) - a2 * wD1 * invW) * invW;
+    const T j22 = (dot(p2, dXdx2) - a2 * wD2 * invW) * invW;
     const T det = j11 * j22 - j12 * j21;
     return (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22) / (det * det);
 }

@@ -1,6 +1,7 @@
 #include "spatial/evaluation.h"
 
 #include <chrono>
+#include <span>
 
 #include "solvers/errors.h"
 #include "spatial/methods.h"
@@ -45,16 +46,33 @@ std::vector<std::uint8_t> Evaluator::TraceTruth(const LightSpace& lightSpace) co
     return truth;
 }
 
+namespace {
+
+// Counted pixels (a method shades exactly those lit or shadowed: ShadePoint's facing test is the
+// counting rule) whose decision differs from the rays'; `falseShadow` gets the lit ones it shadows.
+std::int64_t CountWrong(std::span<const Shade> shades, std::span<const std::uint8_t> truth,
+                        std::int64_t* falseShadow) {
+    std::int64_t wrong = 0, shadowWrong = 0;
+    for (std::size_t i = 0; i < shades.size(); ++i) {
+        if (shades[i] != Shade::kLit && shades[i] != Shade::kShadowed) continue;
+        const bool shadowed = shades[i] == Shade::kShadowed;
+        if (shadowed != static_cast<bool>(truth[i])) {
+            ++wrong;
+            shadowWrong += shadowed;
+        }
+    }
+    if (falseShadow) *falseShadow = shadowWrong;
+    return wrong;
+}
+
+}  // namespace
+
 std::int64_t Evaluator::Misclassified(const Light& light, const LightMatrix& matrix) const {
     const LightSpace lightSpace(light, bounds_);
-    const std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
-    const std::vector<Shade> shades = backend_.ShadePixels(
-        frame_, lightSpace, backend_.RenderShadowMap(lightSpace, matrix, scene_.shadowMap));
-    std::int64_t wrong = 0;
-    for (std::size_t i = 0; i < shades.size(); ++i)
-        if (shades[i] == Shade::kLit || shades[i] == Shade::kShadowed)
-            wrong += (shades[i] == Shade::kShadowed) != static_cast<bool>(truth[i]);
-    return wrong;
+    return CountWrong(
+        backend_.ShadePixels(frame_, lightSpace,
+                             backend_.RenderShadowMap(lightSpace, matrix, scene_.shadowMap)),
+        TraceTruth(lightSpace), nullptr);
 }
 
 LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& options) const {
@@ -69,35 +87,21 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     context.baseline.wsRelevant = readback_.wsRelevant;
 
     // Step 1 of Algorithm 1: boundary samples from a standard (focused) shadow map.
-    const ShadowMap standardMap = backend_.RenderShadowMap(
-        lightSpace, FocusedLightMatrix(context.baseline), scene_.shadowMap);
+    const LightMatrix focused = FocusedLightMatrix(context.baseline);
+    const ShadowMap standardMap = backend_.RenderShadowMap(lightSpace, focused, scene_.shadowMap);
     out.samples = MakeLightSamples(readback_, lightSpace,
                                    backend_.ShadePixels(readback_.buffer, lightSpace, standardMap));
     context.samples = &out.samples;
 
-    // Which frame pixels count, and the truth there.
+    // The counted frame pixels (covered, facing the light) and the truth there.
     std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
-    std::vector<std::uint8_t> counted(frame_.triangle.size(), 0);
-    for (std::size_t i = 0; i < counted.size(); ++i) {
+    for (std::size_t i = 0; i < truth.size(); ++i) {
         if (!frame_.Covered(i)) continue;
-        counted[i] =
+        const bool counted =
             glm::dot(frame_.wsNormal[i], lightSpace.DirectionToLight(frame_.wsPosition[i])) > 0.0;
-        out.receiverPixels += counted[i];
-        out.truthShadowed += counted[i] && truth[i];
+        out.receiverPixels += counted;
+        out.truthShadowed += counted && truth[i];
     }
-    const auto countWrong = [&](const std::vector<Shade>& shades, std::int64_t* falseShadow) {
-        std::int64_t wrong = 0, shadowWrong = 0;
-        for (std::size_t i = 0; i < shades.size(); ++i) {
-            if (!counted[i]) continue;
-            const bool shadowed = shades[i] != Shade::kLit;
-            if (shadowed != static_cast<bool>(truth[i])) {
-                ++wrong;
-                shadowWrong += shadowed;
-            }
-        }
-        if (falseShadow) *falseShadow = shadowWrong;
-        return wrong;
-    };
 
     if (options.mapTruth) {
         const Resolution size{options.truthMapSize, options.truthMapSize};
@@ -105,10 +109,10 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
         glm::dmat3 toTruth(1.0);
         toTruth[0][0] = static_cast<double>(size.width) / scene_.shadowMap.width;
         toTruth[1][1] = static_cast<double>(size.height) / scene_.shadowMap.height;
-        const ShadowMap truthMap = backend_.RenderShadowMap(
-            lightSpace, FocusedLightMatrix(context.baseline).ThenAffine(toTruth), size);
+        const ShadowMap truthMap =
+            backend_.RenderShadowMap(lightSpace, focused.ThenAffine(toTruth), size);
         out.mapTruthDisagree =
-            countWrong(backend_.ShadePixels(frame_, lightSpace, truthMap), nullptr);
+            CountWrong(backend_.ShadePixels(frame_, lightSpace, truthMap), truth, nullptr);
     }
 
     for (const std::string& method : options.methods) {
@@ -125,7 +129,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
         }
         ShadowMap map = backend_.RenderShadowMap(lightSpace, m.matrix, scene_.shadowMap);
         std::vector<Shade> shades = backend_.ShadePixels(frame_, lightSpace, map);
-        m.misclassified = countWrong(shades, &m.falseShadow);
+        m.misclassified = CountWrong(shades, truth, &m.falseShadow);
         m.h = Energy(m.matrix, out.samples);
         if (options.keepBuffers) {
             m.shades = std::move(shades);

@@ -81,12 +81,15 @@ bool InFront(const glm::dvec3& p4, const glm::dvec3& lsX) {
     return glm::dot(p4, lsX) > 1e-9 * glm::length(lsX);
 }
 
-void PlaneBasis(const glm::dvec3& p4, glm::dvec3* b1, glm::dvec3* b2) {
+glm::dvec3 PlaneBasisHelper(const glm::dvec3& p4) {
     const glm::dvec3 a = glm::abs(p4);
-    const glm::dvec3 helper = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
-                              : (a.y <= a.z)             ? glm::dvec3(0, 1, 0)
-                                                         : glm::dvec3(0, 0, 1);
-    *b1 = glm::normalize(glm::cross(helper, p4));
+    return (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
+           : (a.y <= a.z)             ? glm::dvec3(0, 1, 0)
+                                      : glm::dvec3(0, 0, 1);
+}
+
+void PlaneBasis(const glm::dvec3& p4, glm::dvec3* b1, glm::dvec3* b2) {
+    *b1 = glm::normalize(glm::cross(PlaneBasisHelper(p4), p4));
     *b2 = glm::cross(p4, *b1);
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "solvers/errors.h"
+#include "spatial/light_matrix.h"
 
 namespace lexel::spatial {
 namespace {
@@ -15,17 +16,6 @@ std::string Vec(const glm::dvec3& v) {
 
 bool Finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-// A right-handed orthonormal frame with third axis `axis` (unit). The helper axis is the world
-// axis least aligned with `axis`, so the frame is stable and never degenerate.
-void FrameAround(const glm::dvec3& axis, glm::dvec3* e1, glm::dvec3* e2) {
-    const glm::dvec3 a = glm::abs(axis);
-    const glm::dvec3 helper = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
-                              : (a.y <= a.z)             ? glm::dvec3(0, 1, 0)
-                                                         : glm::dvec3(0, 0, 1);
-    *e1 = glm::normalize(glm::cross(helper, axis));
-    *e2 = glm::cross(axis, *e1);
 }
 
 }  // namespace
@@ -51,7 +41,7 @@ LightSpace::LightSpace(const Light& light, const Bounds& wsBounds) : light_(ligh
         origin_ = wsBounds.Center();
         s_ = 2.0 * std::max(wsBounds.Radius(), 1e-9);
     }
-    FrameAround(e3_, &e1_, &e2_);
+    PlaneBasis(e3_, &e1_, &e2_);  // right-handed: e1 × e2 = e3
 }
 
 glm::dvec3 LightSpace::ToLight(const glm::dvec3& wsPoint) const {

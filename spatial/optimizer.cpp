@@ -91,10 +91,7 @@ struct RefinedEnergy {
         glm::dvec3 b1d, b2d;
         PlaneBasis(p4d, &b1d, &b2d);
         // b1 = normalize(helper × p4), b2 = p4 × b1, with the same helper axis as PlaneBasis.
-        const glm::dvec3 a = glm::abs(p4d);
-        const glm::dvec3 helper = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
-                                  : (a.y <= a.z)             ? glm::dvec3(0, 1, 0)
-                                                             : glm::dvec3(0, 0, 1);
+        const glm::dvec3 helper = PlaneBasisHelper(p4d);
         const T h[3] = {T(helper.x), T(helper.y), T(helper.z)};
         T b1[3], b2[3];
         Cross(h, p4, b1);
@@ -141,29 +138,17 @@ struct RefinedEnergy {
         const T kU = T(0.5 * map.width) / halfU, kV = T(0.5 * map.height) / halfV;
         const T cU = T(0.5) * (loU + hiU), cV = T(0.5) * (loV + hiV);
         // p1 = (W/2 - kU cU) p4 + kU (u.x b1 + u.y b2); p2 likewise (light_matrix.cpp).
-        // SampleEnergy takes double p1, p2, so evaluate J by hand here for any T.
         T p1[3], p2[3];
         for (int c = 0; c < 3; ++c) {
             p1[c] = (T(0.5 * map.width) - kU * cU) * p4[c] + kU * (u[0] * b1[c] + u[1] * b2[c]);
             p2[c] = (T(0.5 * map.height) - kV * cV) * p4[c] + kV * (v[0] * b1[c] + v[1] * b2[c]);
         }
         T total(0.0);
-        const auto dot = [](const T* p, const glm::dvec3& x) {
-            return p[0] * x.x + p[1] * x.y + p[2] * x.z;
-        };
         for (std::size_t k = 0; k < samples->lsX.size(); ++k) {
             const glm::dvec3& X = samples->lsX[k];
-            const T w = dot(p4, X);
-            if (!(ceres::internal::AsScalar(w) > 0.0)) return false;
-            const T invW = T(1.0) / w;
-            const T a1 = dot(p1, X), a2 = dot(p2, X);
-            const T wD1 = dot(p4, samples->dXdx1[k]), wD2 = dot(p4, samples->dXdx2[k]);
-            const T j11 = (dot(p1, samples->dXdx1[k]) - a1 * wD1 * invW) * invW;
-            const T j12 = (dot(p1, samples->dXdx2[k]) - a1 * wD2 * invW) * invW;
-            const T j21 = (dot(p2, samples->dXdx1[k]) - a2 * wD1 * invW) * invW;
-            const T j22 = (dot(p2, samples->dXdx2[k]) - a2 * wD2 * invW) * invW;
-            const T det = j11 * j22 - j12 * j21;
-            total += (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22) / (det * det);
+            if (!(ceres::internal::AsScalar(p4[0] * X.x + p4[1] * X.y + p4[2] * X.z) > 0.0))
+                return false;
+            total += SampleEnergy(p1, p2, p4, X, samples->dXdx1[k], samples->dXdx2[k]);
         }
         *energy = total;
         return ceres::internal::AsScalar(total) < std::numeric_limits<double>::infinity();

@@ -12,7 +12,6 @@ namespace lexel::spatial {
 
 Readback MakeReadback(const RenderBackend& backend, const Camera& camera, Resolution resolution) {
     Readback rb;
-    rb.camera = camera;
     rb.buffer = backend.RenderCamera(camera, resolution);
     const CameraBuffer& buf = rb.buffer;
     const std::size_t n = resolution.Count();
@@ -114,8 +113,8 @@ double Energy(const LightMatrix& matrix, const LightSamples& samples) {
     double h = 0.0;
     for (std::size_t k = 0; k < samples.lsX.size(); ++k) {
         if (!InFront(matrix.p4, samples.lsX[k])) return std::numeric_limits<double>::infinity();
-        const double f = SampleEnergy(matrix.p1, matrix.p2, p4, samples.lsX[k], samples.dXdx1[k],
-                                      samples.dXdx2[k]);
+        const double f = SampleEnergy(glm::value_ptr(matrix.p1), glm::value_ptr(matrix.p2), p4,
+                                      samples.lsX[k], samples.dXdx1[k], samples.dXdx2[k]);
         // det(J) = 0 gives S/0 = +inf, or 0/0 when J vanishes: both an unbounded footprint.
         h += std::isnan(f) ? std::numeric_limits<double>::infinity() : f;
     }

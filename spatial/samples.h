@@ -37,7 +37,6 @@ inline constexpr double kDepthNoise = 1e-12;  // window-depth units: rounding of
 
 // The readback of one camera pose: the camera pass plus per-pixel world-space screen derivatives.
 struct Readback {
-    Camera camera;
     CameraBuffer buffer;
     std::vector<glm::dvec3> dWdx1, dWdx2;  // ∂W/∂x¹, ∂W/∂x² (world units per readback pixel)
     std::vector<std::uint8_t> smooth;      // 1 where the derivatives are reliable

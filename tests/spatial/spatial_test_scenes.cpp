@@ -2,29 +2,21 @@
 
 #include <algorithm>
 
+#include "spatial/primitives.h"
+
 namespace lexel::spatial::testing {
 
 TriangleMesh FloorQuad(double h) {
-    TriangleMesh m;
-    const float f = static_cast<float>(h);
-    m.positions = {{-f, 0, -f}, {f, 0, -f}, {f, 0, f}, {-f, 0, f}};
-    m.triangles = {{0, 2, 1}, {0, 3, 2}};  // counter-clockwise seen from +y
-    return m;
+    Transform t;
+    t.scale = {2.0 * h, 1.0, 2.0 * h};
+    return TransformMesh(MakePlane(), t);
 }
 
 TriangleMesh BoxMesh(const glm::dvec3& lo, const glm::dvec3& hi) {
-    TriangleMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.positions.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y,
-                                 (i & 4) ? hi.z : lo.z);
-    // Faces as quads (a, b, c, d) counter-clockwise seen from outside.
-    const unsigned quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
-                                  {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-    for (const auto& q : quads) {
-        m.triangles.push_back({q[0], q[1], q[2]});
-        m.triangles.push_back({q[0], q[2], q[3]});
-    }
-    return m;
+    Transform t;
+    t.translate = 0.5 * (lo + hi);
+    t.scale = hi - lo;
+    return TransformMesh(MakeBox(), t);
 }
 
 bool SegmentHitsBox(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& lo,
