@@ -155,6 +155,21 @@ struct RefinedEnergy {
     }
 };
 
+// h / h0: LBFGS's first line search tries a unit step along −∇, a rotation of |∇| radians, so the
+// objective is scaled to O(1) at the start (h itself is in the thousands to millions, and an
+// unscaled first step leaves the valid cone and fails the line search).
+struct ScaledRefinedEnergy {
+    RefinedEnergy energy;
+    double scale;  // 1 / h0
+
+    template <typename T>
+    bool operator()(const T* p4, T* value) const {
+        if (!energy(p4, value)) return false;
+        *value *= T(scale);
+        return true;
+    }
+};
+
 }  // namespace
 
 RelevantHull::RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dvec3& p4Reference) {
@@ -278,12 +293,19 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
         std::vector<glm::dvec3> vertices(hull->Vertices().begin(), hull->Vertices().end());
         double x[3] = {p4.x, p4.y, p4.z};
         ceres::GradientProblem problem(
-            new ceres::AutoDiffFirstOrderFunction<RefinedEnergy, 3>(
-                new RefinedEnergy{&vertices, &samples, map, options.margin}),
+            new ceres::AutoDiffFirstOrderFunction<ScaledRefinedEnergy, 3>(new ScaledRefinedEnergy{
+                RefinedEnergy{&vertices, &samples, map, options.margin}, 1.0 / bestH}),
             new ceres::SphereManifold<3>());
         ceres::GradientProblemSolver::Options solverOptions;
         solverOptions.max_num_iterations = options.refineIterations;
         solverOptions.logging_type = ceres::SILENT;
+        // Run to the iteration limit or a stationary point: h/h0 changes of 1e-12 still move p4
+        // by ~1e-6 rad near a flat minimum (the default 1e-6 stops ~1e-3 rad short).
+        solverOptions.function_tolerance = 1e-12;
+        // The Wolfe line search grows a decreasing step by this factor (default 10): on the
+        // sphere a step of a few radians wraps around and lands outside the valid cone, which the
+        // zoom phase cannot recover from. Tripling keeps the bracket within a fraction of a turn.
+        solverOptions.max_line_search_step_expansion = 3.0;
         ceres::GradientProblemSolver::Summary summary;
         ceres::Solve(solverOptions, problem, x, &summary);
         const glm::dvec3 refined = glm::normalize(glm::dvec3(x[0], x[1], x[2]));
