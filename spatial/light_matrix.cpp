@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "solvers/errors.h"
+#include "solvers/min_area_parallelogram.h"
 #include "solvers/min_area_rectangle.h"
 
 namespace lexel::spatial {
@@ -93,12 +94,43 @@ void PlaneBasis(const glm::dvec3& p4, glm::dvec3* b1, glm::dvec3* b2) {
     *b2 = glm::cross(p4, *b1);
 }
 
+namespace {
+
+// FitMapToPlanePoints with options.shear: the same construction around the minimum-area
+// parallelogram. A parallelogram point is y = c + a axisU + b axisV with a = dualU·(y - c),
+// b = dualV·(y - c) (Parallelogram2::DualAxes), so u1 = W/2 + W/(2 halfU) dualU·(y - c): the
+// rectangle's formula with the dual axes in place of the (self-dual) orthonormal ones.
+std::optional<LightMatrix> FitParallelogram(const glm::dvec3& p4,
+                                            std::span<const Eigen::Vector2d> planePoints,
+                                            Resolution map, const FitOptions& options) {
+    const Parallelogram2 par =
+        OrientLongSideAlong(MinAreaParallelogram(planePoints), map.width >= map.height);
+    // Zero extents only come from degenerate hulls (an unsheared rectangle): the same sliver.
+    const double longest = std::max({par.halfU, par.halfV, 1e-300});
+    const double halfU = std::max(par.halfU, 1e-9 * longest) * (1.0 + options.margin);
+    const double halfV = std::max(par.halfV, 1e-9 * longest) * (1.0 + options.margin);
+    const auto [dualU, dualV] = par.DualAxes();
+    glm::dvec3 b1, b2;
+    PlaneBasis(p4, &b1, &b2);
+    const double kU = 0.5 * map.width / halfU, kV = 0.5 * map.height / halfV;
+    LightMatrix m;
+    m.p4 = p4;
+    m.p1 = (0.5 * map.width - kU * dualU.dot(par.center)) * p4 +
+           kU * (dualU.x() * b1 + dualU.y() * b2);
+    m.p2 = (0.5 * map.height - kV * dualV.dot(par.center)) * p4 +
+           kV * (dualV.x() * b1 + dualV.y() * b2);
+    return m;
+}
+
+}  // namespace
+
 std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
                                                std::span<const glm::dvec2> planePoints,
                                                Resolution map, const FitOptions& options) {
     if (planePoints.empty()) return std::nullopt;
     std::vector<Eigen::Vector2d> pts(planePoints.size());
     for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = {planePoints[i].x, planePoints[i].y};
+    if (options.shear) return FitParallelogram(p4, pts, map, options);
     Rectangle2 rect = MinAreaRectangle(pts);
     rect = OrientLongSideAlong(rect, map.width >= map.height);
     // A zero extent (all points collinear or equal) gets a sliver so the map stays invertible.

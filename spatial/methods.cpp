@@ -5,7 +5,8 @@
 namespace lexel::spatial {
 
 std::vector<std::string> SpatialMethodNames() {
-    return {"optimal", "focused", "lispsm", "plane-optimal", "normal", "psm", "optimal-refined"};
+    return {"optimal", "focused", "lispsm",          "plane-optimal",
+            "normal",  "psm",     "optimal-refined", "optimal-shear"};
 }
 
 void CheckSpatialMethod(std::string_view name) {
@@ -24,10 +25,11 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
     if (name == "lispsm") return {LispsmLightMatrix(context.baseline), std::nullopt};
     if (name == "psm") return {PsmLightMatrix(context.baseline), std::nullopt};
     if (name == "plane-optimal") return {PlaneOptimalLightMatrix(context.baseline), std::nullopt};
-    if (name == "optimal" || name == "optimal-refined") {
+    if (name == "optimal" || name == "optimal-refined" || name == "optimal-shear") {
         if (!context.samples) throw InputError("internal: optimal needs the light's samples");
         OptimizerOptions options;
         options.refine = name == "optimal-refined";
+        options.shear = name == "optimal-shear";
         const glm::dvec3 initialP4 = FocusedLightMatrix(context.baseline).p4;
         OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4,
                                                 context.baseline.scene->shadowMap, options);

@@ -23,9 +23,11 @@ struct MethodContext {
 std::vector<std::string> SpatialMethodNames();
 // Throws InputError naming the unknown method and listing the known ones.
 void CheckSpatialMethod(std::string_view name);
-// The matrix, and for `optimal` / `optimal-refined` the optimizer's trace (h per iteration, time
-// profile). `optimal` is Algorithm 1 as published (initial axis: focused's); `optimal-refined`
-// adds the Ceres refinement on the unit sphere.
+// The matrix, and for `optimal`, `optimal-refined` and `optimal-shear` the optimizer's trace (h
+// per iteration, time profile). `optimal` is Algorithm 1 as published (initial axis: focused's)
+// without the optional affine shear; `optimal-refined` adds the Ceres refinement on the unit
+// sphere; `optimal-shear` is Algorithm 1 with the shear (report Fig. 3, optimized exactly:
+// FitOptions::shear), no refinement.
 struct MethodMatrix {
     LightMatrix matrix;
     std::optional<OptimizerResult> optimizer;

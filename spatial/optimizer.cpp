@@ -9,6 +9,7 @@
 
 #include "solvers/convex_hull.h"
 #include "solvers/errors.h"
+#include "solvers/min_area_parallelogram.h"
 #include "spatial/energy_gradient.h"
 
 namespace lexel::spatial {
@@ -28,15 +29,37 @@ void Cross(const T* a, const T* b, T* out) {
 }
 
 // The combinatorics of a minimum-area rectangle around projected hull vertices: the flush edge
-// (a → b) and the vertices extreme along and across it.
+// (a → b) and the vertices extreme along and across it. With the shear (FitOptions::shear) the
+// parallelogram's: the shear k* = (u·(y_i - y_j)) / (v·(y_j - y_i)) from the adjacent hull
+// vertices i, j that tie at it (shearI = -1: k* = 0), minU and maxU extreme in the sheared
+// coordinate (u + k* v)·y, minV = a (the edge's line) and maxV the vertex farthest from it.
 struct RectangleStructure {
     int a, b, minU, maxU, minV, maxV;
     bool swapAxes;  // the long side must go on the other map axis
+    int shearI = -1, shearJ = -1;
 };
+
+// The minimum-area parallelogram's structure, from the solver itself
+// (MinAreaParallelogramOfHull), so that ties and the choice of k* are the fit's exactly.
+std::optional<RectangleStructure> FindShearedStructure(const std::vector<Eigen::Vector2d>& hull,
+                                                       const std::vector<int>& index,
+                                                       Resolution map) {
+    ParallelogramStructure ps;
+    const Parallelogram2 par = MinAreaParallelogramOfHull(hull, &ps);
+    if (ps.edge < 0) return std::nullopt;
+    const auto at = [&](int k) { return index[static_cast<std::size_t>(k) % index.size()]; };
+    RectangleStructure s{at(ps.edge), at(ps.edge + 1), at(ps.minS), at(ps.maxS),
+                         at(ps.edge), at(ps.top),      false};
+    // As OrientLongSideAlong(Parallelogram2): side lengths, not extents.
+    s.swapAxes = map.width >= map.height ? par.halfU < par.halfV : par.halfV < par.halfU;
+    if (ps.shearEdge >= 0) s.shearI = at(ps.shearEdge), s.shearJ = at(ps.shearEdge + 1);
+    return s;
+}
 
 // Brute-force rotating calipers over h vertices (h is small): the minimum-area rectangle's
 // structure, ties to the first edge as in solvers/min_area_rectangle.
-std::optional<RectangleStructure> FindStructure(const std::vector<glm::dvec2>& y, Resolution map) {
+std::optional<RectangleStructure> FindStructure(const std::vector<glm::dvec2>& y, Resolution map,
+                                                bool shear) {
     std::vector<Eigen::Vector2d> pts(y.size());
     for (std::size_t i = 0; i < y.size(); ++i) pts[i] = {y[i].x, y[i].y};
     const std::vector<Eigen::Vector2d> hull = ConvexHull(pts);
@@ -48,6 +71,7 @@ std::optional<RectangleStructure> FindStructure(const std::vector<glm::dvec2>& y
                 index[k] = static_cast<int>(i);
                 break;
             }
+    if (shear) return FindShearedStructure(hull, index, map);
     std::optional<RectangleStructure> best;
     double bestArea = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < hull.size(); ++k) {
@@ -76,10 +100,22 @@ std::optional<RectangleStructure> FindStructure(const std::vector<glm::dvec2>& y
 // h(fit(p4)) for the hull vertices and samples, differentiable in p4 through the fit for a fixed
 // rectangle structure (FitMapToPlanePoints written for any scalar type).
 struct RefinedEnergy {
+    RefinedEnergy(const std::vector<glm::dvec3>* vertices, const LightSamples* samples,
+                  Resolution map, double margin)
+        : vertices(vertices), samples(samples), map(map), margin(margin) {}
+    RefinedEnergy(const std::vector<glm::dvec3>* vertices, const LightSamples* samples,
+                  Resolution map, const FitOptions& options)
+        : vertices(vertices),
+          samples(samples),
+          map(map),
+          margin(options.margin),
+          shear(options.shear) {}
+
     const std::vector<glm::dvec3>* vertices;
     const LightSamples* samples;
     Resolution map;
     double margin;
+    bool shear = false;
 
     template <typename T>
     bool operator()(const T* p4, T* energy) const {
@@ -105,7 +141,7 @@ struct RefinedEnergy {
             const double w = glm::dot(p4d, v);
             yd[i] = {glm::dot(b1d, v) / w, glm::dot(b2d, v) / w};
         }
-        const std::optional<RectangleStructure> s = FindStructure(yd, map);
+        const std::optional<RectangleStructure> s = FindStructure(yd, map, shear);
         if (!s) return false;
         const auto project = [&](int i, T* y) {
             const glm::dvec3& v = (*vertices)[i];
@@ -125,6 +161,17 @@ struct RefinedEnergy {
         u[0] /= un;
         u[1] /= un;
         T v[2] = {-u[1], u[0]};
+        if (s->shearI >= 0) {
+            // k* = u·(y_i - y_j) / v·(y_j - y_i): vertices i, j tie in (u + k v)·y. The map row
+            // along the edge reads that sheared coordinate (FitMapToPlanePoints with shear).
+            T yi[2], yj[2];
+            project(s->shearI, yi);
+            project(s->shearJ, yj);
+            const T k = (u[0] * (yi[0] - yj[0]) + u[1] * (yi[1] - yj[1])) /
+                        (v[0] * (yj[0] - yi[0]) + v[1] * (yj[1] - yi[1]));
+            u[0] += k * v[0];
+            u[1] += k * v[1];
+        }
         T loU = u[0] * y[0][0] + u[1] * y[0][1], hiU = u[0] * y[1][0] + u[1] * y[1][1];
         T loV = v[0] * y[2][0] + v[1] * y[2][1], hiV = v[0] * y[3][0] + v[1] * y[3][1];
         if (s->swapAxes) {  // +90° turn of the frame, as OrientLongSideAlong
@@ -171,6 +218,26 @@ struct ScaledRefinedEnergy {
 };
 
 }  // namespace
+
+std::optional<double> RefinedObjective(std::span<const glm::dvec3> vertices,
+                                       const LightSamples& samples, const glm::dvec3& p4,
+                                       Resolution map, const FitOptions& options,
+                                       glm::dvec3* gradient) {
+    const std::vector<glm::dvec3> copy(vertices.begin(), vertices.end());
+    const RefinedEnergy energy(&copy, &samples, map, options);
+    if (!gradient) {
+        double h = 0.0;
+        const double x[3] = {p4.x, p4.y, p4.z};
+        if (!energy(x, &h)) return std::nullopt;
+        return h;
+    }
+    using Jet = ceres::Jet<double, 3>;
+    const Jet x[3] = {Jet(p4.x, 0), Jet(p4.y, 1), Jet(p4.z, 2)};
+    Jet h;
+    if (!energy(x, &h)) return std::nullopt;
+    *gradient = {h.v[0], h.v[1], h.v[2]};
+    return h.a;
+}
 
 RelevantHull::RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dvec3& p4Reference) {
     if (lsRelevant.empty()) throw InputError("optimizer: no relevant points");
@@ -230,7 +297,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
                                     Resolution map, const OptimizerOptions& options) {
     if (samples.lsRelevant.empty()) throw InputError("optimizer: no relevant points");
     OptimizerResult r;
-    const FitOptions fitOptions{options.margin};
+    const FitOptions fitOptions{options.margin, options.shear};
 
     auto start = std::chrono::steady_clock::now();
     std::optional<RelevantHull> hull;

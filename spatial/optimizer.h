@@ -46,6 +46,12 @@ struct OptimizerOptions {
     bool hullOnce = true;  // false: re-fit from all relevant points per candidate (reference path)
     bool refine = false;   // optimal-refined
     int refineIterations = 40;
+    // The report's affine shear (§2.3, Fig. 3), optimized exactly: every candidate's affine part
+    // from the minimum-area enclosing parallelogram (FitOptions::shear, light_matrix.h).
+    // `optimal-shear`. Combined with `refine`, the refined axis is fitted with the shear but the
+    // Ceres objective is still built from the margin alone (the rectangle); the objective itself
+    // supports the shear (RefinedObjective), it is just not passed the FitOptions there yet.
+    bool shear = false;
 };
 
 struct OptimizerResult {
@@ -81,5 +87,16 @@ glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& unitAxis, double a
 // have no relevant points.
 OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
                                     Resolution map, const OptimizerOptions& options = {});
+
+// The refinement's objective, exposed so that tests can hold it to its definition: h of
+// FitMapToPoints(p4, vertices, map, options), computed by the scalar-generic re-implementation of
+// the fit that the Ceres refinement differentiates (the fit's combinatorial structure, found at
+// p4 in double, held fixed). With `gradient`, also ∂h/∂p4 through the fit by automatic
+// differentiation (ceres::Jet). nullopt where the objective is undefined: a vertex or sample not
+// in front of p4, or fewer than 3 projected hull vertices.
+std::optional<double> RefinedObjective(std::span<const glm::dvec3> vertices,
+                                       const LightSamples& samples, const glm::dvec3& p4,
+                                       Resolution map, const FitOptions& options,
+                                       glm::dvec3* gradient = nullptr);
 
 }  // namespace lexel::spatial

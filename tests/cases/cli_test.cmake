@@ -67,7 +67,7 @@ endif()
 
 # ---- 3D cases: lexel run and lexel sweep on a small floor-and-box scene ----
 set(small "${DATA}/spatial_small.json")
-set(methods3d optimal focused lispsm plane-optimal normal psm optimal-refined)
+set(methods3d optimal focused lispsm plane-optimal normal psm optimal-refined optimal-shear)
 
 # Asserts that a JSON value is a non-negative integer (string(JSON) reads numbers as text).
 function(expect_count json what)
@@ -77,7 +77,7 @@ function(expect_count json what)
 endfunction()
 
 # The table lists every method, in the registry's order.
-expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\nmethod +misclassified[^\n]*\n-+\noptimal [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\npsm [^\n]*\noptimal-refined "
+expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\nmethod +misclassified[^\n]*\n-+\noptimal [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\npsm [^\n]*\noptimal-refined [^\n]*\noptimal-shear "
            "^$" run "${small}")
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" run "${small}" --format json)
 string(JSON nLights LENGTH "${lastStdout}" lights)
@@ -85,7 +85,7 @@ string(JSON nMethods LENGTH "${lastStdout}" lights 0 methods)
 string(JSON method0 GET "${lastStdout}" lights 0 methods 0 method)
 string(JSON wrong0 GET "${lastStdout}" lights 0 methods 0 misclassified)
 string(JSON receivers GET "${lastStdout}" lights 0 receiver_pixels)
-if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 7 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
+if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 8 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
     message(FATAL_ERROR "unexpected 3D JSON document:\n${lastStdout}")
 endif()
 math(EXPR last "${nMethods} - 1")
@@ -102,7 +102,7 @@ expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms\n0,optim
            "^$" run "${small}" --format csv --method optimal --method normal --no-map-truth)
 
 # --out writes the report and three images per light and method.
-expect_run(0 "^light 0" "^lexel: wrote 21 images and spatial_small.json/.csv to [^\n]*\n$"
+expect_run(0 "^light 0" "^lexel: wrote 24 images and spatial_small.json/.csv to [^\n]*\n$"
            run "${small}" --out "${WORK}/out3d")
 foreach(file spatial_small.json spatial_small.csv)
     if(NOT EXISTS "${WORK}/out3d/${file}")
@@ -132,11 +132,11 @@ string(JSON sweepCase GET "${lastStdout}" case)
 string(JSON sweepLights GET "${lastStdout}" lights)
 string(JSON nMethods LENGTH "${lastStdout}" methods)
 string(JSON nWorst LENGTH "${lastStdout}" worst_10_percent)
-if(NOT sweepCase STREQUAL "spatial_small" OR NOT sweepLights EQUAL 3 OR NOT nMethods EQUAL 7
-   OR NOT nWorst EQUAL 7)
+if(NOT sweepCase STREQUAL "spatial_small" OR NOT sweepLights EQUAL 3 OR NOT nMethods EQUAL 8
+   OR NOT nWorst EQUAL 8)
     message(FATAL_ERROR "unexpected sweep JSON document:\n${lastStdout}")
 endif()
-foreach(k RANGE 6)
+foreach(k RANGE 7)
     string(JSON m GET "${lastStdout}" methods ${k} method)
     list(GET methods3d ${k} want)
     if(NOT m STREQUAL want)
@@ -154,7 +154,7 @@ foreach(k RANGE 6)
         message(FATAL_ERROR "sweep JSON: worst_10_percent/${k} ranked by '${ranked}', expected '${want}'")
     endif()
 endforeach()
-expect_run(0 "^## Misclassified shadow pixels, spatial_small, 3 lights[^\n]*\n\n\\| lights \\| optimal \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\| optimal-refined \\|\n.*\n\\| worst 10% by optimal-refined \\|"
+expect_run(0 "^## Misclassified shadow pixels, spatial_small, 3 lights[^\n]*\n\n\\| lights \\| optimal \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\| optimal-refined \\| optimal-shear \\|\n.*\n\\| worst 10% by optimal-shear \\|"
            "^$" sweep "${small}" --lights 3 --format markdown)
 expect_run(0 "^set,method,mean_misclassified,percent_more,report_percent_more\nall,optimal,[0-9.]+,0\\.0000,"
            "^$" sweep "${small}" --lights 3 --format csv)
