@@ -101,9 +101,6 @@ std::optional<RectangleStructure> FindStructure(const std::vector<glm::dvec2>& y
 // rectangle structure (FitMapToPlanePoints written for any scalar type).
 struct RefinedEnergy {
     RefinedEnergy(const std::vector<glm::dvec3>* vertices, const LightSamples* samples,
-                  Resolution map, double margin)
-        : vertices(vertices), samples(samples), map(map), margin(margin) {}
-    RefinedEnergy(const std::vector<glm::dvec3>* vertices, const LightSamples* samples,
                   Resolution map, const FitOptions& options)
         : vertices(vertices),
           samples(samples),
@@ -361,7 +358,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
         double x[3] = {p4.x, p4.y, p4.z};
         ceres::GradientProblem problem(
             new ceres::AutoDiffFirstOrderFunction<ScaledRefinedEnergy, 3>(new ScaledRefinedEnergy{
-                RefinedEnergy{&vertices, &samples, map, options.margin}, 1.0 / bestH}),
+                RefinedEnergy{&vertices, &samples, map, fitOptions}, 1.0 / bestH}),
             new ceres::SphereManifold<3>());
         ceres::GradientProblemSolver::Options solverOptions;
         solverOptions.max_num_iterations = options.refineIterations;

@@ -48,9 +48,8 @@ struct OptimizerOptions {
     int refineIterations = 40;
     // The report's affine shear (§2.3, Fig. 3), optimized exactly: every candidate's affine part
     // from the minimum-area enclosing parallelogram (FitOptions::shear, light_matrix.h).
-    // `optimal-shear`. Combined with `refine`, the refined axis is fitted with the shear but the
-    // Ceres objective is still built from the margin alone (the rectangle); the objective itself
-    // supports the shear (RefinedObjective), it is just not passed the FitOptions there yet.
+    // `optimal-shear`. Combined with `refine`, the Ceres objective differentiates the sheared
+    // fit through its locally constant structure (RefinedObjective).
     bool shear = false;
 };
 

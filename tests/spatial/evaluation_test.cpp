@@ -63,9 +63,11 @@ TEST(Evaluation, EveryMethodCoversEveryVisibleSampleAndIsDeterministic) {
             }
         }
         // The optimizer never ends above its starting point (the focused axis).
-        for (const MethodOutcome& mo : a.methods)
-            if (!mo.hAfterIteration.empty())
+        for (const MethodOutcome& mo : a.methods) {
+            if (!mo.hAfterIteration.empty()) {
                 EXPECT_LE(mo.hAfterIteration.back(), mo.hAfterIteration.front()) << mo.method;
+            }
+        }
     }
 }
 
