@@ -15,7 +15,7 @@ fi
 packages=(build-essential cmake ninja-build pkg-config
           libceres-dev libglm-dev libopenimageio-dev openimageio-tools libcli11-dev nlohmann-json3-dev
           libgtest-dev googletest libbenchmark-dev libcairo2-dev
-          libtbb-dev libembree-dev libassimp-dev assimp-testmodels)
+          libtbb-dev libembree-dev libassimp-dev assimp-testmodels libqhull-dev)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -10,21 +10,28 @@
 // The walkthrough benchmarks (BM_Walkthrough*) time the harness on the shipped
 // cases/spatial/walkthrough.json (report §3's scene), loaded once:
 //   - the passes of report Algorithm 1 steps 1–2 and of the experiment, on all TBB workers:
-//     camera pass at 750² (pixels/s), readback at 180² with its screen derivatives (pixels/s),
-//     the first light's shadow map at 400² through the focused matrix (texels/s), and shading of
-//     the 750² frame against that map (pixels/s);
+//     camera pass at 750² (pixels/s), readback at 180² with its screen derivatives and its 3D
+//     hull (pixels/s), the first light's shadow map at 400² through the focused matrix
+//     (texels/s), and shading of the 750² frame against that map (pixels/s);
+//   - BM_WalkthroughRelevantHull3D: the readback's per-frame 3D hull of the relevant points
+//     alone (RelevantHullVertices: image pre-filter + Qhull), one core;
 //   - the light matrix per light on ONE core (tbb::global_control, as the report's Table 3 is a
 //     single-CPU profile), over the first kProfileLights lights of the case's light sweep with
 //     their LightSamples precomputed: focused, optimal (Algorithm 1: 3 iterations × 9 angles,
-//     hull once), optimal-refined, and optimal with hullOnce = false (the naive reference that
-//     re-fits from every relevant point per candidate). Counters are ms per light.
+//     per-light 2D hull of the frame's 3D hull vertices), optimal-refined, and optimal with
+//     hullOnce = false (the naive reference that re-fits from every relevant point per
+//     candidate). Counters are ms per light; hull3d_ms is the 3D hull per frame, and
+//     ms_per_light_with_hull3d adds a quarter of it, the report's Table 3 having 4 lights;
 //   - BM_WalkthroughProfile: all four in one run, light by light, so the ratios optimal/focused
-//     and naive/optimal come from the same conditions, plus a Table 3-like split: readback ms
-//     (per frame), per-light sampling ms (step 1: standard map + readback shading + samples),
-//     hull ms, search ms, refine ms, hull vertices and boundary samples.
+//     and naive/optimal come from the same conditions, plus a Table 3-like split: readback_ms
+//     (per frame, without its 3D hull), hull3d_ms (per frame) and hull3d_ms_per_light_of_4
+//     (amortized over Table 3's 4 lights; timed once per 4 profiled lights), then per light
+//     sampling ms (step 1: standard map + readback shading + samples), hull_ms (the 2D hull),
+//     search_ms, refine_ms; optimal_with_hull3d_ms = optimal_ms + hull3d_ms_per_light_of_4.
 //
 //   ./build/bench/spatial_bench --benchmark_counters_tabular=true
 //   ./build/bench/spatial_bench --benchmark_filter=Walkthrough --benchmark_min_time=0.2
+//   ./build/bench/spatial_bench --benchmark_filter=WalkthroughProfile --benchmark_counters_tabular=1
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -227,6 +234,7 @@ BENCHMARK(BM_OccludedSingleParallel)->Unit(benchmark::kMillisecond)->UseRealTime
 // The shipped walkthrough case.
 
 constexpr int kProfileLights = 16;  // the first lights of the case's light sweep
+constexpr int kTable3Lights = 4;    // the report's Table 3 profiles a frame with 4 lights
 
 struct PerLight {
     LightSpace lightSpace;
@@ -350,7 +358,20 @@ void BM_WalkthroughShadePass(benchmark::State& state) {
 }
 BENCHMARK(BM_WalkthroughShadePass)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// --- the light matrix per light, one core ---
+// The per-frame 3D hull alone (MakeReadback's share of Algorithm 1), one core.
+void BM_WalkthroughRelevantHull3D(benchmark::State& state) {
+    tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
+    const Walkthrough& w = Case();
+    std::size_t vertices = 0;
+    for (auto _ : state) {
+        std::vector<glm::dvec3> hull = RelevantHullVertices(w.readback.buffer);
+        vertices = hull.size();
+        benchmark::DoNotOptimize(hull.data());
+    }
+    state.counters["relevant"] = static_cast<double>(w.readback.wsRelevant.size());
+    state.counters["hull3d_vertices"] = static_cast<double>(vertices);
+}
+BENCHMARK(BM_WalkthroughRelevantHull3D)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 enum Variant { kFocused = 0, kOptimal = 1, kRefined = 2, kNaive = 3 };
 
@@ -361,14 +382,23 @@ OptimizerOptions OptionsFor(int variant) {
     return o;
 }
 
-// One iteration = every profiled light once; ms_per_light is the mean over lights.
+// One iteration = one frame: the readback's 3D hull once (hull3d_ms, per frame), then every
+// profiled light once; ms_per_light is the mean over lights without the 3D hull, and
+// ms_per_light_with_hull3d adds a quarter of it (report Table 3: 4 lights share a frame).
 void BM_WalkthroughLightMatrix(benchmark::State& state) {
     tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
     const Walkthrough& w = Case();
     const int variant = static_cast<int>(state.range(0));
     const OptimizerOptions options = OptionsFor(variant);
     double wallMs = 0.0, hullMs = 0.0, searchMs = 0.0, refineMs = 0.0, hullVertices = 0.0;
+    double hull3dMs = 0.0;
     for (auto _ : state) {
+        if (variant != kFocused && options.hullOnce) {
+            const auto hullStart = std::chrono::steady_clock::now();
+            std::vector<glm::dvec3> vertices = RelevantHullVertices(w.readback.buffer);
+            benchmark::DoNotOptimize(vertices.data());
+            hull3dMs += MsSince(hullStart);
+        }
         const auto start = std::chrono::steady_clock::now();
         for (const PerLight& l : w.lights) {
             if (variant == kFocused) {
@@ -386,10 +416,14 @@ void BM_WalkthroughLightMatrix(benchmark::State& state) {
         }
         wallMs += MsSince(start);
     }
-    const double calls = static_cast<double>(state.iterations()) * w.lights.size();
+    const double frames = static_cast<double>(state.iterations());
+    const double calls = frames * w.lights.size();
     state.counters["lights"] = static_cast<double>(w.lights.size());
     state.counters["ms_per_light"] = wallMs / calls;  // wall clock
     if (variant != kFocused) {
+        state.counters["hull3d_ms"] = hull3dMs / frames;
+        state.counters["ms_per_light_with_hull3d"] =
+            wallMs / calls + hull3dMs / frames / kTable3Lights;
         state.counters["hull_ms"] = hullMs / calls;
         state.counters["search_ms"] = searchMs / calls;
         state.counters["refine_ms"] = refineMs / calls;
@@ -408,16 +442,27 @@ BENCHMARK(BM_WalkthroughLightMatrix)
 void BM_WalkthroughProfile(benchmark::State& state) {
     tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
     const Walkthrough& w = Case();
-    double readbackMs = 0.0, samplingMs = 0.0, focusedMs = 0.0;
+    double readbackMs = 0.0, hull3dMs = 0.0, samplingMs = 0.0, focusedMs = 0.0;
     double ms[4] = {0.0, 0.0, 0.0, 0.0};
     double hullMs = 0.0, searchMs = 0.0, refineMs = 0.0, naiveSearchMs = 0.0;
     double hullVertices = 0.0, samples = 0.0, boundaryPixels = 0.0, relevant = 0.0;
-    double rejected = 0.0, tried = 0.0;
+    double rejected = 0.0, tried = 0.0, hull3dVertices = 0.0, hull3dFrames = 0.0;
     for (auto _ : state) {
         auto start = std::chrono::steady_clock::now();
         Readback r = MakeReadback(*w.backend, w.scene.camera, w.scene.readback);
         benchmark::DoNotOptimize(r.wsRelevant.data());
-        readbackMs += MsSince(start);
+        // MakeReadback includes the per-frame 3D hull; it is reported on its own, timed once
+        // for every kTable3Lights profiled lights (the frames they would take at Table 3's 4
+        // lights per frame).
+        readbackMs += MsSince(start) - r.relevantHullMs;
+        for (int frame = 0; frame < kProfileLights / kTable3Lights; ++frame) {
+            start = std::chrono::steady_clock::now();
+            std::vector<glm::dvec3> vertices = RelevantHullVertices(r.buffer);
+            benchmark::DoNotOptimize(vertices.data());
+            hull3dMs += MsSince(start);
+            hull3dFrames += 1.0;
+            hull3dVertices = static_cast<double>(vertices.size());
+        }
         for (const PerLight& l : w.lights) {
             // Step 1: standard (focused) map, readback shading, boundary samples.
             start = std::chrono::steady_clock::now();
@@ -459,13 +504,20 @@ void BM_WalkthroughProfile(benchmark::State& state) {
     ms[kFocused] = focusedMs;
     const double frames = static_cast<double>(state.iterations());
     const double calls = frames * w.lights.size();
+    const double hull3dPerLight = hull3dMs / hull3dFrames / kTable3Lights;
     state.counters["readback_ms"] = readbackMs / frames;
+    state.counters["hull3d_ms"] = hull3dMs / hull3dFrames;
+    state.counters["hull3d_ms_per_light_of_4"] = hull3dPerLight;
+    state.counters["hull3d_vertices"] = hull3dVertices;
     state.counters["sampling_ms"] = samplingMs / calls;
     state.counters["focused_ms"] = ms[kFocused] / calls;
     state.counters["optimal_ms"] = ms[kOptimal] / calls;
+    state.counters["optimal_with_hull3d_ms"] = ms[kOptimal] / calls + hull3dPerLight;
     state.counters["refined_ms"] = ms[kRefined] / calls;
     state.counters["naive_ms"] = ms[kNaive] / calls;
     state.counters["optimal_over_focused"] = ms[kOptimal] / ms[kFocused];
+    state.counters["optimal_with_hull3d_over_focused"] =
+        (ms[kOptimal] / calls + hull3dPerLight) / (ms[kFocused] / calls);
     state.counters["refined_over_focused"] = ms[kRefined] / ms[kFocused];
     state.counters["naive_over_optimal"] = ms[kNaive] / ms[kOptimal];
     state.counters["hull_ms"] = hullMs / calls;

@@ -7,34 +7,38 @@
 namespace lexel::spatial {
 
 glm::dvec3 EnergyGradientAnalytic(const LightMatrix& m, const LightSamples& samples) {
+    // The header's eq. (11) factored: with u_i = p_i·X / w and v_j = p4·D_j / w,
+    //     ∂J_ij/∂p4 = -(1/w) [(J_ij - u_i v_j) X + u_i D_j],
+    // so Σ_ij ∂f/∂J_ij ∂J_ij/∂p4 = -(1/w) [c_X X + c_1 D_1 + c_2 D_2] with
+    // c_X = Σ_ij ∂f/∂J_ij (J_ij - u_i v_j) and c_j = Σ_i ∂f/∂J_ij u_i: two divisions per sample.
     glm::dvec3 grad(0.0);
     for (std::size_t s = 0; s < samples.lsX.size(); ++s) {
         const glm::dvec3& X = samples.lsX[s];
-        const glm::dvec3 D[2] = {samples.dXdx1[s], samples.dXdx2[s]};
-        const double w = glm::dot(m.p4, X);
         if (!InFront(m.p4, X)) continue;
+        const glm::dvec3 D[2] = {samples.dXdx1[s], samples.dXdx2[s]};
         const glm::dvec3 p[2] = {m.p1, m.p2};
+        const double invW = 1.0 / glm::dot(m.p4, X);
+        const double wD[2] = {glm::dot(m.p4, D[0]), glm::dot(m.p4, D[1])};
+        const double u[2] = {glm::dot(p[0], X) * invW, glm::dot(p[1], X) * invW};
+        const double v[2] = {wD[0] * invW, wD[1] * invW};
         double J[2][2];
-        glm::dvec3 dJ[2][2];
         for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) {
-                const double pD = glm::dot(p[i], D[j]), pX = glm::dot(p[i], X);
-                const double wD = glm::dot(m.p4, D[j]);
-                J[i][j] = pD / w - pX * wD / (w * w);
-                dJ[i][j] = -(pD / (w * w)) * X - (pX / (w * w)) * D[j] +
-                           (2.0 * pX * wD / (w * w * w)) * X;  // eq. (11)
-            }
+            for (int j = 0; j < 2; ++j) J[i][j] = (glm::dot(p[i], D[j]) - u[i] * wD[j]) * invW;
         const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
         if (det == 0.0) continue;
         const double S =
             J[0][0] * J[0][0] + J[0][1] * J[0][1] + J[1][0] * J[1][0] + J[1][1] * J[1][1];
-        const double det2 = det * det, det3 = det2 * det;
-        const double dF[2][2] = {{2 * J[0][0] / det2 - 2 * S * J[1][1] / det3,
-                                  2 * J[0][1] / det2 + 2 * S * J[1][0] / det3},
-                                 {2 * J[1][0] / det2 + 2 * S * J[0][1] / det3,
-                                  2 * J[1][1] / det2 - 2 * S * J[0][0] / det3}};
+        const double invDet = 1.0 / det;
+        const double g = 2.0 * invDet * invDet, t = g * S * invDet;  // 2/det², 2S/det³
+        const double dF[2][2] = {{g * J[0][0] - t * J[1][1], g * J[0][1] + t * J[1][0]},
+                                 {g * J[1][0] + t * J[0][1], g * J[1][1] - t * J[0][0]}};
+        double cX = 0.0, c[2] = {0.0, 0.0};
         for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) grad += dF[i][j] * dJ[i][j];
+            for (int j = 0; j < 2; ++j) {
+                cX += dF[i][j] * (J[i][j] - u[i] * v[j]);
+                c[j] += dF[i][j] * u[i];
+            }
+        grad -= invW * (cX * X + c[0] * D[0] + c[1] * D[1]);
     }
     return grad;
 }

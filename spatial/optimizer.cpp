@@ -296,26 +296,34 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
     OptimizerResult r;
     const FitOptions fitOptions{options.margin, options.shear};
 
+    // The generators of the cone of relevant rays: the light-space images of the readback's 3D
+    // hull vertices when the readback has them (see the header comment), else every point.
+    const std::span<const glm::dvec3> lsCone =
+        (options.hullOnce && !samples.lsRelevantHull.empty())
+            ? std::span<const glm::dvec3>(samples.lsRelevantHull)
+            : std::span<const glm::dvec3>(samples.lsRelevant);
+    r.coneGenerators = lsCone.size();
+
     auto start = std::chrono::steady_clock::now();
     std::optional<RelevantHull> hull;
     if (options.hullOnce) {
         try {
-            hull.emplace(samples.lsRelevant, glm::normalize(initialP4));
+            hull.emplace(lsCone, glm::normalize(initialP4));
             r.hullVertices = hull->Vertices().size();
         } catch (const InputError&) {
-            hull.reset();  // the initial axis does not see every point: use the reference path
+            hull.reset();  // the initial axis does not see every point: fit from every generator
         }
     }
     r.hullMs = MsSince(start);
     const auto fit = [&](const glm::dvec3& p4) {
-        return hull ? hull->Fit(p4, map, fitOptions)
-                    : FitMapToPoints(p4, samples.lsRelevant, map, fitOptions);
+        return hull ? hull->Fit(p4, map, fitOptions) : FitMapToPoints(p4, lsCone, map, fitOptions);
     };
 
     start = std::chrono::steady_clock::now();
+    const BoundedEnergy energy(samples);  // Energy, stopping once h reaches the bound
     glm::dvec3 p4 = glm::normalize(initialP4);
     std::optional<LightMatrix> best = fit(p4);
-    double bestH = best ? Energy(*best, samples) : std::numeric_limits<double>::infinity();
+    double bestH = best ? energy(*best) : std::numeric_limits<double>::infinity();
     r.hAfterIteration.push_back(bestH);
     for (int it = 0; it < options.iterations && best; ++it) {
         const glm::dvec3 g = EnergyGradientAnalytic(*best, samples);
@@ -332,7 +340,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
                 ++r.candidatesRejected;
                 continue;
             }
-            const double h = Energy(*m, samples);
+            const double h = energy(*m, bestH);
             if (h < bestH) {
                 bestH = h;
                 best = m;
@@ -346,7 +354,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
     if (!best) {
         // Not even the initial axis sees every relevant point; nothing to optimize.
         r.usedFallback = true;
-        best = FitMapToPoints(glm::normalize(initialP4), samples.lsRelevant, map, fitOptions);
+        best = FitMapToPoints(glm::normalize(initialP4), lsCone, map, fitOptions);
         if (!best) throw InputError("optimizer: no light matrix sees every relevant point");
         bestH = Energy(*best, samples);
     }

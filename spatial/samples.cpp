@@ -3,8 +3,11 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 
+#include "solvers/convex_hull_3d.h"
 #include "solvers/footprint_metrics.h"
 #include "spatial/energy_gradient.h"
 
@@ -52,7 +55,39 @@ Readback MakeReadback(const RenderBackend& backend, const Camera& camera, Resolu
     rb.wsRelevant.reserve(n);
     for (std::size_t i = 0; i < n; ++i)
         if (buf.Covered(i)) rb.wsRelevant.push_back(buf.wsPosition[i]);
+
+    const auto hullStart = std::chrono::steady_clock::now();
+    rb.wsRelevantHull = RelevantHullVertices(buf);
+    rb.relevantHullMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - hullStart)
+            .count();
     return rb;
+}
+
+std::vector<glm::dvec3> RelevantHullVertices(const CameraBuffer& buffer) {
+    const int w = buffer.resolution.width, h = buffer.resolution.height;
+    std::vector<Eigen::Vector3d> wsCandidates;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            const std::int32_t t = buffer.triangle[i];
+            if (t < 0) continue;
+            // Strictly between two pixels of the same triangle along the row or the column: on
+            // the segment between their points, so not a vertex (see samples.h).
+            const bool rowInterior =
+                x > 0 && x < w - 1 && buffer.triangle[i - 1] == t && buffer.triangle[i + 1] == t;
+            const bool columnInterior =
+                y > 0 && y < h - 1 && buffer.triangle[i - w] == t && buffer.triangle[i + w] == t;
+            if (rowInterior || columnInterior) continue;
+            const glm::dvec3& ws = buffer.wsPosition[i];
+            wsCandidates.emplace_back(ws.x, ws.y, ws.z);
+        }
+    std::vector<glm::dvec3> wsVertices;
+    for (std::size_t k : ConvexHullVertices3D(wsCandidates)) {
+        const Eigen::Vector3d& v = wsCandidates[k];
+        wsVertices.emplace_back(v.x(), v.y(), v.z());
+    }
+    return wsVertices;
 }
 
 LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightSpace,
@@ -63,6 +98,9 @@ LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightS
     const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
     s.lsRelevant.reserve(readback.wsRelevant.size());
     for (const glm::dvec3& ws : readback.wsRelevant) s.lsRelevant.push_back(lightSpace.ToLight(ws));
+    s.lsRelevantHull.reserve(readback.wsRelevantHull.size());
+    for (const glm::dvec3& ws : readback.wsRelevantHull)
+        s.lsRelevantHull.push_back(lightSpace.ToLight(ws));
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * w + x;
@@ -117,6 +155,45 @@ double Energy(const LightMatrix& matrix, const LightSamples& samples) {
                                       samples.lsX[k], samples.dXdx1[k], samples.dXdx2[k]);
         // det(J) = 0 gives S/0 = +inf, or 0/0 when J vanishes: both an unbounded footprint.
         h += std::isnan(f) ? std::numeric_limits<double>::infinity() : f;
+    }
+    return h;
+}
+
+BoundedEnergy::BoundedEnergy(const LightSamples& samples) : count_(samples.lsX.size()) {
+    for (std::vector<double>& c : soa_) c.resize(count_);
+    frontMargin_.resize(count_);
+    for (std::size_t k = 0; k < count_; ++k) {
+        const glm::dvec3* v[3] = {&samples.lsX[k], &samples.dXdx1[k], &samples.dXdx2[k]};
+        for (int a = 0; a < 3; ++a)
+            for (int c = 0; c < 3; ++c) soa_[3 * a + c][k] = (*v[a])[c];
+        frontMargin_[k] = 1e-9 * glm::length(samples.lsX[k]);  // as InFront computes it
+    }
+}
+
+double BoundedEnergy::operator()(const LightMatrix& matrix, double bound) const {
+    constexpr std::size_t kBlock = 64;
+    const double* p1 = glm::value_ptr(matrix.p1);
+    const double* p2 = glm::value_ptr(matrix.p2);
+    const double p4[3] = {matrix.p4.x, matrix.p4.y, matrix.p4.z};
+    double f[kBlock], w[kBlock];
+    double h = 0.0;
+    for (std::size_t begin = 0; begin < count_; begin += kBlock) {
+        const std::size_t n = std::min(kBlock, count_ - begin);
+        const double *x0 = &soa_[0][begin], *x1 = &soa_[1][begin], *x2 = &soa_[2][begin];
+        const double *a0 = &soa_[3][begin], *a1 = &soa_[4][begin], *a2 = &soa_[5][begin];
+        const double *b0 = &soa_[6][begin], *b1 = &soa_[7][begin], *b2 = &soa_[8][begin];
+        for (std::size_t k = 0; k < n; ++k) {  // no branches: vectorized
+            const glm::dvec3 X(x0[k], x1[k], x2[k]);
+            w[k] = glm::dot(matrix.p4, X);
+            f[k] = SampleEnergy(p1, p2, p4, X, glm::dvec3(a0[k], a1[k], a2[k]),
+                                glm::dvec3(b0[k], b1[k], b2[k]));
+        }
+        const double* margin = &frontMargin_[begin];
+        for (std::size_t k = 0; k < n; ++k) {  // Energy's loop
+            if (!(w[k] > margin[k])) return std::numeric_limits<double>::infinity();  // !InFront
+            h += std::isnan(f[k]) ? std::numeric_limits<double>::infinity() : f[k];
+            if (h >= bound) return h;
+        }
     }
     return h;
 }

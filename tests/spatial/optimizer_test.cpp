@@ -1,5 +1,6 @@
 // Algorithm 1's pieces against references: the Appendix A gradient against Ceres Jets and central
-// differences, the hull-once fit against the naive fit, and the search's monotone progress.
+// differences, the hull-once fit (from all points and from the frame's 3D hull vertices) against
+// the naive fit, and the search's monotone progress.
 #include "spatial/optimizer.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "cases/spatial_case.h"
 #include "solvers/min_area_parallelogram.h"
 #include "spatial/energy_gradient.h"
 #include "spatial/spatial_test_scenes.h"
@@ -297,6 +299,174 @@ TEST(Optimizer, SearchNeverIncreasesHAndRefinementNeverHurts) {
         std::cout << "light (" << lightPos.x << ", " << lightPos.y << ", " << lightPos.z << "): h "
                   << r.hAfterIteration.front() << " -> " << r.hBeforeRefine << " -> refined " << r.h
                   << "\n";
+    }
+}
+
+// The walkthrough's readback (report §3) and lights of both kinds around it.
+struct WalkthroughFrame {
+    Scene scene;
+    std::unique_ptr<RenderBackend> renderer;
+    Bounds bounds;
+    Readback readback;
+    std::vector<Light> lights;
+};
+
+const WalkthroughFrame& Walkthrough() {
+    static const WalkthroughFrame frame = [] {
+        WalkthroughFrame f;
+        f.scene = cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
+        f.renderer = MakeCpuRenderer(f.scene.geometry);
+        f.bounds = f.scene.geometry.ComputeBounds();
+        f.readback = MakeReadback(*f.renderer, f.scene.camera, f.scene.readback);
+        for (const glm::dvec3& p :
+             {glm::dvec3(30, 60, -20), glm::dvec3(-70, 40, 60), glm::dvec3(90, 15, 10)}) {
+            Light light;
+            light.position = p;
+            f.lights.push_back(light);
+        }
+        for (const glm::dvec3& d : {glm::dvec3(0.4, -1, 0.6), glm::dvec3(-1, -0.3, 0.2)}) {
+            Light light;
+            light.type = Light::Type::kDirectional;
+            light.direction = d;
+            f.lights.push_back(light);
+        }
+        return f;
+    }();
+    return frame;
+}
+
+// The light's samples with boundary samples from a map fitted to the scene bounds.
+LightSamples SamplesFor(const WalkthroughFrame& f, const LightSpace& ls) {
+    std::vector<glm::dvec3> corners;
+    for (const auto& c : f.bounds.Corners()) corners.push_back(ls.ToLight(c));
+    const ShadowMap map = f.renderer->RenderShadowMap(
+        ls, *FitMapToPoints({0, 0, 1}, corners, f.scene.shadowMap), f.scene.shadowMap);
+    return MakeLightSamples(f.readback, ls, f.renderer->ShadePixels(f.readback.buffer, ls, map));
+}
+
+bool AllInFront(const glm::dvec3& p4, const std::vector<glm::dvec3>& points) {
+    for (const glm::dvec3& X : points)
+        if (!InFront(p4, X)) return false;
+    return true;
+}
+
+TEST(RelevantHull, FitFromFrameHullVerticesEqualsFitFromAllPoints) {
+    const WalkthroughFrame& f = Walkthrough();
+    ASSERT_GT(f.readback.wsRelevantHull.size(), 8u);
+    int rejected = 0, fitted = 0;
+    for (const Light& light : f.lights) {
+        const LightSpace ls(light, f.bounds);
+        const LightSamples s = SamplesFor(f, ls);
+        ASSERT_EQ(s.lsRelevantHull.size(), f.readback.wsRelevantHull.size());
+        const RelevantHull fromFrame(s.lsRelevantHull, {0, 0, 1});
+        const RelevantHull fromAll(s.lsRelevant, {0, 0, 1});
+        std::mt19937_64 rng(11);
+        std::uniform_real_distribution<double> uni(-1.0, 1.0);
+        for (int k = 0; k < 60; ++k) {
+            // Axes up to about 80° off the light's centre axis: some see every point, some not.
+            const glm::dvec3 p4 = glm::normalize(glm::dvec3(4.0 * uni(rng), 4.0 * uni(rng), 1.0));
+            // The in-front decision from the vertices is the decision from all points.
+            const bool allInFront = AllInFront(p4, s.lsRelevant);
+            ASSERT_EQ(AllInFront(p4, s.lsRelevantHull), allInFront) << "k " << k;
+            const auto naive = FitMapToPoints(p4, s.lsRelevant, f.scene.shadowMap, {0.02});
+            const auto frame = fromFrame.Fit(p4, f.scene.shadowMap, {0.02});
+            const auto all = fromAll.Fit(p4, f.scene.shadowMap, {0.02});
+            ASSERT_EQ(naive.has_value(), allInFront);
+            ASSERT_EQ(frame.has_value(), allInFront) << "k " << k;
+            ASSERT_EQ(all.has_value(), allInFront) << "k " << k;
+            if (!allInFront) {
+                ++rejected;
+                continue;
+            }
+            ++fitted;
+            // Same map up to rounding: every relevant point lands at the same texel position.
+            for (std::size_t i = 0; i < s.lsRelevant.size(); i += 37) {
+                const glm::dvec2 u = naive->Map(s.lsRelevant[i]);
+                ASSERT_NEAR(glm::length(frame->Map(s.lsRelevant[i]) - u), 0.0, 1e-7) << "k " << k;
+                ASSERT_NEAR(glm::length(all->Map(s.lsRelevant[i]) - u), 0.0, 1e-7) << "k " << k;
+            }
+        }
+    }
+    EXPECT_GT(fitted, 100);
+    EXPECT_GT(rejected, 10);
+}
+
+TEST(Optimizer, FrameHullPathGivesTheSameMatrixAsAllPointsAndTheNaivePath) {
+    const WalkthroughFrame& f = Walkthrough();
+    for (const Light& light : f.lights) {
+        const LightSpace ls(light, f.bounds);
+        const LightSamples s = SamplesFor(f, ls);
+        ASSERT_GT(s.lsX.size(), 100u);
+        LightSamples allPoints = s;
+        allPoints.lsRelevantHull.clear();  // RelevantHull from every relevant point
+        OptimizerOptions naiveOptions;
+        naiveOptions.hullOnce = false;  // every candidate fitted from every relevant point
+        const OptimizerResult frame = OptimizeLightMatrix(s, {0, 0, 1}, f.scene.shadowMap);
+        const OptimizerResult all = OptimizeLightMatrix(allPoints, {0, 0, 1}, f.scene.shadowMap);
+        const OptimizerResult naive =
+            OptimizeLightMatrix(s, {0, 0, 1}, f.scene.shadowMap, naiveOptions);
+        EXPECT_EQ(frame.coneGenerators, s.lsRelevantHull.size());
+        EXPECT_EQ(all.coneGenerators, s.lsRelevant.size());
+        EXPECT_LE(frame.hullVertices, all.hullVertices);
+        for (const OptimizerResult* other : {&all, &naive}) {
+            EXPECT_EQ(frame.candidatesRejected, other->candidatesRejected);
+            ASSERT_EQ(frame.hAfterIteration.size(), other->hAfterIteration.size());
+            for (std::size_t i = 0; i < frame.hAfterIteration.size(); ++i)
+                EXPECT_NEAR(frame.hAfterIteration[i], other->hAfterIteration[i],
+                            1e-9 * other->hAfterIteration[i]);
+            for (std::size_t i = 0; i < s.lsRelevant.size(); i += 37) {
+                const glm::dvec2 u = other->matrix.Map(s.lsRelevant[i]);
+                ASSERT_NEAR(glm::length(frame.matrix.Map(s.lsRelevant[i]) - u), 0.0, 1e-7);
+            }
+        }
+        // The search's early-stopping energy is Energy itself, bit for bit, below the bound.
+        EXPECT_EQ(frame.h, Energy(frame.matrix, s));
+        EXPECT_EQ(frame.hAfterIteration.back(), frame.h);
+        EXPECT_LT(frame.h, frame.hAfterIteration.front());
+    }
+}
+
+TEST(Optimizer, FloorOnlyViewFitsFromThePlanarHull) {
+    // Nothing but the floor in view (a flat 3D hull, see samples.h); the shadow of a box behind
+    // the camera falls into the view, so there are boundary samples.
+    TriangleMesh scene = testing::FloorQuad(100.0);
+    scene.Append(testing::BoxMesh({-2.0, 0.0, 8.0}, {2.0, 8.0, 12.0}));
+    const auto renderer = MakeCpuRenderer(scene);
+    Camera camera;
+    camera.position = {3.0, 4.0, 5.0};
+    camera.target = {2.0, 0.0, -1.0};
+    camera.resolution = {180, 180};
+    const Readback rb = MakeReadback(*renderer, camera, camera.resolution);
+    for (const glm::dvec3& p : rb.wsRelevant) ASSERT_EQ(p.y, 0.0);
+    ASSERT_GE(rb.wsRelevantHull.size(), 4u);
+    ASSERT_LE(rb.wsRelevantHull.size(), 8u);
+    Light light;
+    light.type = Light::Type::kDirectional;
+    light.direction = {0.1, -1.0, -1.3};
+    const Bounds bounds = scene.ComputeBounds();
+    const LightSpace ls(light, bounds);
+    std::vector<glm::dvec3> corners;
+    for (const auto& c : bounds.Corners()) corners.push_back(ls.ToLight(c));
+    const Resolution mapSize{400, 400};
+    const ShadowMap map =
+        renderer->RenderShadowMap(ls, *FitMapToPoints({0, 0, 1}, corners, mapSize), mapSize);
+    const LightSamples s = MakeLightSamples(rb, ls, renderer->ShadePixels(rb.buffer, ls, map));
+    ASSERT_GT(s.lsX.size(), 20u);
+    LightSamples allPoints = s;
+    allPoints.lsRelevantHull.clear();
+    const OptimizerResult frame = OptimizeLightMatrix(s, {0, 0, 1}, mapSize);
+    const OptimizerResult all = OptimizeLightMatrix(allPoints, {0, 0, 1}, mapSize);
+    EXPECT_EQ(frame.coneGenerators, rb.wsRelevantHull.size());
+    EXPECT_EQ(frame.candidatesRejected, all.candidatesRejected);
+    ASSERT_EQ(frame.hAfterIteration.size(), all.hAfterIteration.size());
+    for (std::size_t i = 0; i < frame.hAfterIteration.size(); ++i)
+        EXPECT_NEAR(frame.hAfterIteration[i], all.hAfterIteration[i],
+                    1e-9 * all.hAfterIteration[i]);
+    for (std::size_t i = 0; i < s.lsRelevant.size(); i += 37) {
+        const glm::dvec2 u = all.matrix.Map(s.lsRelevant[i]);
+        ASSERT_NEAR(glm::length(frame.matrix.Map(s.lsRelevant[i]) - u), 0.0, 1e-7);
+        ASSERT_GE(u.x, -1e-6);
+        ASSERT_LE(u.x, 400 + 1e-6);
     }
 }
 
