@@ -31,7 +31,7 @@
 //
 //   ./build/bench/spatial_bench --benchmark_counters_tabular=true
 //   ./build/bench/spatial_bench --benchmark_filter=Walkthrough --benchmark_min_time=0.2
-//   ./build/bench/spatial_bench --benchmark_filter=WalkthroughProfile --benchmark_counters_tabular=1
+//   ./build/bench/spatial_bench --benchmark_filter=WalkthroughProfile
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
