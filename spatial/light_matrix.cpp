@@ -96,30 +96,24 @@ void PlaneBasis(const glm::dvec3& p4, glm::dvec3* b1, glm::dvec3* b2) {
 
 namespace {
 
-// FitMapToPlanePoints with options.shear: the same construction around the minimum-area
-// parallelogram. A parallelogram point is y = c + a axisU + b axisV with a = dualU·(y - c),
-// b = dualV·(y - c) (Parallelogram2::DualAxes), so u1 = W/2 + W/(2 halfU) dualU·(y - c): the
-// rectangle's formula with the dual axes in place of the (self-dual) orthonormal ones.
-std::optional<LightMatrix> FitParallelogram(const glm::dvec3& p4,
-                                            std::span<const Eigen::Vector2d> planePoints,
-                                            Resolution map, const FitOptions& options) {
-    const Parallelogram2 par =
-        OrientLongSideAlong(MinAreaParallelogram(planePoints), map.width >= map.height);
-    // Zero extents only come from degenerate hulls (an unsheared rectangle): the same sliver.
-    const double longest = std::max({par.halfU, par.halfV, 1e-300});
-    const double halfU = std::max(par.halfU, 1e-9 * longest) * (1.0 + options.margin);
-    const double halfV = std::max(par.halfV, 1e-9 * longest) * (1.0 + options.margin);
-    const auto [dualU, dualV] = par.DualAxes();
-    glm::dvec3 b1, b2;
-    PlaneBasis(p4, &b1, &b2);
-    const double kU = 0.5 * map.width / halfU, kV = 0.5 * map.height / halfV;
-    LightMatrix m;
-    m.p4 = p4;
-    m.p1 = (0.5 * map.width - kU * dualU.dot(par.center)) * p4 +
-           kU * (dualU.x() * b1 + dualU.y() * b2);
-    m.p2 = (0.5 * map.height - kV * dualV.dot(par.center)) * p4 +
-           kV * (dualV.x() * b1 + dualV.y() * b2);
-    return m;
+// The fitted frame in the plane: u1 = W/2 + W/(2 halfU) rowU·(y - c), u2 likewise. For the
+// rectangle the rows are its orthonormal axes. For the parallelogram (options.shear) a point is
+// y = c + a axisU + b axisV with a = dualU·(y - c), b = dualV·(y - c) (Parallelogram2::DualAxes),
+// so the rows are the dual axes: the rectangle's formula, whose axes are self-dual.
+struct PlaneFrame {
+    Eigen::Vector2d center, rowU, rowV;
+    double halfU, halfV;
+};
+
+PlaneFrame FitFrame(std::span<const Eigen::Vector2d> pts, Resolution map, bool shear) {
+    const bool longSideOnU = map.width >= map.height;
+    if (shear) {
+        const Parallelogram2 par = OrientLongSideAlong(MinAreaParallelogram(pts), longSideOnU);
+        const auto [dualU, dualV] = par.DualAxes();
+        return {par.center, dualU, dualV, par.halfU, par.halfV};
+    }
+    const Rectangle2 rect = OrientLongSideAlong(MinAreaRectangle(pts), longSideOnU);
+    return {rect.center, rect.axisU, rect.axisV, rect.halfU, rect.halfV};
 }
 
 }  // namespace
@@ -130,25 +124,23 @@ std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
     if (planePoints.empty()) return std::nullopt;
     std::vector<Eigen::Vector2d> pts(planePoints.size());
     for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = {planePoints[i].x, planePoints[i].y};
-    if (options.shear) return FitParallelogram(p4, pts, map, options);
-    Rectangle2 rect = MinAreaRectangle(pts);
-    rect = OrientLongSideAlong(rect, map.width >= map.height);
+    const PlaneFrame f = FitFrame(pts, map, options.shear);
     // A zero extent (all points collinear or equal) gets a sliver so the map stays invertible.
-    const double longest = std::max({rect.halfU, rect.halfV, 1e-300});
-    const double halfU = std::max(rect.halfU, 1e-9 * longest) * (1.0 + options.margin);
-    const double halfV = std::max(rect.halfV, 1e-9 * longest) * (1.0 + options.margin);
+    const double longest = std::max({f.halfU, f.halfV, 1e-300});
+    const double halfU = std::max(f.halfU, 1e-9 * longest) * (1.0 + options.margin);
+    const double halfV = std::max(f.halfV, 1e-9 * longest) * (1.0 + options.margin);
 
-    // u1 = W/2 + W/(2 halfU) · axisU·(y - c), with y = (b1·X, b2·X)/(p4·X); multiplying by p4·X
-    // gives row p1 = (W/2 - kU axisU·c) p4 + kU (axisU.x b1 + axisU.y b2), and likewise p2.
+    // u1 = W/2 + W/(2 halfU) · rowU·(y - c), with y = (b1·X, b2·X)/(p4·X); multiplying by p4·X
+    // gives row p1 = (W/2 - kU rowU·c) p4 + kU (rowU.x b1 + rowU.y b2), and likewise p2.
     glm::dvec3 b1, b2;
     PlaneBasis(p4, &b1, &b2);
     const double kU = 0.5 * map.width / halfU, kV = 0.5 * map.height / halfV;
-    const Eigen::Vector2d& aU = rect.axisU;
-    const Eigen::Vector2d& aV = rect.axisV;
     LightMatrix m;
     m.p4 = p4;
-    m.p1 = (0.5 * map.width - kU * aU.dot(rect.center)) * p4 + kU * (aU.x() * b1 + aU.y() * b2);
-    m.p2 = (0.5 * map.height - kV * aV.dot(rect.center)) * p4 + kV * (aV.x() * b1 + aV.y() * b2);
+    m.p1 = (0.5 * map.width - kU * f.rowU.dot(f.center)) * p4 +
+           kU * (f.rowU.x() * b1 + f.rowU.y() * b2);
+    m.p2 = (0.5 * map.height - kV * f.rowV.dot(f.center)) * p4 +
+           kV * (f.rowV.x() * b1 + f.rowV.y() * b2);
     return m;
 }
 

@@ -100,26 +100,31 @@ std::optional<RectangleStructure> FindStructure(const std::vector<glm::dvec2>& y
 // h(fit(p4)) for the hull vertices and samples, differentiable in p4 through the fit for a fixed
 // rectangle structure (FitMapToPlanePoints written for any scalar type).
 struct RefinedEnergy {
-    RefinedEnergy(const std::vector<glm::dvec3>* vertices, const LightSamples* samples,
-                  Resolution map, const FitOptions& options)
+    // scale multiplies h: 1 / h0 inside the refinement, as LBFGS's first line search tries a
+    // unit step along −∇, a rotation of |∇| radians; h itself is in the thousands to millions,
+    // and an unscaled first step leaves the valid cone and fails the line search.
+    RefinedEnergy(std::span<const glm::dvec3> vertices, const LightSamples* samples, Resolution map,
+                  const FitOptions& options, double scale = 1.0)
         : vertices(vertices),
           samples(samples),
           map(map),
           margin(options.margin),
-          shear(options.shear) {}
+          shear(options.shear),
+          scale(scale) {}
 
-    const std::vector<glm::dvec3>* vertices;
+    std::span<const glm::dvec3> vertices;
     const LightSamples* samples;
     Resolution map;
     double margin;
     bool shear = false;
+    double scale = 1.0;
 
     template <typename T>
     bool operator()(const T* p4, T* energy) const {
         // The structure and the plane basis are chosen in double, locally constant in p4.
         const glm::dvec3 p4d(ceres::internal::AsScalar(p4[0]), ceres::internal::AsScalar(p4[1]),
                              ceres::internal::AsScalar(p4[2]));
-        for (const glm::dvec3& v : *vertices)
+        for (const glm::dvec3& v : vertices)
             if (!InFront(p4d, v)) return false;
         glm::dvec3 b1d, b2d;
         PlaneBasis(p4d, &b1d, &b2d);
@@ -132,16 +137,16 @@ struct RefinedEnergy {
         for (T& c : b1) c /= n1;
         Cross(p4, b1, b2);
 
-        std::vector<glm::dvec2> yd(vertices->size());
+        std::vector<glm::dvec2> yd(vertices.size());
         for (std::size_t i = 0; i < yd.size(); ++i) {
-            const glm::dvec3& v = (*vertices)[i];
+            const glm::dvec3& v = vertices[i];
             const double w = glm::dot(p4d, v);
             yd[i] = {glm::dot(b1d, v) / w, glm::dot(b2d, v) / w};
         }
         const std::optional<RectangleStructure> s = FindStructure(yd, map, shear);
         if (!s) return false;
         const auto project = [&](int i, T* y) {
-            const glm::dvec3& v = (*vertices)[i];
+            const glm::dvec3& v = vertices[i];
             const T w = p4[0] * v.x + p4[1] * v.y + p4[2] * v.z;
             y[0] = (b1[0] * v.x + b1[1] * v.y + b1[2] * v.z) / w;
             y[1] = (b2[0] * v.x + b2[1] * v.y + b2[2] * v.z) / w;
@@ -194,23 +199,8 @@ struct RefinedEnergy {
                 return false;
             total += SampleEnergy(p1, p2, p4, X, samples->dXdx1[k], samples->dXdx2[k]);
         }
-        *energy = total;
+        *energy = total * T(scale);
         return ceres::internal::AsScalar(total) < std::numeric_limits<double>::infinity();
-    }
-};
-
-// h / h0: LBFGS's first line search tries a unit step along −∇, a rotation of |∇| radians, so the
-// objective is scaled to O(1) at the start (h itself is in the thousands to millions, and an
-// unscaled first step leaves the valid cone and fails the line search).
-struct ScaledRefinedEnergy {
-    RefinedEnergy energy;
-    double scale;  // 1 / h0
-
-    template <typename T>
-    bool operator()(const T* p4, T* value) const {
-        if (!energy(p4, value)) return false;
-        *value *= T(scale);
-        return true;
     }
 };
 
@@ -220,8 +210,7 @@ std::optional<double> RefinedObjective(std::span<const glm::dvec3> vertices,
                                        const LightSamples& samples, const glm::dvec3& p4,
                                        Resolution map, const FitOptions& options,
                                        glm::dvec3* gradient) {
-    const std::vector<glm::dvec3> copy(vertices.begin(), vertices.end());
-    const RefinedEnergy energy(&copy, &samples, map, options);
+    const RefinedEnergy energy(vertices, &samples, map, options);
     if (!gradient) {
         double h = 0.0;
         const double x[3] = {p4.x, p4.y, p4.z};
@@ -362,11 +351,10 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
 
     if (options.refine && hull && hull->Vertices().size() >= 3 && !samples.lsX.empty()) {
         start = std::chrono::steady_clock::now();
-        std::vector<glm::dvec3> vertices(hull->Vertices().begin(), hull->Vertices().end());
         double x[3] = {p4.x, p4.y, p4.z};
         ceres::GradientProblem problem(
-            new ceres::AutoDiffFirstOrderFunction<ScaledRefinedEnergy, 3>(new ScaledRefinedEnergy{
-                RefinedEnergy{&vertices, &samples, map, fitOptions}, 1.0 / bestH}),
+            new ceres::AutoDiffFirstOrderFunction<RefinedEnergy, 3>(
+                new RefinedEnergy(hull->Vertices(), &samples, map, fitOptions, 1.0 / bestH)),
             new ceres::SphereManifold<3>());
         ceres::GradientProblemSolver::Options solverOptions;
         solverOptions.max_num_iterations = options.refineIterations;
