@@ -229,11 +229,7 @@ TEST(Optimizer, ShearedSearchKeepsEveryRelevantPointOnTheMap) {
         Light light;
         light.position = lightPos;
         const LightSpace ls(light, bounds);
-        std::vector<glm::dvec3> corners;
-        for (const auto& c : bounds.Corners()) corners.push_back(ls.ToLight(c));
-        const ShadowMap map = renderer->RenderShadowMap(
-            ls, *FitMapToPoints({0, 0, 1}, corners, {400, 300}), {400, 300});
-        const LightSamples s = MakeLightSamples(rb, ls, renderer->ShadePixels(rb.buffer, ls, map));
+        const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, {400, 300});
         ASSERT_GT(s.lsX.size(), 20u);
         OptimizerOptions options;
         options.shear = true;
@@ -268,11 +264,7 @@ TEST(Optimizer, SearchNeverIncreasesHAndRefinementNeverHurts) {
         Light light;
         light.position = lightPos;
         const LightSpace ls(light, bounds);
-        std::vector<glm::dvec3> corners;
-        for (const auto& c : bounds.Corners()) corners.push_back(ls.ToLight(c));
-        const ShadowMap map = renderer->RenderShadowMap(
-            ls, *FitMapToPoints({0, 0, 1}, corners, {400, 400}), {400, 400});
-        const LightSamples s = MakeLightSamples(rb, ls, renderer->ShadePixels(rb.buffer, ls, map));
+        const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, {400, 400});
         ASSERT_GT(s.lsX.size(), 20u);
         OptimizerOptions options;
         options.refine = true;
@@ -337,11 +329,7 @@ const WalkthroughFrame& Walkthrough() {
 
 // The light's samples with boundary samples from a map fitted to the scene bounds.
 LightSamples SamplesFor(const WalkthroughFrame& f, const LightSpace& ls) {
-    std::vector<glm::dvec3> corners;
-    for (const auto& c : f.bounds.Corners()) corners.push_back(ls.ToLight(c));
-    const ShadowMap map = f.renderer->RenderShadowMap(
-        ls, *FitMapToPoints({0, 0, 1}, corners, f.scene.shadowMap), f.scene.shadowMap);
-    return MakeLightSamples(f.readback, ls, f.renderer->ShadePixels(f.readback.buffer, ls, map));
+    return testing::SamplesFromBoundsMap(*f.renderer, f.readback, ls, f.bounds, f.scene.shadowMap);
 }
 
 bool AllInFront(const glm::dvec3& p4, const std::vector<glm::dvec3>& points) {
@@ -445,12 +433,8 @@ TEST(Optimizer, FloorOnlyViewFitsFromThePlanarHull) {
     light.direction = {0.1, -1.0, -1.3};
     const Bounds bounds = scene.ComputeBounds();
     const LightSpace ls(light, bounds);
-    std::vector<glm::dvec3> corners;
-    for (const auto& c : bounds.Corners()) corners.push_back(ls.ToLight(c));
     const Resolution mapSize{400, 400};
-    const ShadowMap map =
-        renderer->RenderShadowMap(ls, *FitMapToPoints({0, 0, 1}, corners, mapSize), mapSize);
-    const LightSamples s = MakeLightSamples(rb, ls, renderer->ShadePixels(rb.buffer, ls, map));
+    const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, mapSize);
     ASSERT_GT(s.lsX.size(), 20u);
     LightSamples allPoints = s;
     allPoints.lsRelevantHull.clear();

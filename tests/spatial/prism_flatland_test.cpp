@@ -139,11 +139,11 @@ class PrismOverFlatland : public ::testing::TestWithParam<const char*> {};
 // Per sample, the 3D Jacobian of a light matrix with an in-plane axis reproduces the flatland
 // footprint dp/dl from scratch (lexel_remap.h), at several axes across the valid range.
 TEST_P(PrismOverFlatland, JacobianInThePlaneIsTheFlatlandFootprint) {
-    const flatland::FlatScene flat =
-        cases::LoadFlatScene(std::string(LEXEL_CASES_DIR "/flatland/") + GetParam() + ".json");
-    const Prism prism = MakePrism(flat);
+    const Prism prism = MakePrism(
+        cases::LoadFlatScene(std::string(LEXEL_CASES_DIR "/flatland/") + GetParam() + ".json"));
+    const flatland::FlatScene& flat = prism.flat;
     const LightSamples samples = CentralRowSamples(prism);
-    const flatland::SamplingPass pass = flatland::RunSamplingPass(prism.flat, flat.camera.pixels);
+    const flatland::SamplingPass pass = flatland::RunSamplingPass(flat, flat.camera.pixels);
     ASSERT_GT(samples.lsX.size(), pass.samples.size() * 9 / 10);
 
     const glm::dvec3 wsLight(flat.wsLight.x(), flat.wsLight.y(), 0.0);
@@ -202,11 +202,11 @@ TEST_P(PrismOverFlatland, JacobianInThePlaneIsTheFlatlandFootprint) {
 // rectangle around the thin sliver of projected points may tilt by O(thickness / length), which
 // changes the in-plane scale at second order.
 TEST_P(PrismOverFlatland, EnergyIsTheFlatlandL2PlusASmallExtrusionTerm) {
-    const flatland::FlatScene flat =
-        cases::LoadFlatScene(std::string(LEXEL_CASES_DIR "/flatland/") + GetParam() + ".json");
-    const Prism prism = MakePrism(flat);
+    const Prism prism = MakePrism(
+        cases::LoadFlatScene(std::string(LEXEL_CASES_DIR "/flatland/") + GetParam() + ".json"));
+    const flatland::FlatScene& flat = prism.flat;
     const LightSamples samples = CentralRowSamples(prism);
-    const flatland::SamplingPass pass = flatland::RunSamplingPass(prism.flat, flat.camera.pixels);
+    const flatland::SamplingPass pass = flatland::RunSamplingPass(flat, flat.camera.pixels);
     const double lexels = 1000.0;
     const Resolution map{400, 400};
     const flatland::LexelSamples flatSamples = FlatlandSamplesAt(pass, samples, lexels);
@@ -233,11 +233,11 @@ TEST_P(PrismOverFlatland, EnergyIsTheFlatlandL2PlusASmallExtrusionTerm) {
 // optimum's axis: in the flatland plane (no z component, by the mirror symmetry z → −z) and at
 // the flatland angle up to the extrusion term's pull.
 TEST_P(PrismOverFlatland, OptimalAxisIsTheFlatlandOptimum) {
-    const flatland::FlatScene flat =
-        cases::LoadFlatScene(std::string(LEXEL_CASES_DIR "/flatland/") + GetParam() + ".json");
-    const Prism prism = MakePrism(flat);
+    const Prism prism = MakePrism(
+        cases::LoadFlatScene(std::string(LEXEL_CASES_DIR "/flatland/") + GetParam() + ".json"));
+    const flatland::FlatScene& flat = prism.flat;
     const LightSamples samples = CentralRowSamples(prism);
-    const flatland::SamplingPass pass = flatland::RunSamplingPass(prism.flat, flat.camera.pixels);
+    const flatland::SamplingPass pass = flatland::RunSamplingPass(flat, flat.camera.pixels);
     const flatland::LexelSamples flatSamples = FlatlandSamplesAt(pass, samples, 1000.0);
     const flatland::AngleSolution flatOptimum = flatland::SolveL2Exact(flatSamples);
 

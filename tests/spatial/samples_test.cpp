@@ -111,13 +111,7 @@ TEST(LightSamples, BoundarySamplesSitOnTheShadowEdge) {
     light.position = {-20.0, 30.0, -10.0};
     const Bounds bounds = scene.ComputeBounds();
     const LightSpace ls(light, bounds);
-    std::vector<glm::dvec3> corners;
-    for (const auto& c : bounds.Corners()) corners.push_back(ls.ToLight(c));
-    const Resolution mapRes{1024, 1024};
-    const ShadowMap map =
-        renderer->RenderShadowMap(ls, *FitMapToPoints({0, 0, 1}, corners, mapRes), mapRes);
-    const auto shades = renderer->ShadePixels(rb.buffer, ls, map);
-    const LightSamples s = MakeLightSamples(rb, ls, shades);
+    const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, {1024, 1024});
     ASSERT_GT(s.lsX.size(), 50u);
     EXPECT_EQ(s.lsRelevant.size(), rb.wsRelevant.size());
     // Every boundary sample on the floor is within a few readback pixels' footprint of the
@@ -221,12 +215,9 @@ TEST(BoundedEnergy, EqualsEnergyBitForBitBelowTheBound) {
     Light light;
     light.position = {-20.0, 30.0, -10.0};
     const LightSpace ls(light, scene.ComputeBounds());
-    std::vector<glm::dvec3> corners;
-    for (const auto& c : scene.ComputeBounds().Corners()) corners.push_back(ls.ToLight(c));
     const Resolution mapRes{400, 400};
-    const ShadowMap map =
-        renderer->RenderShadowMap(ls, *FitMapToPoints({0, 0, 1}, corners, mapRes), mapRes);
-    const LightSamples s = MakeLightSamples(rb, ls, renderer->ShadePixels(rb.buffer, ls, map));
+    const LightSamples s =
+        testing::SamplesFromBoundsMap(*renderer, rb, ls, scene.ComputeBounds(), mapRes);
     ASSERT_GT(s.lsX.size(), 130u);  // more than two blocks of 64
     const BoundedEnergy energy(s);
     std::mt19937_64 rng(8);

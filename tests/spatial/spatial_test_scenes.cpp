@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "spatial/light_matrix.h"
 #include "spatial/primitives.h"
 
 namespace lexel::spatial::testing {
@@ -10,6 +11,17 @@ TriangleMesh FloorQuad(double h) {
     Transform t;
     t.scale = {2.0 * h, 1.0, 2.0 * h};
     return TransformMesh(MakePlane(), t);
+}
+
+LightSamples SamplesFromBoundsMap(const RenderBackend& renderer, const Readback& readback,
+                                  const LightSpace& lightSpace, const Bounds& wsBounds,
+                                  Resolution mapSize) {
+    std::vector<glm::dvec3> lsCorners;
+    for (const glm::dvec3& c : wsBounds.Corners()) lsCorners.push_back(lightSpace.ToLight(c));
+    const ShadowMap map = renderer.RenderShadowMap(
+        lightSpace, *FitMapToPoints({0, 0, 1}, lsCorners, mapSize), mapSize);
+    return MakeLightSamples(readback, lightSpace,
+                            renderer.ShadePixels(readback.buffer, lightSpace, map));
 }
 
 TriangleMesh BoxMesh(const glm::dvec3& lo, const glm::dvec3& hi) {

@@ -2,6 +2,9 @@
 // and an exact segment–box test for analytic shadows.
 #pragma once
 
+#include "spatial/light_space.h"
+#include "spatial/render_backend.h"
+#include "spatial/samples.h"
 #include "spatial/scene.h"
 
 namespace lexel::spatial::testing {
@@ -10,6 +13,11 @@ namespace lexel::spatial::testing {
 TriangleMesh FloorQuad(double halfSize);
 // The axis-aligned box [lo, hi], outward triangles.
 TriangleMesh BoxMesh(const glm::dvec3& lo, const glm::dvec3& hi);
+// Algorithm 1 step 1 with a plain standard map: boundary samples of the light from a shadow map
+// with axis (0, 0, 1) fitted to the corners of `wsBounds`, `mapSize` texels.
+LightSamples SamplesFromBoundsMap(const RenderBackend& renderer, const Readback& readback,
+                                  const LightSpace& lightSpace, const Bounds& wsBounds,
+                                  Resolution mapSize);
 // Whether the open segment a → b crosses the box [lo, hi] (slab test).
 bool SegmentHitsBox(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& lo,
                     const glm::dvec3& hi);
