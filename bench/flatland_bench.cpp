@@ -8,8 +8,8 @@
 #include <chrono>
 #include <random>
 
-#include "flatland/angle_solvers.h"
-#include "flatland/sampling.h"
+#include "lexel/flatland/angle_solvers.h"
+#include "lexel/flatland/sampling.h"
 
 namespace {
 

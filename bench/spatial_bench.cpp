@@ -43,13 +43,13 @@
 #include <random>
 #include <vector>
 
-#include "cases/spatial_case.h"
-#include "cases/spatial_report.h"
-#include "spatial/baselines.h"
-#include "spatial/optimizer.h"
-#include "spatial/ray_caster.h"
-#include "spatial/render_backend.h"
-#include "spatial/samples.h"
+#include "lexel/cases/spatial_case.h"
+#include "lexel/cases/spatial_report.h"
+#include "lexel/spatial/baselines.h"
+#include "lexel/spatial/harness/ray_caster.h"
+#include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/optimizer.h"
+#include "lexel/spatial/samples.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "cases/figures.h"
+#include "lexel/cases/figures.h"
 
 #include <cairo.h>
 
@@ -14,7 +14,7 @@
 #include <system_error>
 #include <tuple>
 
-#include "flatland/scene.h"
+#include "lexel/flatland/scene.h"
 
 namespace lexel::cases {
 

@@ -1,7 +1,7 @@
-#include "cases/flatland_case.h"
+#include "lexel/cases/flatland_case.h"
 
-#include "cases/json_reader.h"
-#include "solvers/errors.h"
+#include "lexel/cases/json_reader.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "flatland/scene.h"
+#include "lexel/flatland/scene.h"
 
 namespace lexel::cases {
 

@@ -1,11 +1,11 @@
-#include "cases/json_reader.h"
+#include "lexel/cases/json_reader.h"
 
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <sstream>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
 

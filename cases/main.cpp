@@ -11,12 +11,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "cases/flatland_case.h"
-#include "cases/json_reader.h"
-#include "cases/report.h"
-#include "cases/spatial_report.h"
-#include "cases/tables.h"
-#include "solvers/errors.h"
+#include "lexel/cases/flatland_case.h"
+#include "lexel/cases/json_reader.h"
+#include "lexel/cases/report.h"
+#include "lexel/cases/spatial_report.h"
+#include "lexel/cases/tables.h"
+#include "lexel/solvers/errors.h"
 
 #ifndef LEXEL_VERSION
 #define LEXEL_VERSION "unknown"

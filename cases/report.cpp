@@ -1,4 +1,4 @@
-#include "cases/report.h"
+#include "lexel/cases/report.h"
 
 #include <cmath>
 #include <cstdio>

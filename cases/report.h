@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-#include "flatland/methods.h"
+#include "lexel/flatland/methods.h"
 
 namespace lexel::cases {
 

@@ -1,16 +1,16 @@
 // 3D case files (see spatial_case.h and cases/README.md).
-#include "cases/spatial_case.h"
+#include "lexel/cases/spatial_case.h"
 
 #include <cmath>
 #include <limits>
 
-#include "cases/flatland_case.h"
-#include "cases/json_reader.h"
-#include "solvers/errors.h"
-#include "spatial/generator.h"
-#include "spatial/light_space.h"
-#include "spatial/mesh_loader.h"
-#include "spatial/primitives.h"
+#include "lexel/cases/flatland_case.h"
+#include "lexel/cases/json_reader.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/generator.h"
+#include "lexel/spatial/harness/mesh_loader.h"
+#include "lexel/spatial/harness/primitives.h"
+#include "lexel/spatial/light_space.h"
 
 namespace lexel::cases {
 namespace {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "spatial/scene.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::cases {
 

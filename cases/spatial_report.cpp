@@ -1,4 +1,4 @@
-#include "cases/spatial_report.h"
+#include "lexel/cases/spatial_report.h"
 
 #include <tbb/parallel_for.h>
 #include <unistd.h>
@@ -13,14 +13,14 @@
 #include <numeric>
 #include <sstream>
 
-#include "cases/report.h"
-#include "cases/spatial_case.h"
-#include "solvers/errors.h"
-#include "spatial/generator.h"
-#include "spatial/harness_images.h"
-#include "spatial/light_space.h"
-#include "spatial/methods.h"
-#include "spatial/temporal.h"
+#include "lexel/cases/report.h"
+#include "lexel/cases/spatial_case.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/generator.h"
+#include "lexel/spatial/harness/images.h"
+#include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/light_space.h"
+#include "lexel/spatial/temporal.h"
 
 namespace lexel::cases {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "spatial/evaluation.h"
-#include "spatial/scene.h"
+#include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::cases {
 

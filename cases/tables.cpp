@@ -1,14 +1,14 @@
-#include "cases/tables.h"
+#include "lexel/cases/tables.h"
 
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
 
-#include "cases/figures.h"
-#include "cases/flatland_case.h"
-#include "cases/report.h"
-#include "solvers/errors.h"
+#include "lexel/cases/figures.h"
+#include "lexel/cases/flatland_case.h"
+#include "lexel/cases/report.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
 

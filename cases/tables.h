@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "flatland/methods.h"
+#include "lexel/flatland/methods.h"
 
 namespace lexel::cases {
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "flatland/angle_solvers.h"
+#include "lexel/flatland/angle_solvers.h"
 
 namespace lexel::flatland {
 

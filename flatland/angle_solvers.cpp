@@ -1,12 +1,12 @@
-#include "flatland/angle_solvers.h"
+#include "lexel/flatland/angle_solvers.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 
-#include "solvers/newton.h"
-#include "solvers/polynomial.h"
+#include "lexel/solvers/newton.h"
+#include "lexel/solvers/polynomial.h"
 
 namespace lexel::flatland {
 

@@ -28,8 +28,8 @@
 #include <cstdint>
 #include <string>
 
-#include "flatland/lexel_remap.h"
-#include "solvers/footprint_metrics.h"
+#include "lexel/flatland/lexel_remap.h"
+#include "lexel/solvers/footprint_metrics.h"
 
 namespace lexel::flatland {
 

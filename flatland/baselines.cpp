@@ -1,4 +1,4 @@
-#include "flatland/baselines.h"
+#include "lexel/flatland/baselines.h"
 
 #include <algorithm>
 #include <cmath>

@@ -31,7 +31,7 @@
 
 #include <string>
 
-#include "flatland/sampling.h"
+#include "lexel/flatland/sampling.h"
 
 namespace lexel::flatland {
 

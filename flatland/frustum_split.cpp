@@ -1,14 +1,14 @@
-#include "flatland/frustum_split.h"
+#include "lexel/flatland/frustum_split.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 
-#include "flatland/angle_solvers.h"
-#include "flatland/lexel_remap.h"
-#include "solvers/errors.h"
-#include "solvers/lagrange_allocation.h"
+#include "lexel/flatland/angle_solvers.h"
+#include "lexel/flatland/lexel_remap.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/solvers/lagrange_allocation.h"
 
 namespace lexel::flatland {
 

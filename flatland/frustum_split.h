@@ -20,8 +20,8 @@
 
 #include <vector>
 
-#include "flatland/methods.h"
-#include "flatland/sampling.h"
+#include "lexel/flatland/methods.h"
+#include "lexel/flatland/sampling.h"
 
 namespace lexel::flatland {
 

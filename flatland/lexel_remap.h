@@ -26,7 +26,7 @@
 #include <span>
 #include <vector>
 
-#include "flatland/sampling.h"
+#include "lexel/flatland/sampling.h"
 
 namespace lexel::flatland {
 

@@ -1,4 +1,4 @@
-#include "flatland/methods.h"
+#include "lexel/flatland/methods.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,12 +6,12 @@
 #include <functional>
 #include <optional>
 
-#include "flatland/angle_solvers.h"
-#include "flatland/baselines.h"
-#include "flatland/frustum_split.h"
-#include "flatland/lexel_remap.h"
-#include "flatland/sampling.h"
-#include "solvers/errors.h"
+#include "lexel/flatland/angle_solvers.h"
+#include "lexel/flatland/baselines.h"
+#include "lexel/flatland/frustum_split.h"
+#include "lexel/flatland/lexel_remap.h"
+#include "lexel/flatland/sampling.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::flatland {
 

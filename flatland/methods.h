@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "flatland/sampling.h"
-#include "solvers/footprint_metrics.h"
+#include "lexel/flatland/sampling.h"
+#include "lexel/solvers/footprint_metrics.h"
 
 namespace lexel::flatland {
 

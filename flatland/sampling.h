@@ -18,7 +18,7 @@
 #include <optional>
 #include <vector>
 
-#include "flatland/scene.h"
+#include "lexel/flatland/scene.h"
 
 namespace lexel::flatland {
 

@@ -1,10 +1,10 @@
-#include "flatland/scene.h"
+#include "lexel/flatland/scene.h"
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::flatland {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/footprint_metrics.h"
+#include "lexel/solvers/footprint_metrics.h"
 
 namespace lexel::flatland {
 

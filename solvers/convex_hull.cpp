@@ -1,4 +1,4 @@
-#include "solvers/convex_hull.h"
+#include "lexel/solvers/convex_hull.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel {
 namespace {

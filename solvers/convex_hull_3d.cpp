@@ -1,4 +1,4 @@
-#include "solvers/convex_hull_3d.h"
+#include "lexel/solvers/convex_hull_3d.h"
 
 #include <libqhull_r/libqhull_r.h>  // declares its functions extern "C"
 
@@ -13,8 +13,8 @@
 #include <string>
 #include <utility>
 
-#include "solvers/convex_hull.h"
-#include "solvers/errors.h"
+#include "lexel/solvers/convex_hull.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel {
 namespace {

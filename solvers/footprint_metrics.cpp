@@ -1,4 +1,4 @@
-#include "solvers/footprint_metrics.h"
+#include "lexel/solvers/footprint_metrics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel {
 

@@ -1,11 +1,11 @@
-#include "solvers/lagrange_allocation.h"
+#include "lexel/solvers/lagrange_allocation.h"
 
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <string>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel {
 

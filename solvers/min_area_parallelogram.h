@@ -56,7 +56,7 @@
 #include <cstddef>
 #include <span>
 
-#include "solvers/min_area_rectangle.h"
+#include "lexel/solvers/min_area_rectangle.h"
 
 namespace lexel {
 

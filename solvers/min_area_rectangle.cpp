@@ -1,4 +1,4 @@
-#include "solvers/min_area_rectangle.h"
+#include "lexel/solvers/min_area_rectangle.h"
 
 #include <cmath>
 #include <cstddef>
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "solvers/convex_hull.h"
-#include "solvers/errors.h"
+#include "lexel/solvers/convex_hull.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel {
 

@@ -1,4 +1,4 @@
-#include "solvers/newton.h"
+#include "lexel/solvers/newton.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "solvers/polynomial.h"
+#include "lexel/solvers/polynomial.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

@@ -1,13 +1,13 @@
 // Geometry shared by the baselines; see baseline_support.h for the references.
-#include "spatial/baseline_support.h"
+#include "lexel/spatial/baseline_support.h"
 
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "solvers/convex_hull.h"
-#include "solvers/errors.h"
+#include "lexel/solvers/convex_hull.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::spatial::baseline_detail {
 

@@ -12,9 +12,9 @@
 #include <span>
 #include <vector>
 
-#include "spatial/baselines.h"
-#include "spatial/light_matrix.h"
-#include "spatial/light_space.h"
+#include "lexel/spatial/baselines.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/light_space.h"
 
 namespace lexel::spatial::baseline_detail {
 

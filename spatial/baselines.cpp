@@ -11,14 +11,14 @@
 // rows (1, 2, 4) of P satisfy P·B = A·Q·B and P·L = 0 (report Fig. 1: P sends the light to
 // infinity), so P = [A·Q·B, 0]·[B, L]⁻¹; its row 4 is (row 4 of Q·B, 0)·[B, L]⁻¹, independent of
 // A, which is why only p4 is kept and the affine part refitted over the relevant points.
-#include "spatial/baselines.h"
+#include "lexel/spatial/baselines.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "solvers/errors.h"
-#include "spatial/baseline_support.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/baseline_support.h"
 
 namespace lexel::spatial {
 

@@ -35,9 +35,9 @@
 #include <span>
 #include <string>
 
-#include "spatial/light_matrix.h"
-#include "spatial/light_space.h"
-#include "spatial/scene.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/light_space.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

@@ -1,4 +1,4 @@
-#include "spatial/energy_gradient.h"
+#include "lexel/spatial/energy_gradient.h"
 
 #include <ceres/jet.h>
 

@@ -16,8 +16,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "spatial/light_matrix.h"
-#include "spatial/samples.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 

@@ -1,12 +1,12 @@
-#include "spatial/light_matrix.h"
+#include "lexel/spatial/light_matrix.h"
 
 #include <Eigen/Core>
 #include <cmath>
 #include <vector>
 
-#include "solvers/errors.h"
-#include "solvers/min_area_parallelogram.h"
-#include "solvers/min_area_rectangle.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/solvers/min_area_parallelogram.h"
+#include "lexel/solvers/min_area_rectangle.h"
 
 namespace lexel::spatial {
 

@@ -15,8 +15,8 @@
 #include <optional>
 #include <span>
 
-#include "spatial/light_space.h"
-#include "spatial/scene.h"
+#include "lexel/spatial/light_space.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

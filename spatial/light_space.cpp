@@ -1,10 +1,10 @@
-#include "spatial/light_space.h"
+#include "lexel/spatial/light_space.h"
 
 #include <cmath>
 #include <string>
 
-#include "solvers/errors.h"
-#include "spatial/light_matrix.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/light_matrix.h"
 
 namespace lexel::spatial {
 namespace {

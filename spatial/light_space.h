@@ -16,7 +16,7 @@
 
 #include <glm/glm.hpp>
 
-#include "spatial/scene.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

@@ -1,4 +1,4 @@
-#include "spatial/optimizer.h"
+#include "lexel/spatial/optimizer.h"
 
 #include <ceres/ceres.h>
 #include <ceres/sphere_manifold.h>
@@ -7,10 +7,10 @@
 #include <chrono>
 #include <cmath>
 
-#include "solvers/convex_hull.h"
-#include "solvers/errors.h"
-#include "solvers/min_area_parallelogram.h"
-#include "spatial/energy_gradient.h"
+#include "lexel/solvers/convex_hull.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/solvers/min_area_parallelogram.h"
+#include "lexel/spatial/energy_gradient.h"
 
 namespace lexel::spatial {
 namespace {

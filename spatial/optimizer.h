@@ -47,8 +47,8 @@
 #include <span>
 #include <vector>
 
-#include "spatial/light_matrix.h"
-#include "spatial/samples.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 

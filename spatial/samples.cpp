@@ -1,4 +1,4 @@
-#include "spatial/samples.h"
+#include "lexel/spatial/samples.h"
 
 #include <tbb/parallel_for.h>
 
@@ -7,9 +7,9 @@
 #include <chrono>
 #include <cmath>
 
-#include "solvers/convex_hull_3d.h"
-#include "solvers/footprint_metrics.h"
-#include "spatial/energy_gradient.h"
+#include "lexel/solvers/convex_hull_3d.h"
+#include "lexel/solvers/footprint_metrics.h"
+#include "lexel/spatial/energy_gradient.h"
 
 namespace lexel::spatial {
 

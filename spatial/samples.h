@@ -28,9 +28,9 @@
 #include <span>
 #include <vector>
 
-#include "spatial/light_matrix.h"
-#include "spatial/light_space.h"
-#include "spatial/render_backend.h"
+#include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/light_space.h"
 
 namespace lexel::spatial {
 

@@ -1,5 +1,5 @@
 // Scene geometry helpers and the camera's matrices (report eq. 1).
-#include "spatial/scene.h"
+#include "lexel/spatial/scene.h"
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>

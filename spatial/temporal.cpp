@@ -1,4 +1,4 @@
-#include "spatial/temporal.h"
+#include "lexel/spatial/temporal.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,8 +9,8 @@
 
 #include <optional>
 
-#include "spatial/light_matrix.h"
-#include "spatial/samples.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 

@@ -36,9 +36,9 @@
 #include <optional>
 #include <vector>
 
-#include "solvers/errors.h"
-#include "spatial/baseline_support.h"
-#include "spatial/baselines.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/baseline_support.h"
+#include "lexel/spatial/baselines.h"
 
 namespace lexel::spatial {
 

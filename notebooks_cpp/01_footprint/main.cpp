@@ -10,8 +10,8 @@
 //   ./build/notebooks_cpp/notebook_01_footprint
 #include <cstdio>
 
-#include "flatland/lexel_remap.h"
-#include "flatland/sampling.h"
+#include "lexel/flatland/lexel_remap.h"
+#include "lexel/flatland/sampling.h"
 
 int main() {
     using namespace lexel::flatland;

@@ -11,8 +11,8 @@
 //   ./build/notebooks_cpp/notebook_02_optimal_angle
 #include <cstdio>
 
-#include "flatland/angle_solvers.h"
-#include "flatland/sampling.h"
+#include "lexel/flatland/angle_solvers.h"
+#include "lexel/flatland/sampling.h"
 
 int main() {
     using namespace lexel;

@@ -15,9 +15,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cases/spatial_case.h"
-#include "spatial/evaluation.h"
-#include "spatial/harness_images.h"
+#include "lexel/cases/spatial_case.h"
+#include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/images.h"
 
 int main(int argc, char** argv) {
     using namespace lexel::spatial;

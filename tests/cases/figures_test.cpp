@@ -1,4 +1,4 @@
-#include "cases/figures.h"
+#include "lexel/cases/figures.h"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include <tuple>
 #include <vector>
 
-#include "flatland/methods.h"
-#include "spatial/image_io.h"
+#include "lexel/flatland/methods.h"
+#include "lexel/spatial/harness/image_io.h"
 
 namespace lexel::cases {
 namespace {

@@ -1,10 +1,10 @@
-#include "cases/json_reader.h"
+#include "lexel/cases/json_reader.h"
 
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
 namespace {

@@ -1,6 +1,6 @@
 // 3D case files: the shipped cases load as documented, and every kind of bad input is an
 // InputError naming the JSON pointer.
-#include "cases/spatial_case.h"
+#include "lexel/cases/spatial_case.h"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <fstream>
 #include <limits>
 
-#include "cases/flatland_case.h"
-#include "solvers/errors.h"
-#include "spatial/generator.h"
-#include "spatial/primitives.h"
+#include "lexel/cases/flatland_case.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/generator.h"
+#include "lexel/spatial/harness/primitives.h"
 
 namespace lexel::cases {
 namespace {

@@ -1,11 +1,11 @@
 // The thesis's findings (Chong 2003, ch. 4.1.3), asserted on the shipped reconstructions.
-#include "cases/tables.h"
+#include "lexel/cases/tables.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "cases/flatland_case.h"
+#include "lexel/cases/flatland_case.h"
 
 namespace lexel::cases {
 namespace {

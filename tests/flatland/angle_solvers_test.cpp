@@ -1,12 +1,12 @@
-#include "flatland/angle_solvers.h"
+#include "lexel/flatland/angle_solvers.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "flatland/baselines.h"
-#include "flatland/methods.h"
-#include "solvers/errors.h"
+#include "lexel/flatland/baselines.h"
+#include "lexel/flatland/methods.h"
+#include "lexel/solvers/errors.h"
 #include "test_scenes.h"
 
 namespace lexel::flatland {

@@ -1,12 +1,12 @@
-#include "flatland/baselines.h"
+#include "lexel/flatland/baselines.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 
-#include "flatland/lexel_remap.h"
-#include "flatland/methods.h"
+#include "lexel/flatland/lexel_remap.h"
+#include "lexel/flatland/methods.h"
 #include "test_scenes.h"
 
 namespace lexel::flatland {

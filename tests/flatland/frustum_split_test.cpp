@@ -1,12 +1,12 @@
-#include "flatland/frustum_split.h"
+#include "lexel/flatland/frustum_split.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "flatland/angle_solvers.h"
-#include "flatland/lexel_remap.h"
-#include "solvers/errors.h"
+#include "lexel/flatland/angle_solvers.h"
+#include "lexel/flatland/lexel_remap.h"
+#include "lexel/solvers/errors.h"
 #include "test_scenes.h"
 
 namespace lexel::flatland {

@@ -1,4 +1,4 @@
-#include "flatland/lexel_remap.h"
+#include "lexel/flatland/lexel_remap.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-#include "flatland/sampling.h"
+#include "lexel/flatland/sampling.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "flatland/lexel_remap.h"
-#include "solvers/errors.h"
+#include "lexel/flatland/lexel_remap.h"
+#include "lexel/solvers/errors.h"
 #include "test_scenes.h"
 
 namespace lexel::flatland {

@@ -4,8 +4,8 @@
 #include <random>
 #include <sstream>
 
-#include "flatland/sampling.h"
-#include "solvers/errors.h"
+#include "lexel/flatland/sampling.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::flatland::testing {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "flatland/scene.h"
+#include "lexel/flatland/scene.h"
 
 namespace lexel::flatland::testing {
 

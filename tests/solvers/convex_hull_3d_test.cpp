@@ -2,7 +2,7 @@
 // clouds in general position, containment of every input point, and the degenerate inputs
 // Qhull itself rejects (too few, coplanar, collinear, repeated), all without a word on stdout or
 // stderr.
-#include "solvers/convex_hull_3d.h"
+#include "lexel/solvers/convex_hull_3d.h"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include <set>
 #include <vector>
 
-#include "solvers/convex_hull.h"
-#include "solvers/errors.h"
+#include "lexel/solvers/convex_hull.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel {
 namespace {

@@ -1,4 +1,4 @@
-#include "solvers/convex_hull.h"
+#include "lexel/solvers/convex_hull.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel {
 namespace {

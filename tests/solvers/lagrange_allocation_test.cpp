@@ -1,11 +1,11 @@
-#include "solvers/lagrange_allocation.h"
+#include "lexel/solvers/lagrange_allocation.h"
 
 #include <gtest/gtest.h>
 
 #include <numeric>
 #include <random>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel {
 namespace {

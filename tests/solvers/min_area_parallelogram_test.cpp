@@ -1,7 +1,7 @@
 // The minimum-area parallelogram against brute force: per hull edge, every vertex-pair tie and a
 // fine sweep over the shear k; over all edges, every pair of hull-edge directions and a fine sweep
 // over pairs of side directions; closed forms for the report's Fig. 3 configuration.
-#include "solvers/min_area_parallelogram.h"
+#include "lexel/solvers/min_area_parallelogram.h"
 
 #include <gtest/gtest.h>
 
@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "solvers/convex_hull.h"
-#include "solvers/errors.h"
-#include "solvers/min_area_rectangle.h"
+#include "lexel/solvers/convex_hull.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/solvers/min_area_rectangle.h"
 
 namespace lexel {
 namespace {

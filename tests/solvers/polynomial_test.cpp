@@ -1,10 +1,10 @@
-#include "solvers/polynomial.h"
+#include "lexel/solvers/polynomial.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "solvers/newton.h"
+#include "lexel/solvers/newton.h"
 
 namespace lexel {
 namespace {

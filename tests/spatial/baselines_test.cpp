@@ -1,7 +1,7 @@
 // Tests of the shadow-map baselines (spatial/baselines.h): a 40 × 40 floor with objects up to 3
 // units high, the camera 1.7 above it looking across, relevant points = camera rays that hit the
 // floor (computed analytically: there is no renderer yet).
-#include "spatial/baselines.h"
+#include "lexel/spatial/baselines.h"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "solvers/errors.h"
-#include "spatial/light_matrix.h"
-#include "spatial/light_space.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/light_space.h"
 
 namespace lexel::spatial {
 namespace {

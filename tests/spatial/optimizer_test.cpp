@@ -1,7 +1,7 @@
 // Algorithm 1's pieces against references: the Appendix A gradient against Ceres Jets and central
 // differences, the hull-once fit (from all points and from the frame's 3D hull vertices) against
 // the naive fit, and the search's monotone progress.
-#include "spatial/optimizer.h"
+#include "lexel/spatial/optimizer.h"
 
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include <sstream>
 #include <string>
 
-#include "cases/spatial_case.h"
-#include "solvers/min_area_parallelogram.h"
-#include "spatial/energy_gradient.h"
+#include "lexel/cases/spatial_case.h"
+#include "lexel/solvers/min_area_parallelogram.h"
+#include "lexel/spatial/energy_gradient.h"
 #include "spatial/spatial_test_scenes.h"
 
 namespace lexel::spatial {

@@ -23,15 +23,15 @@
 #include <cmath>
 #include <numbers>
 
-#include "cases/flatland_case.h"
-#include "flatland/angle_solvers.h"
-#include "flatland/lexel_remap.h"
-#include "flatland/sampling.h"
-#include "spatial/baselines.h"
-#include "spatial/light_space.h"
-#include "spatial/optimizer.h"
-#include "spatial/render_backend.h"
-#include "spatial/samples.h"
+#include "lexel/cases/flatland_case.h"
+#include "lexel/flatland/angle_solvers.h"
+#include "lexel/flatland/lexel_remap.h"
+#include "lexel/flatland/sampling.h"
+#include "lexel/spatial/baselines.h"
+#include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/light_space.h"
+#include "lexel/spatial/optimizer.h"
+#include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 namespace {

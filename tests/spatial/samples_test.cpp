@@ -1,6 +1,6 @@
 // The readback derivatives of Appendix A against the exact screen → surface map, the
 // discontinuity rejection, and the energy h of eq. (6) against a hand-computed sample.
-#include "spatial/samples.h"
+#include "lexel/spatial/samples.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <random>
 #include <set>
 
-#include "cases/spatial_case.h"
-#include "solvers/convex_hull.h"
-#include "solvers/convex_hull_3d.h"
+#include "lexel/cases/spatial_case.h"
+#include "lexel/solvers/convex_hull.h"
+#include "lexel/solvers/convex_hull_3d.h"
 #include "spatial/spatial_test_scenes.h"
 
 namespace lexel::spatial {

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "spatial/light_matrix.h"
-#include "spatial/primitives.h"
+#include "lexel/spatial/harness/primitives.h"
+#include "lexel/spatial/light_matrix.h"
 
 namespace lexel::spatial::testing {
 

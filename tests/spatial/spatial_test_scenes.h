@@ -2,10 +2,10 @@
 // and an exact segment–box test for analytic shadows.
 #pragma once
 
-#include "spatial/light_space.h"
-#include "spatial/render_backend.h"
-#include "spatial/samples.h"
-#include "spatial/scene.h"
+#include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/light_space.h"
+#include "lexel/spatial/samples.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial::testing {
 

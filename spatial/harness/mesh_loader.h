@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "spatial/scene.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

@@ -25,7 +25,7 @@
 #include <limits>
 #include <vector>
 
-#include "spatial/scene.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

@@ -1,6 +1,6 @@
 // Model files through Assimp (see mesh_loader.h). Assimp logs only through DefaultLogger, which we
 // never create, so its NullLogger keeps stdout and stderr clean.
-#include "spatial/mesh_loader.h"
+#include "lexel/spatial/harness/mesh_loader.h"
 
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
@@ -12,7 +12,7 @@
 #include <string>
 #include <system_error>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::spatial {
 namespace {

@@ -1,5 +1,5 @@
 // Generated floor-objects scenes and light sweeps (report §3; see generator.h).
-#include "spatial/generator.h"
+#include "lexel/spatial/harness/generator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "spatial/primitives.h"
+#include "lexel/spatial/harness/primitives.h"
 
 namespace lexel::spatial {
 namespace {

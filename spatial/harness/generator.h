@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "spatial/scene.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

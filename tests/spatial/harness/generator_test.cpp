@@ -1,5 +1,5 @@
 // The floor-objects scene and the light sweep of the report's experiment (§3).
-#include "spatial/generator.h"
+#include "lexel/spatial/harness/generator.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "spatial/primitives.h"
+#include "lexel/spatial/harness/primitives.h"
 
 namespace lexel::spatial {
 namespace {

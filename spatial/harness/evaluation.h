@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "spatial/light_matrix.h"
-#include "spatial/render_backend.h"
-#include "spatial/samples.h"
-#include "spatial/scene.h"
+#include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/samples.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

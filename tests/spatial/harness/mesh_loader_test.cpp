@@ -1,5 +1,5 @@
 // Mesh loading through Assimp, on the models of Debian's assimp-testmodels package.
-#include "spatial/mesh_loader.h"
+#include "lexel/spatial/harness/mesh_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::spatial {
 namespace {

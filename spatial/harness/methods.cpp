@@ -1,6 +1,6 @@
-#include "spatial/methods.h"
+#include "lexel/spatial/harness/methods.h"
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::spatial {
 

@@ -1,6 +1,6 @@
 // Unit primitives: closed and outward (divergence-theorem volumes against closed forms), and
 // transforms (order, round trips, winding under mirroring).
-#include "spatial/primitives.h"
+#include "lexel/spatial/harness/primitives.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "spatial/raster.h"
-#include "spatial/render_backend.h"
+#include "lexel/spatial/harness/raster.h"
+#include "lexel/spatial/harness/render_backend.h"
 
 namespace lexel::spatial {
 

@@ -7,7 +7,7 @@
 // rtcGetDeviceError and, if set, throws std::runtime_error with the recorded message. Embree
 // raises an error in the thread that made the failing call, so the message read back is the
 // one for that call.
-#include "spatial/ray_caster.h"
+#include "lexel/spatial/harness/ray_caster.h"
 
 #include <embree3/rtcore.h>
 #include <tbb/blocked_range.h>
@@ -19,7 +19,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::spatial {
 namespace {

@@ -1,4 +1,4 @@
-#include "spatial/harness_images.h"
+#include "lexel/spatial/harness/images.h"
 
 #include <algorithm>
 #include <cmath>

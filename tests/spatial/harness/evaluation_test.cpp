@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "cases/spatial_case.h"
-#include "cases/spatial_report.h"
-#include "spatial/methods.h"
+#include "lexel/cases/spatial_case.h"
+#include "lexel/cases/spatial_report.h"
+#include "lexel/spatial/harness/methods.h"
 
 namespace lexel::spatial {
 namespace {

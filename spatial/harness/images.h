@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <span>
 
-#include "spatial/image_io.h"
-#include "spatial/render_backend.h"
-#include "spatial/samples.h"
+#include "lexel/spatial/harness/image_io.h"
+#include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 

@@ -1,4 +1,4 @@
-#include "spatial/image_io.h"
+#include "lexel/spatial/harness/image_io.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // distance of a ray from each triangle edge is available to decide which rays are too close to
 // an edge for float arithmetic to be held to the reference), plus watertightness on a closed
 // cube, the [tNear, tFar] interval, batch == single, determinism and input errors.
-#include "spatial/ray_caster.h"
+#include "lexel/spatial/harness/ray_caster.h"
 
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/errors.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::spatial {
 namespace {

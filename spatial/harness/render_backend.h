@@ -23,9 +23,9 @@
 #include <string_view>
 #include <vector>
 
-#include "spatial/light_matrix.h"
-#include "spatial/light_space.h"
-#include "spatial/scene.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/light_space.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

@@ -5,8 +5,8 @@
 #include <iostream>
 #include <random>
 
-#include "spatial/light_matrix.h"
-#include "spatial/render_backend.h"
+#include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/light_matrix.h"
 #include "spatial/spatial_test_scenes.h"
 
 namespace lexel::spatial {

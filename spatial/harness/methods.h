@@ -8,9 +8,9 @@
 #include <string_view>
 #include <vector>
 
-#include "spatial/baselines.h"
-#include "spatial/optimizer.h"
-#include "spatial/samples.h"
+#include "lexel/spatial/baselines.h"
+#include "lexel/spatial/optimizer.h"
+#include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 

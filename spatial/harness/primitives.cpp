@@ -1,5 +1,5 @@
 // Unit primitives and mesh transforms (see primitives.h).
-#include "spatial/primitives.h"
+#include "lexel/spatial/harness/primitives.h"
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>

@@ -48,7 +48,7 @@
 #include <optional>
 #include <span>
 
-#include "spatial/scene.h"
+#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

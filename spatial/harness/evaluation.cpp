@@ -1,11 +1,11 @@
-#include "spatial/evaluation.h"
+#include "lexel/spatial/harness/evaluation.h"
 
 #include <chrono>
 #include <span>
 
-#include "solvers/errors.h"
-#include "spatial/methods.h"
-#include "spatial/ray_caster.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/ray_caster.h"
 
 namespace lexel::spatial {
 
