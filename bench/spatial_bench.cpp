@@ -46,6 +46,7 @@
 #include "lexel/cases/spatial_case.h"
 #include "lexel/cases/spatial_report.h"
 #include "lexel/spatial/baselines.h"
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/ray_caster.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/optimizer.h"
@@ -251,12 +252,7 @@ struct Walkthrough {
     std::vector<PerLight> lights;
 
     BaselineContext Context(const LightSpace& lightSpace) const {
-        BaselineContext c;
-        c.scene = &scene;
-        c.lightSpace = &lightSpace;
-        c.wsBounds = bounds;
-        c.wsRelevant = readback.wsRelevant;
-        return c;
+        return MakeBaselineContext(scene, lightSpace, bounds, readback.wsRelevant);
     }
 };
 
@@ -267,7 +263,7 @@ const Walkthrough& Case() {
         w.backend = MakeCpuRenderer(w.scene.geometry);
         w.bounds = w.scene.geometry.ComputeBounds();
         w.frame = w.backend->RenderCamera(w.scene.camera, w.scene.camera.resolution);
-        w.readback = MakeReadback(*w.backend, w.scene.camera, w.scene.readback);
+        w.readback = RenderReadback(*w.backend, w.scene.camera, w.scene.readback);
         // As Evaluator::Evaluate does (Algorithm 1 step 1): boundary samples from the focused map.
         for (const Light& light : lexel::cases::SweepLightsOf(w.scene, kProfileLights)) {
             const LightSpace lightSpace(light, w.bounds);
@@ -324,7 +320,7 @@ void BM_WalkthroughReadback(benchmark::State& state) {
     const Walkthrough& w = Case();
     const Resolution at = w.scene.readback;
     for (auto _ : state) {
-        Readback r = MakeReadback(*w.backend, w.scene.camera, at);
+        Readback r = RenderReadback(*w.backend, w.scene.camera, at);
         benchmark::DoNotOptimize(r.wsRelevant.data());
     }
     state.counters["side"] = at.width;
@@ -449,7 +445,7 @@ void BM_WalkthroughProfile(benchmark::State& state) {
     double rejected = 0.0, tried = 0.0, hull3dVertices = 0.0, hull3dFrames = 0.0;
     for (auto _ : state) {
         auto start = std::chrono::steady_clock::now();
-        Readback r = MakeReadback(*w.backend, w.scene.camera, w.scene.readback);
+        Readback r = RenderReadback(*w.backend, w.scene.camera, w.scene.readback);
         benchmark::DoNotOptimize(r.wsRelevant.data());
         // MakeReadback includes the per-frame 3D hull; it is reported on its own, timed once
         // for every kTable3Lights profiled lights (the frames they would take at Table 3's 4

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lexel/spatial/harness/evaluation.h"
-#include "lexel/spatial/scene.h"
+#include "lexel/spatial/harness/scene.h"
 
 namespace lexel::cases {
 

@@ -274,7 +274,7 @@ double LightPlaneOffset(const BaselineContext& context, const NormalAxis& axis) 
 }
 
 std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAxis& axis) {
-    const Camera& camera = context.scene->camera;
+    const Camera& camera = context.camera;
     ConvexPolyhedron body = FrustumPolyhedron(camera.FrustumCorners());
     body = ClipPolyhedron(body, WorldPlaneOfLightPlane(*context.lightSpace, axis.p4,
                                                        LightPlaneOffset(context, axis)));
@@ -285,8 +285,8 @@ std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAx
 }
 
 void CheckContext(const BaselineContext& context) {
-    if (context.scene == nullptr || context.lightSpace == nullptr)
-        throw InputError("baselines: the context needs a scene and a light space");
+    if (context.lightSpace == nullptr)
+        throw InputError("baselines: the context needs a light space");
     if (context.wsBounds.Empty()) throw InputError("baselines: the scene bounds are empty");
 }
 

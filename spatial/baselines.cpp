@@ -66,7 +66,7 @@ LightMatrix NormalLightMatrix(const BaselineContext& context, BaselineDiagnostic
         for (const glm::dvec3& x : context.wsBounds.Corners())
             planePoints.push_back(ProjectToPlane(axis.p4, ls.ToLight(x)));
     return FitCovering(axis.p4, std::move(planePoints), ToLightAll(ls, context.wsRelevant),
-                       context.scene->shadowMap, "normal", diagnostics);
+                       context.map, "normal", diagnostics);
 }
 
 LightMatrix FocusedLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
@@ -76,7 +76,7 @@ LightMatrix FocusedLightMatrix(const BaselineContext& context, BaselineDiagnosti
     // The view frustum, cut to the part well in front of the light: a point light may sit inside
     // the frustum, and points near p4·X = 0 project to infinity. The cut plane p4·X = δ lies below
     // every bounds corner and relevant point (LightPlaneOffset), so nothing that matters is lost.
-    ConvexPolyhedron frustum = FrustumPolyhedron(context.scene->camera.FrustumCorners());
+    ConvexPolyhedron frustum = FrustumPolyhedron(context.camera.FrustumCorners());
     frustum = ClipPolyhedron(frustum,
                              WorldPlaneOfLightPlane(ls, axis.p4, LightPlaneOffset(context, axis)));
     std::vector<glm::dvec2> frustumPlane;
@@ -102,19 +102,19 @@ LightMatrix FocusedLightMatrix(const BaselineContext& context, BaselineDiagnosti
         return NormalLightMatrix(context, diagnostics);
     }
     Note(diagnostics, axis.fallback);
-    return FitCovering(axis.p4, std::move(region), ToLightAll(ls, context.wsRelevant),
-                       context.scene->shadowMap, "focused", diagnostics);
+    return FitCovering(axis.p4, std::move(region), ToLightAll(ls, context.wsRelevant), context.map,
+                       "focused", diagnostics);
 }
 
 LightMatrix PlaneOptimalProjectiveMatrix(const BaselineContext& context) {
     CheckContext(context);
-    const Scene& scene = *context.scene;
-    if (!scene.floorPlane) throw InputError("plane-optimal: the scene has no floor plane");
-    const glm::dvec3 n(*scene.floorPlane);
+    if (!context.floorPlane) throw InputError("plane-optimal: the scene has no floor plane");
+    const glm::dvec4& floorPlane = *context.floorPlane;
+    const glm::dvec3 n(floorPlane);
     const double nLen = glm::length(n);
     if (!(nLen > 0.0)) throw InputError("plane-optimal: the floor plane normal is zero");
     const glm::dvec3 unitN = n / nLen;
-    const glm::dvec3 wsOnPlane = -(scene.floorPlane->w / nLen) * unitN;
+    const glm::dvec3 wsOnPlane = -(floorPlane.w / nLen) * unitN;
     glm::dvec3 t1, t2;
     PlaneBasis(unitN, &t1, &t2);
     // Spanning points a bounds radius apart keep [B, L] well conditioned at scene scale.
@@ -134,7 +134,7 @@ LightMatrix PlaneOptimalProjectiveMatrix(const BaselineContext& context) {
     if (!(std::abs(glm::determinant(unit)) > 1e-12))
         throw InputError("plane-optimal: the light lies on the floor plane");
 
-    const glm::dmat4 screenFromWorld = scene.camera.ScreenFromWorld(scene.shadowMap);
+    const glm::dmat4 screenFromWorld = context.camera.ScreenFromWorld(context.map);
     const glm::dmat4 qb = screenFromWorld * basis;  // columns Q·B_k (and Q·L, dropped)
     glm::dmat4 target = qb;
     target[3] = glm::dvec4(0.0);  // P·L = 0
@@ -173,7 +173,7 @@ glm::dvec3 Slerp(const glm::dvec3& a, const glm::dvec3& b, double t) {
 LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
                                     BaselineDiagnostics* diagnostics) {
     CheckContext(context);
-    if (!context.scene->floorPlane) throw InputError("plane-optimal: the scene has no floor plane");
+    if (!context.floorPlane) throw InputError("plane-optimal: the scene has no floor plane");
     auto fallBack = [&](const std::string& why) {
         Note(diagnostics, "plane-optimal: " + why + "; using focused");
         return FocusedLightMatrix(context, diagnostics);
@@ -207,8 +207,8 @@ LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
         Note(diagnostics, "plane-optimal: p4 turned toward focused by fraction " +
                               std::to_string(hi) + " to see every relevant point");
     }
-    const auto m = FitMapToPoints(p4, lsRelevant, context.scene->shadowMap);
-    if (!m || !CoversAll(*m, lsRelevant, context.scene->shadowMap))
+    const auto m = FitMapToPoints(p4, lsRelevant, context.map);
+    if (!m || !CoversAll(*m, lsRelevant, context.map))
         return fallBack("the refit misses a relevant point");
     return *m;
 }

@@ -26,26 +26,31 @@
 //                  affine image of the camera's screen restricted to it).
 //
 // Every function returns a matrix under which every point of wsRelevant is strictly in front
-// (InFront) and maps into [0, W] × [0, H] of scene->shadowMap (up to rounding, far below 1e-6
+// (InFront) and maps into [0, W] × [0, H] of context.map (up to rounding, far below 1e-6
 // texel). Where a method's own construction cannot guarantee that, it falls back as documented at
 // the function and reports why in BaselineDiagnostics::fallback.
 #pragma once
 
 #include <glm/glm.hpp>
+#include <optional>
 #include <span>
 #include <string>
 
+#include "lexel/spatial/bounds.h"
+#include "lexel/spatial/camera.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
-#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 
+// What every baseline is built from: the same information Algorithm 1 gets.
 struct BaselineContext {
-    const Scene* scene = nullptr;  // camera, floorPlane, shadowMap resolution
-    const LightSpace* lightSpace = nullptr;
-    Bounds wsBounds;                         // bounds of the scene geometry
-    std::span<const glm::dvec3> wsRelevant;  // visible receiver samples (world)
+    const LightSpace* lightSpace = nullptr;  // the light and its frame
+    Camera camera;                           // the viewer (view frustum, screen map Q)
+    Resolution map;                          // the shadow map, in texels
+    Bounds wsBounds;                         // bounds of everything that casts or receives
+    std::span<const glm::dvec3> wsRelevant;  // visible receiver points (world)
+    std::optional<glm::dvec4> floorPlane;    // plane-optimal's plane n·x + d = 0, |n| = 1
 };
 
 // What a baseline did, for tests and reports. Fields a method does not use stay at their default.
@@ -97,7 +102,7 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context,
 LightMatrix PsmLightMatrix(const BaselineContext& context,
                            BaselineDiagnostics* diagnostics = nullptr);
 
-// Plane-optimal for scene->floorPlane (InputError when the scene has none), refitted over
+// Plane-optimal for context.floorPlane (InputError when the scene has none), refitted over
 // wsRelevant. When a relevant point is behind the plane-optimal p4 (off the plane, its shadow on
 // the plane behind the camera), p4 is turned toward the focused p4 along the great circle by the
 // smallest fraction that sees every relevant point (bisection, 40 steps; diagnostics'
@@ -107,7 +112,7 @@ LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
                                     BaselineDiagnostics* diagnostics = nullptr);
 
 // The plane-optimal matrix before the affine refit: for A = identity, a floor point seen at
-// screen point x (pixels of scene->shadowMap's size) maps to u = x. Throws InputError when the
+// screen point x (pixels of context.map's size) maps to u = x. Throws InputError when the
 // scene has no floor plane or the light lies on it (no plane-optimal matrix exists).
 LightMatrix PlaneOptimalProjectiveMatrix(const BaselineContext& context);
 

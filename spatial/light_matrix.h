@@ -15,8 +15,8 @@
 #include <optional>
 #include <span>
 
+#include "lexel/spatial/camera.h"
 #include "lexel/spatial/light_space.h"
-#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

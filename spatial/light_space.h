@@ -16,9 +16,18 @@
 
 #include <glm/glm.hpp>
 
-#include "lexel/spatial/scene.h"
+#include "lexel/spatial/bounds.h"
 
 namespace lexel::spatial {
+
+// A point light at `position`, or a directional light whose light travels along `direction`
+// (world units; the direction need not be unit, LightSpace normalizes it).
+struct Light {
+    enum class Type { kPoint, kDirectional };
+    Type type = Type::kPoint;
+    glm::dvec3 position{0.0};
+    glm::dvec3 direction{0.0, -1.0, 0.0};
+};
 
 class LightSpace {
   public:

@@ -1,94 +1,14 @@
 #include "lexel/spatial/samples.h"
 
-#include <tbb/parallel_for.h>
-
 #include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
-#include "lexel/solvers/convex_hull_3d.h"
 #include "lexel/solvers/footprint_metrics.h"
 #include "lexel/spatial/energy_gradient.h"
 
 namespace lexel::spatial {
-
-Readback MakeReadback(const RenderBackend& backend, const Camera& camera, Resolution resolution) {
-    Readback rb;
-    rb.buffer = backend.RenderCamera(camera, resolution);
-    const CameraBuffer& buf = rb.buffer;
-    const std::size_t n = resolution.Count();
-    rb.dWdx1.assign(n, glm::dvec3(0.0));
-    rb.dWdx2.assign(n, glm::dvec3(0.0));
-    rb.smooth.assign(n, 0);
-    const glm::dmat4 screenFromWorld = camera.ScreenFromWorld(resolution);
-    const glm::dmat4 worldFromScreen = glm::inverse(screenFromWorld);
-    const int w = resolution.width, h = resolution.height;
-
-    tbb::parallel_for(0, h, [&](int y) {
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = static_cast<std::size_t>(y) * w + x;
-            if (!buf.Covered(i) || x == 0 || y == 0 || x == w - 1 || y == h - 1) continue;
-            const std::size_t nb[4] = {i - 1, i + 1, i - w, i + w};
-            bool ok = true;
-            for (std::size_t j : nb) ok = ok && buf.Covered(j);
-            if (!ok) continue;
-            const double z = buf.windowDepth[i];
-            const double dz1 = 0.5 * (buf.windowDepth[i + 1] - buf.windowDepth[i - 1]);
-            const double dz2 = 0.5 * (buf.windowDepth[i + w] - buf.windowDepth[i - w]);
-            const double ddz1 = buf.windowDepth[i + 1] - 2.0 * z + buf.windowDepth[i - 1];
-            const double ddz2 = buf.windowDepth[i + w] - 2.0 * z + buf.windowDepth[i - w];
-            if (std::abs(ddz1) > kSmoothness * std::abs(dz1) + kDepthNoise ||
-                std::abs(ddz2) > kSmoothness * std::abs(dz2) + kDepthNoise)
-                continue;
-            // Eq. (7): differentiate W = h.xyz / h.w, h = Q⁻¹ (x¹, x², x³, 1).
-            const glm::dvec4 hs = worldFromScreen * glm::dvec4(x + 0.5, y + 0.5, z, 1.0);
-            const glm::dvec3 ws = glm::dvec3(hs) / hs.w;
-            glm::dvec3 dW[3];
-            for (int k = 0; k < 3; ++k)
-                dW[k] = (glm::dvec3(worldFromScreen[k]) - ws * worldFromScreen[k].w) / hs.w;
-            rb.dWdx1[i] = dW[0] + dW[2] * dz1;
-            rb.dWdx2[i] = dW[1] + dW[2] * dz2;
-            rb.smooth[i] = 1;
-        }
-    });
-    rb.wsRelevant.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
-        if (buf.Covered(i)) rb.wsRelevant.push_back(buf.wsPosition[i]);
-
-    const auto hullStart = std::chrono::steady_clock::now();
-    rb.wsRelevantHull = RelevantHullVertices(buf);
-    rb.relevantHullMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - hullStart)
-            .count();
-    return rb;
-}
-
-std::vector<glm::dvec3> RelevantHullVertices(const CameraBuffer& buffer) {
-    const int w = buffer.resolution.width, h = buffer.resolution.height;
-    std::vector<Eigen::Vector3d> wsCandidates;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = static_cast<std::size_t>(y) * w + x;
-            const std::int32_t t = buffer.triangle[i];
-            if (t < 0) continue;
-            // Strictly between two pixels of the same triangle along the row or the column: on
-            // the segment between their points, so not a vertex (see samples.h).
-            const bool rowInterior =
-                x > 0 && x < w - 1 && buffer.triangle[i - 1] == t && buffer.triangle[i + 1] == t;
-            const bool columnInterior =
-                y > 0 && y < h - 1 && buffer.triangle[i - w] == t && buffer.triangle[i + w] == t;
-            if (rowInterior || columnInterior) continue;
-            const glm::dvec3& ws = buffer.wsPosition[i];
-            wsCandidates.emplace_back(ws.x, ws.y, ws.z);
-        }
-    std::vector<glm::dvec3> wsVertices;
-    for (std::size_t k : ConvexHullVertices3D(wsCandidates)) {
-        const Eigen::Vector3d& v = wsCandidates[k];
-        wsVertices.emplace_back(v.x(), v.y(), v.z());
-    }
-    return wsVertices;
-}
 
 LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightSpace,
                               std::span<const Shade> shades) {

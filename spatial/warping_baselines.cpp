@@ -68,9 +68,8 @@ glm::dvec3 Centroid(const std::vector<glm::dvec3>& points) {
 std::optional<LightMatrix> RefitOverBody(const BaselineContext& context, const glm::dvec3& p4,
                                          const std::vector<glm::dvec3>& wsBody) {
     const LightSpace& ls = *context.lightSpace;
-    const auto m = FitMapToPoints(p4, ToLightAll(ls, wsBody), context.scene->shadowMap);
-    if (!m || !CoversAll(*m, ToLightAll(ls, context.wsRelevant), context.scene->shadowMap))
-        return std::nullopt;
+    const auto m = FitMapToPoints(p4, ToLightAll(ls, wsBody), context.map);
+    if (!m || !CoversAll(*m, ToLightAll(ls, context.wsRelevant), context.map)) return std::nullopt;
     return m;
 }
 
@@ -114,7 +113,7 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostic
         return FocusedLightMatrix(context, diagnostics);
     };
     const LightSpace& ls = *context.lightSpace;
-    const Camera& camera = context.scene->camera;
+    const Camera& camera = context.camera;
     const NormalAxis axis = ChooseNormalAxis(context);
     const std::vector<glm::dvec3> wsBody = FocusBody(context, axis);
     if (wsBody.empty()) return fallBack("empty focus body");
@@ -227,7 +226,7 @@ LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* 
         return FocusedLightMatrix(context, diagnostics);
     };
     const LightSpace& ls = *context.lightSpace;
-    const Camera& camera = context.scene->camera;
+    const Camera& camera = context.camera;
     const NormalAxis axis = ChooseNormalAxis(context);
     const std::vector<glm::dvec3> wsBody = FocusBody(context, axis);
     if (wsBody.empty()) return fallBack("empty focus body");

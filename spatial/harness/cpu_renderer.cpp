@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "lexel/spatial/clip_matrix.h"
 #include "lexel/spatial/harness/raster.h"
 #include "lexel/spatial/harness/render_backend.h"
 
@@ -106,14 +107,7 @@ class CpuRenderer final : public RenderBackend {
 
     ShadowMap RenderShadowMap(const LightSpace& lightSpace, const LightMatrix& matrix,
                               Resolution resolution) const override {
-        // Image from world: rows p1, p2, p4 of P composed with X = A [x; 1]; A's columns are the
-        // light-space images of the world basis vectors and of the origin.
-        const glm::dvec3 lsOrigin = lightSpace.ToLight(glm::dvec3(0.0));
-        const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
-        const glm::dmat3 rows = matrix.Rows();
-        ImageFromWorld view;
-        for (int c = 0; c < 3; ++c) view[c] = rows * lsFromWs[c];
-        view[3] = rows * lsOrigin;
+        const ImageFromWorld view = ImageRows(MapFromWorld(lightSpace, matrix));
         RasterBuffer raster = MakeRasterBuffer(resolution);
         const auto lightDepth = [&](const glm::dvec3& ws) { return lightSpace.Depth(ws); };
         // w = p4·X is a length; 1e-9 scene radii keeps clipped vertices finite.

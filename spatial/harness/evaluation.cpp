@@ -13,7 +13,7 @@ Evaluator::Evaluator(const Scene& scene, const RenderBackend& backend)
     : scene_(scene), backend_(backend), bounds_(scene.geometry.ComputeBounds()) {
     if (bounds_.Empty()) throw InputError("geometry: the scene has no triangles");
     frame_ = backend.RenderCamera(scene.camera, scene.camera.resolution);
-    readback_ = MakeReadback(backend, scene.camera, scene.readback);
+    readback_ = RenderReadback(backend, scene.camera, scene.readback);
     if (readback_.wsRelevant.empty())
         throw InputError("/camera: no geometry is visible at the readback resolution (" +
                          std::to_string(scene.readback.width) + "×" +
@@ -81,10 +81,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     const LightSpace lightSpace(light, bounds_);
 
     MethodContext context;
-    context.baseline.scene = &scene_;
-    context.baseline.lightSpace = &lightSpace;
-    context.baseline.wsBounds = bounds_;
-    context.baseline.wsRelevant = readback_.wsRelevant;
+    context.baseline = MakeBaselineContext(scene_, lightSpace, bounds_, readback_.wsRelevant);
 
     // Step 1 of Algorithm 1: boundary samples from a standard (focused) shadow map.
     const LightMatrix focused = FocusedLightMatrix(context.baseline);

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/samples.h"
-#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial {
 

@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "lexel/spatial/scene.h"
+#include "lexel/spatial/harness/scene.h"
 
 namespace lexel::spatial {
 

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "lexel/spatial/scene.h"
+#include "lexel/spatial/harness/scene.h"
 
 namespace lexel::spatial {
 

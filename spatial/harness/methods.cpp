@@ -19,6 +19,19 @@ void CheckSpatialMethod(std::string_view name) {
                      ")");
 }
 
+BaselineContext MakeBaselineContext(const Scene& scene, const LightSpace& lightSpace,
+                                    const Bounds& wsBounds,
+                                    std::span<const glm::dvec3> wsRelevant) {
+    BaselineContext context;
+    context.lightSpace = &lightSpace;
+    context.camera = scene.camera;
+    context.map = scene.shadowMap;
+    context.wsBounds = wsBounds;
+    context.wsRelevant = wsRelevant;
+    context.floorPlane = scene.floorPlane;
+    return context;
+}
+
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
     if (name == "normal") return {NormalLightMatrix(context.baseline), std::nullopt};
     if (name == "focused") return {FocusedLightMatrix(context.baseline), std::nullopt};
@@ -31,8 +44,8 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
         options.refine = name == "optimal-refined";
         options.shear = name == "optimal-shear";
         const glm::dvec3 initialP4 = FocusedLightMatrix(context.baseline).p4;
-        OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4,
-                                                context.baseline.scene->shadowMap, options);
+        OptimizerResult r =
+            OptimizeLightMatrix(*context.samples, initialP4, context.baseline.map, options);
         return {r.matrix, std::move(r)};
     }
     CheckSpatialMethod(name);

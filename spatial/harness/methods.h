@@ -9,13 +9,18 @@
 #include <vector>
 
 #include "lexel/spatial/baselines.h"
+#include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 
+// The baselines' context for a scene: its camera, shadow-map resolution and floor plane.
+BaselineContext MakeBaselineContext(const Scene& scene, const LightSpace& lightSpace,
+                                    const Bounds& wsBounds, std::span<const glm::dvec3> wsRelevant);
+
 struct MethodContext {
-    BaselineContext baseline;               // scene, light space, bounds, visible points (world)
+    BaselineContext baseline;               // light space, camera, map, bounds, visible points
     const LightSamples* samples = nullptr;  // boundary samples and relevant points (light space)
 };
 

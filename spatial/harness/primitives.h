@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "lexel/spatial/scene.h"
+#include "lexel/spatial/harness/scene.h"
 
 namespace lexel::spatial {
 

@@ -25,7 +25,7 @@
 #include <limits>
 #include <vector>
 
-#include "lexel/spatial/scene.h"
+#include "lexel/spatial/harness/scene.h"
 
 namespace lexel::spatial {
 

@@ -48,7 +48,7 @@
 #include <optional>
 #include <span>
 
-#include "lexel/spatial/scene.h"
+#include "lexel/spatial/harness/scene.h"
 
 namespace lexel::spatial {
 

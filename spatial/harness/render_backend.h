@@ -1,5 +1,6 @@
 // The rendering passes of the 3D harness behind one interface (report Algorithm 1 steps 1–2 and
-// the experiment of §3), so that a GPU backend (spatial/gl/) can provide the same passes:
+// the experiment of §3), so that any backend (the CPU reference here, a GPU one) provides the same
+// passes:
 //   1. the camera pass: per pixel the visible world point, its normal and its z-buffer value —
 //      the readback at low resolution, the final frame at full resolution;
 //   2. the shadow-map pass: linear light depth through any light matrix P;
@@ -23,29 +24,19 @@
 #include <string_view>
 #include <vector>
 
+#include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
-#include "lexel/spatial/scene.h"
+#include "lexel/spatial/readback.h"
+#include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
-
-// What the camera sees, per pixel, row-major from the top row.
-struct CameraBuffer {
-    Resolution resolution;
-    std::vector<double> windowDepth;  // the z-buffer x³ ∈ [0, 1] (affine in 1/z_view); 1 if empty
-    std::vector<glm::dvec3> wsPosition;  // the visible point
-    std::vector<glm::dvec3> wsNormal;    // unit geometric normal, turned to face the camera
-    std::vector<std::int32_t> triangle;  // -1 where nothing is visible
-    bool Covered(std::size_t pixel) const { return triangle[pixel] >= 0; }
-};
 
 struct ShadowMap {
     Resolution resolution;
     LightMatrix matrix;
     std::vector<float> depth;  // linear light depth (LightSpace::Depth); +inf where empty
 };
-
-enum class Shade : std::uint8_t { kEmpty = 0, kLit = 1, kShadowed = 2, kFacingAway = 3 };
 
 inline constexpr double kRelativeBias = 1e-5;
 
@@ -63,6 +54,9 @@ class RenderBackend {
     virtual std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                            const ShadowMap& map) const = 0;
 };
+
+// The readback of one camera pose rendered by `backend` (MakeReadback over its camera pass).
+Readback RenderReadback(const RenderBackend& backend, const Camera& camera, Resolution resolution);
 
 // The CPU reference: exact (double) world points per pixel, TBB-parallel, deterministic.
 std::unique_ptr<RenderBackend> MakeCpuRenderer(const TriangleMesh& geometry);

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
 
@@ -173,7 +175,7 @@ TEST(Baselines, EveryMethodIsValidOverTheHemisphereSweep) {
     std::map<std::string, std::string> firstReason;
     for (const Light& light : SweepLights(seed, 300, 20)) {
         const LightSpace ls(light, bounds);
-        const BaselineContext context{&scene, &ls, bounds, relevant};
+        const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
         for (const auto& [name, method] : kMethods) {
             BaselineDiagnostics diagnostics;
             const LightMatrix m = method(context, &diagnostics);
@@ -199,7 +201,8 @@ TEST(NormalBaseline, BoundsCornersTouchAllFourMapSides) {
     for (const Light& light : SweepLights(11, 20, 5)) {
         const LightSpace ls(light, bounds);
         BaselineDiagnostics diagnostics;
-        const LightMatrix m = NormalLightMatrix({&scene, &ls, bounds, relevant}, &diagnostics);
+        const LightMatrix m =
+            NormalLightMatrix(MakeBaselineContext(scene, ls, bounds, relevant), &diagnostics);
         ASSERT_TRUE(diagnostics.fallback.empty()) << diagnostics.fallback;
         glm::dvec2 lo(1e300), hi(-1e300);
         for (const glm::dvec3& x : bounds.Corners()) {
@@ -222,7 +225,7 @@ TEST(FocusedBaseline, SmallerThanNormalAndCoversEveryRelevantPoint) {
     int strictlySmaller = 0;
     for (const Light& light : SweepLights(13, 60, 10)) {
         const LightSpace ls(light, bounds);
-        const BaselineContext context{&scene, &ls, bounds, relevant};
+        const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
         const LightMatrix normal = NormalLightMatrix(context);
         BaselineDiagnostics diagnostics;
         const LightMatrix focused = FocusedLightMatrix(context, &diagnostics);
@@ -247,7 +250,8 @@ TEST(FocusedBaseline, FrustumInsideBoundsGivesTheFrustumRectangle) {
          {Directional({0.3, -1.0, 0.2}), Point({0.0, 2000.0, 100.0}), Point({900.0, 800.0, 0.0})}) {
         const LightSpace ls(light, huge);
         BaselineDiagnostics diagnostics;
-        const LightMatrix focused = FocusedLightMatrix({&scene, &ls, huge, {}}, &diagnostics);
+        const LightMatrix focused =
+            FocusedLightMatrix(MakeBaselineContext(scene, ls, huge, {}), &diagnostics);
         EXPECT_TRUE(diagnostics.fallback.empty()) << diagnostics.fallback;
         std::vector<glm::dvec3> lsCorners;
         for (const glm::dvec3& x : scene.camera.FrustumCorners())
@@ -291,7 +295,8 @@ TEST(LispsmBaseline, BodyDepthsAndOptimalNearForLevelCamera) {
                           Case{Directional({0.0, -1.0, -1.0}), std::sqrt(0.5)}}) {
         const LightSpace ls(c.light, bounds);
         BaselineDiagnostics d;
-        const LightMatrix m = LispsmLightMatrix({&scene, &ls, bounds, relevant}, &d);
+        const LightMatrix m =
+            LispsmLightMatrix(MakeBaselineContext(scene, ls, bounds, relevant), &d);
         EXPECT_TRUE(d.fallback.empty()) << d.fallback;
         EXPECT_NEAR(d.sinGamma, c.sinGamma, 1e-12);
         EXPECT_NEAR(d.zNear, 0.1, 1e-9);
@@ -311,7 +316,7 @@ TEST(LispsmBaseline, LightAlongViewDirectionReducesToFocused) {
     const glm::dvec3 view = glm::normalize(scene.camera.target - scene.camera.position);
     for (const Light& light : {Directional(view), Directional(-view)}) {
         const LightSpace ls(light, bounds);
-        const BaselineContext context{&scene, &ls, bounds, relevant};
+        const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
         BaselineDiagnostics d;
         const LightMatrix lispsm = LispsmLightMatrix(context, &d);
         const LightMatrix focused = FocusedLightMatrix(context);
@@ -333,11 +338,12 @@ TEST(LispsmBaseline, DistantPointLightApproachesTheDirectionalMap) {
     const std::vector<glm::dvec3> relevant = RelevantFloorPoints(scene.camera);
     const glm::dvec3 l = glm::normalize(glm::dvec3(0.3, -1.0, 0.5));
     const LightSpace lsDir(Directional(l), bounds);
-    const LightMatrix mDir = LispsmLightMatrix({&scene, &lsDir, bounds, relevant});
+    const LightMatrix mDir = LispsmLightMatrix(MakeBaselineContext(scene, lsDir, bounds, relevant));
     for (double distance : {1e4, 1e6}) {
         const LightSpace lsPoint(Point(bounds.Center() - distance * l), bounds);
         BaselineDiagnostics d;
-        const LightMatrix mPoint = LispsmLightMatrix({&scene, &lsPoint, bounds, relevant}, &d);
+        const LightMatrix mPoint =
+            LispsmLightMatrix(MakeBaselineContext(scene, lsPoint, bounds, relevant), &d);
         EXPECT_TRUE(d.fallback.empty()) << d.fallback;
         double ratioMin = 1e300, ratioMax = -1e300, worstTexels = 0.0;
         for (const glm::dvec3& x : relevant) {
@@ -363,7 +369,7 @@ TEST(PsmBaseline, LightPerpendicularToViewIsOrthographicInPostPerspectiveSpace) 
     const std::vector<glm::dvec3> relevant = RelevantFloorPoints(scene.camera);
     const LightSpace ls(Directional({0.0, -1.0, 0.0}), bounds);
     BaselineDiagnostics d;
-    const LightMatrix m = PsmLightMatrix({&scene, &ls, bounds, relevant}, &d);
+    const LightMatrix m = PsmLightMatrix(MakeBaselineContext(scene, ls, bounds, relevant), &d);
     EXPECT_TRUE(d.fallback.empty()) << d.fallback;
     EXPECT_NEAR(d.clipLight.w, 0.0, 1e-15);
     EXPECT_TRUE(Valid(m, ls, relevant, scene.shadowMap));
@@ -386,7 +392,7 @@ TEST(PsmBaseline, PointLightOnTheViewAxisLandsOnTheNdcAxis) {
     const glm::dvec3 wsLight = scene.camera.position + glm::dvec3(0.0, 0.0, -50.0);
     const LightSpace ls(Point(wsLight), bounds);
     BaselineDiagnostics d;
-    const LightMatrix m = PsmLightMatrix({&scene, &ls, bounds, relevant}, &d);
+    const LightMatrix m = PsmLightMatrix(MakeBaselineContext(scene, ls, bounds, relevant), &d);
     EXPECT_TRUE(d.fallback.empty()) << d.fallback;
     EXPECT_TRUE(Valid(m, ls, relevant, scene.shadowMap));
     const double n = d.zNear + d.slideBack, f = d.zFar + d.slideBack;
@@ -412,7 +418,7 @@ TEST(PsmBaseline, LightBehindViewerGivesValidInvertedMap) {
     const std::vector<glm::dvec3> relevant = RelevantFloorPoints(scene.camera);
     for (const Light& light : {Directional({0.0, -1.0, -1.0}), Point({0.0, 40.0, 60.0})}) {
         const LightSpace ls(light, bounds);
-        const BaselineContext context{&scene, &ls, bounds, relevant};
+        const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
         BaselineDiagnostics d;
         const LightMatrix psm = PsmLightMatrix(context, &d);
         EXPECT_TRUE(d.fallback.empty()) << d.fallback;
@@ -458,7 +464,7 @@ TEST(PlaneOptimalBaseline, ScreenToMapIsAffineOnTheFloor) {
     for (const Light& light :
          {Point({30.0, 60.0, -70.0}), Point({-90.0, 20.0, 10.0}), Directional({0.4, -1.0, 0.7})}) {
         const LightSpace ls(light, bounds);
-        const BaselineContext context{&scene, &ls, bounds, relevant};
+        const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
         const LightMatrix before = PlaneOptimalProjectiveMatrix(context);
         const auto jBefore = FloorJacobians(before, ls, scene.camera, screenPoints);
         // Before the refit the map is the camera screen at map resolution: u = (400/750) xs.
@@ -487,7 +493,7 @@ TEST(PlaneOptimalBaseline, OffPlanePointBehindP4TurnsTowardFocused) {
     std::vector<glm::dvec3> relevant = RelevantFloorPoints(scene.camera);
     relevant.push_back({0.0, 3.0, 5.0});
     const LightSpace ls(Point({0.0, 5.0, -95.0}), bounds);
-    const BaselineContext context{&scene, &ls, bounds, relevant};
+    const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
     const LightMatrix before = PlaneOptimalProjectiveMatrix(context);
     EXPECT_FALSE(InFront(before.p4, ls.ToLight(relevant.back())));
     BaselineDiagnostics d;
@@ -503,7 +509,7 @@ TEST(PlaneOptimalBaseline, NeedsAFloorPlane) {
     scene.floorPlane.reset();
     const Bounds bounds = FloorBounds();
     const LightSpace ls(Point({0.0, 100.0, 0.0}), bounds);
-    EXPECT_THROW(PlaneOptimalLightMatrix({&scene, &ls, bounds, {}}), InputError);
+    EXPECT_THROW(PlaneOptimalLightMatrix(MakeBaselineContext(scene, ls, bounds, {})), InputError);
 }
 
 TEST(Baselines, ValidForLightsNearTheBoundsAndOtherCameraPoses) {
@@ -527,7 +533,7 @@ TEST(Baselines, ValidForLightsNearTheBoundsAndOtherCameraPoses) {
                 if (light.type == Light::Type::kPoint) light.position *= radius / 100.0;
                 if (light.type == Light::Type::kPoint && bounds.Contains(light.position)) continue;
                 const LightSpace ls(light, bounds);
-                const BaselineContext context{&scene, &ls, bounds, relevant};
+                const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
                 for (const auto& [name, method] : kMethods) {
                     BaselineDiagnostics d;
                     const LightMatrix m = method(context, &d);

@@ -223,7 +223,7 @@ TEST(Optimizer, ShearedSearchKeepsEveryRelevantPointOnTheMap) {
     Camera camera;
     camera.position = {0.0, 1.7, 12.0};
     camera.target = {0.0, 0.5, 0.0};
-    const Readback rb = MakeReadback(*renderer, camera, {180, 180});
+    const Readback rb = RenderReadback(*renderer, camera, {180, 180});
     const Bounds bounds = scene.ComputeBounds();
     for (const glm::dvec3 lightPos : {glm::dvec3(-30, 25, -25), glm::dvec3(40, 15, 10)}) {
         Light light;
@@ -257,7 +257,7 @@ TEST(Optimizer, SearchNeverIncreasesHAndRefinementNeverHurts) {
     Camera camera;
     camera.position = {0.0, 1.7, 12.0};
     camera.target = {0.0, 0.5, 0.0};
-    const Readback rb = MakeReadback(*renderer, camera, {180, 180});
+    const Readback rb = RenderReadback(*renderer, camera, {180, 180});
     const Bounds bounds = scene.ComputeBounds();
     for (const glm::dvec3 lightPos :
          {glm::dvec3(-30, 25, -25), glm::dvec3(40, 15, 10), glm::dvec3(5, 60, -5)}) {
@@ -309,7 +309,7 @@ const WalkthroughFrame& Walkthrough() {
         f.scene = cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
         f.renderer = MakeCpuRenderer(f.scene.geometry);
         f.bounds = f.scene.geometry.ComputeBounds();
-        f.readback = MakeReadback(*f.renderer, f.scene.camera, f.scene.readback);
+        f.readback = RenderReadback(*f.renderer, f.scene.camera, f.scene.readback);
         for (const glm::dvec3& p :
              {glm::dvec3(30, 60, -20), glm::dvec3(-70, 40, 60), glm::dvec3(90, 15, 10)}) {
             Light light;
@@ -424,7 +424,7 @@ TEST(Optimizer, FloorOnlyViewFitsFromThePlanarHull) {
     camera.position = {3.0, 4.0, 5.0};
     camera.target = {2.0, 0.0, -1.0};
     camera.resolution = {180, 180};
-    const Readback rb = MakeReadback(*renderer, camera, camera.resolution);
+    const Readback rb = RenderReadback(*renderer, camera, camera.resolution);
     for (const glm::dvec3& p : rb.wsRelevant) ASSERT_EQ(p.y, 0.0);
     ASSERT_GE(rb.wsRelevantHull.size(), 4u);
     ASSERT_LE(rb.wsRelevantHull.size(), 8u);

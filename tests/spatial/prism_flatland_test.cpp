@@ -28,6 +28,7 @@
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/flatland/sampling.h"
 #include "lexel/spatial/baselines.h"
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/light_space.h"
 #include "lexel/spatial/optimizer.h"
@@ -82,7 +83,7 @@ Prism MakePrism(flatland::FlatScene flat) {
     scene.lights = {light};
     scene.readback = readback;
     const std::unique_ptr<RenderBackend> backend = MakeCpuRenderer(scene.geometry);
-    Readback rb = MakeReadback(*backend, camera, readback);
+    Readback rb = RenderReadback(*backend, camera, readback);
     const LightSpace lightSpace(light, scene.geometry.ComputeBounds());
     return Prism{flat, std::move(scene), std::move(rb), lightSpace};
 }
@@ -241,11 +242,9 @@ TEST_P(PrismOverFlatland, OptimalAxisIsTheFlatlandOptimum) {
     const flatland::LexelSamples flatSamples = FlatlandSamplesAt(pass, samples, 1000.0);
     const flatland::AngleSolution flatOptimum = flatland::SolveL2Exact(flatSamples);
 
-    BaselineContext context;
-    context.scene = &prism.scene;
-    context.lightSpace = &prism.lightSpace;
-    context.wsBounds = prism.scene.geometry.ComputeBounds();
-    context.wsRelevant = prism.readback.wsRelevant;
+    const BaselineContext context =
+        MakeBaselineContext(prism.scene, prism.lightSpace, prism.scene.geometry.ComputeBounds(),
+                            prism.readback.wsRelevant);
     const glm::dvec3 initialP4 = FocusedLightMatrix(context).p4;
 
     OptimizerOptions options;

@@ -3,9 +3,9 @@
 #pragma once
 
 #include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_space.h"
 #include "lexel/spatial/samples.h"
-#include "lexel/spatial/scene.h"
 
 namespace lexel::spatial::testing {
 

@@ -1,39 +1,10 @@
-// Scene geometry helpers and the camera's matrices (report eq. 1).
-#include "lexel/spatial/scene.h"
+// The camera's matrices (report eq. 1).
+#include "lexel/spatial/camera.h"
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace lexel::spatial {
-
-std::array<glm::dvec3, 8> Bounds::Corners() const {
-    std::array<glm::dvec3, 8> corners;
-    for (int i = 0; i < 8; ++i)
-        corners[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
-    return corners;
-}
-
-void TriangleMesh::Append(const TriangleMesh& other) {
-    const auto offset = static_cast<unsigned>(positions.size());
-    positions.insert(positions.end(), other.positions.begin(), other.positions.end());
-    triangles.reserve(triangles.size() + other.triangles.size());
-    for (const glm::uvec3& t : other.triangles) triangles.push_back(t + glm::uvec3(offset));
-}
-
-Bounds TriangleMesh::ComputeBounds() const {
-    Bounds b;
-    for (const glm::uvec3& t : triangles)
-        for (int k = 0; k < 3; ++k) b.Add(glm::dvec3(positions[t[k]]));
-    return b;
-}
-
-glm::dvec3 TriangleMesh::FaceNormal(std::size_t t) const {
-    const glm::uvec3 tri = triangles[t];
-    const glm::dvec3 a(positions[tri[0]]), b(positions[tri[1]]), c(positions[tri[2]]);
-    const glm::dvec3 n = glm::cross(b - a, c - a);
-    const double len = glm::length(n);
-    return len > 0.0 ? n / len : glm::dvec3(0.0);
-}
 
 glm::dmat4 Camera::ViewFromWorld() const { return glm::lookAt(position, target, up); }
 

@@ -1,0 +1,38 @@
+// A light matrix as the 4×4 a rasterizer takes (Chong & Gortler report §2.1, Fig. 1, composed with
+// the light frame of light_space.h): world points → the shadow map, for OpenGL's clip space with
+// depth in [-1, 1] or in [0, 1] (glClipControl GL_ZERO_TO_ONE, Direct3D, Vulkan).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "lexel/spatial/camera.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/light_space.h"
+
+namespace lexel::spatial {
+
+// P·A in world form: rows (p1ᵀA, p2ᵀA, 0, p4ᵀA) with X = A [x; 1] (LightSpace), so that a world
+// point x lands on texel u^i = row_i·[x; 1] / row_4·[x; 1] (i = 1, 2) when row_4·[x; 1] > 0.
+glm::dmat4 MapFromWorld(const LightSpace& lightSpace, const LightMatrix& matrix);
+
+enum class ClipDepth { kMinusOneToOne, kZeroToOne };
+
+// The range of the depth the matrix writes, in world units (see ClipFromWorld).
+struct DepthRange {
+    double near = 0.0, far = 1.0;  // 0 < near < far for point lights; near < far otherwise
+};
+
+// Clip from world for a rasterizer: x_ndc = 2u¹/W - 1 and y_ndc = 2u²/H - 1 (texel row 0 is
+// framebuffer row 0, at y_ndc = -1), w_clip = p4·X > 0 in front of the light, and z_ndc:
+//   - point light: the perspective depth of w = p4·X (the distance from the light along the
+//     optical axis): z_ndc = near at w = range.near and far at w = range.far, monotone in w;
+//   - directional light: z_ndc affine in d·(s/w), with d = LightSpace::Depth and s the light
+//     frame's fixed third coordinate, mapping d = range.near and range.far to the ends of the
+//     depth range exactly where w = s (an unwarped map, p4 = (0, 0, 1)); w is constant along every
+//     light ray, so z_ndc is monotone in d along each ray as a depth test needs.
+// "near" and "far" are -1 and 1, or 0 and 1 for ClipDepth::kZeroToOne. Points outside the range
+// are clipped (or clamped, with GL_DEPTH_CLAMP).
+glm::dmat4 ClipFromWorld(const LightSpace& lightSpace, const LightMatrix& matrix, Resolution map,
+                         DepthRange range, ClipDepth convention);
+
+}  // namespace lexel::spatial

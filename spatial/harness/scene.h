@@ -1,0 +1,53 @@
+// The 3D scenes of Chong & Gortler's experiments (report §3): a triangle soup in world space, the
+// camera, point and directional lights or a sweep of them, and the resolutions of the shadow map
+// and of the low-resolution camera readback. The harness renders them; the core of lexel::spatial
+// never sees a Scene (it takes cameras, lights, bounds and buffers).
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lexel/spatial/bounds.h"
+#include "lexel/spatial/camera.h"
+#include "lexel/spatial/light_space.h"
+
+namespace lexel::spatial {
+
+// Indexed triangles, world units. Positions are stored as float, as a renderer would; the passes
+// recompute every intersection in double from them.
+struct TriangleMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::uvec3> triangles;
+
+    void Append(const TriangleMesh& other);
+    Bounds ComputeBounds() const;
+    // Unit geometric normal of triangle t, counter-clockwise winding; zero when degenerate.
+    glm::dvec3 FaceNormal(std::size_t t) const;
+};
+
+// `light_sweep` of a case: `count` point lights uniformly at random on the upper hemisphere
+// (y ≥ centre.y) of radius `radius` around the centre of the floor, as in report §3.
+struct LightSweep {
+    int count = 500;
+    std::uint64_t seed = 7;
+    double radius = 100.0;
+};
+
+struct Scene {
+    std::string name;
+    Camera camera;
+    std::vector<Light> lights;
+    Resolution shadowMap{400, 400};
+    Resolution readback{180, 180};
+    TriangleMesh geometry;
+    // The floor plane n·x + d = 0 as (n, d) with |n| = 1, n facing up: set from the first `plane`
+    // primitive or by the floor_objects generator; plane-optimal needs it.
+    std::optional<glm::dvec4> floorPlane;
+    std::optional<LightSweep> lightSweep;
+    std::vector<Camera> cameraPath;  // optional sequence of poses (temporal hysteresis)
+};
+
+}  // namespace lexel::spatial
