@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <numbers>
 #include <random>
 
 #include "lexel/flatland/angle_solvers.h"
@@ -22,7 +23,7 @@ LexelSamples SyntheticSamples(std::size_t n) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<double> angle(n), g(n);
     for (std::size_t i = 0; i < n; ++i) {
-        angle[i] = (-30.0 + 60.0 * u(rng)) * M_PI / 180.0;
+        angle[i] = (-30.0 + 60.0 * u(rng)) * std::numbers::pi / 180.0;
         g[i] = std::pow(10.0, 2.0 * u(rng)) * 100.0;
     }
     return MakeLexelSamples(angle, g, 0.0, 1000.0);

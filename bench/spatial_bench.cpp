@@ -40,6 +40,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -83,9 +84,9 @@ TriangleMesh Floor() {
 TriangleMesh UvSphere(const glm::vec3& wsCentre, float radius) {
     TriangleMesh mesh;
     for (int s = 0; s <= kSphereStacks; ++s) {
-        const double polar = M_PI * s / kSphereStacks;
+        const double polar = std::numbers::pi * s / kSphereStacks;
         for (int l = 0; l <= kSphereSlices; ++l) {
-            const double azimuth = 2 * M_PI * l / kSphereSlices;
+            const double azimuth = 2 * std::numbers::pi * l / kSphereSlices;
             const glm::dvec3 unit(std::sin(polar) * std::cos(azimuth), std::cos(polar),
                                   std::sin(polar) * std::sin(azimuth));
             mesh.positions.push_back(wsCentre + radius * glm::vec3(unit));

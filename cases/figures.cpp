@@ -9,12 +9,14 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
 #include <tuple>
 
 #include "lexel/flatland/scene.h"
+#include "lexel/solvers/geometry.h"
 
 namespace lexel::cases {
 
@@ -132,7 +134,7 @@ void DrawLegend(cairo_t* cr, const PxRect& plot, const std::vector<std::string>&
         cairo_line_to(cr, pxX + 8 + pxSwatch, pxRowY);
         cairo_stroke(cr);
         if (markers) {
-            cairo_arc(cr, pxX + 8 + pxSwatch / 2, pxRowY, 3.5, 0, 2 * M_PI);
+            cairo_arc(cr, pxX + 8 + pxSwatch / 2, pxRowY, 3.5, 0, 2 * std::numbers::pi);
             cairo_fill(cr);
         }
         cairo_set_source_rgb(cr, 0, 0, 0);
@@ -151,7 +153,7 @@ void DrawAxesFrame(cairo_t* cr, const PxRect& plot, const std::string& xLabel,
     ShowText(cr, plot.x + plot.width / 2, plot.Bottom() + 42, xLabel, 0.5, 0);
     cairo_save(cr);
     cairo_translate(cr, plot.x - 62, plot.y + plot.height / 2);
-    cairo_rotate(cr, -M_PI / 2);
+    cairo_rotate(cr, -std::numbers::pi / 2);
     ShowText(cr, 0, 0, yLabel, 0.5, 0.5);
     cairo_restore(cr);
 }
@@ -226,8 +228,6 @@ void RenderPng(const std::string& pngPath, int pxWidth, int pxHeight, Draw&& dra
 }
 
 // ----- the case diagram -------------------------------------------------------------------------
-
-double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // World space to device pixels with equal aspect ratio and y up.
 struct WorldView {
@@ -398,8 +398,8 @@ void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& sc
                     ? std::max(3, static_cast<int>(std::lround(static_cast<double>(kFanRays) *
                                                                frustum.lexels / totalLexels)))
                     : kFanRays;
-            const double rayLow = frustum.wsRayLowDeg * M_PI / 180.0;
-            const double rayHigh = frustum.wsRayHighDeg * M_PI / 180.0;
+            const double rayLow = Radians(frustum.wsRayLowDeg);
+            const double rayHigh = Radians(frustum.wsRayHighDeg);
             PlaneDrawing plane{frustum.wsAxis,
                                std::tan(flatland::WrapAngle(rayLow - frustum.wsAxis)),
                                std::tan(flatland::WrapAngle(rayHigh - frustum.wsAxis)), rays,
@@ -426,13 +426,13 @@ void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& sc
     cairo_set_source_rgba(cr, 0, 0, 0, 0.35);
     for (const auto& sample : pass.samples) {
         const Vec2 px = view.ToPx(sample.wsPoint);
-        cairo_arc(cr, px.x(), px.y(), 1.2, 0, 2 * M_PI);
+        cairo_arc(cr, px.x(), px.y(), 1.2, 0, 2 * std::numbers::pi);
         cairo_fill(cr);
     }
 
     const flatland::FlatCamera& camera = scene.camera;
     const Vec2 wsDirection = camera.wsDirection.normalized();
-    const double halfFov = 0.5 * camera.fovDeg * M_PI / 180.0;
+    const double halfFov = Radians(0.5 * camera.fovDeg);
     SetColour(cr, kCameraColour);
     cairo_set_line_width(cr, 1.5);
     for (const double side : {-1.0, 1.0}) {
@@ -454,7 +454,7 @@ void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& sc
     cairo_fill(cr);
 
     const Vec2 pxLight = view.ToPx(scene.wsLight);
-    cairo_arc(cr, pxLight.x(), pxLight.y(), 8, 0, 2 * M_PI);
+    cairo_arc(cr, pxLight.x(), pxLight.y(), 8, 0, 2 * std::numbers::pi);
     cairo_set_source_rgb(cr, 1.0, 0.78, 0.1);
     cairo_fill_preserve(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
@@ -636,7 +636,7 @@ void WriteLowresPlot(const std::string& pngPath, const std::string& title,
             }
             cairo_stroke(cr);
             for (const Vec2& px : pxPoints) {
-                cairo_arc(cr, px.x(), px.y(), 3.5, 0, 2 * M_PI);
+                cairo_arc(cr, px.x(), px.y(), 3.5, 0, 2 * std::numbers::pi);
                 cairo_fill(cr);
             }
         }

@@ -5,6 +5,7 @@
 #include <limits>
 #include <random>
 
+#include "lexel/solvers/geometry.h"
 #include "lexel/solvers/newton.h"
 #include "lexel/solvers/polynomial.h"
 
@@ -208,7 +209,7 @@ AngleSolution SolveL2Newton(const LexelSamples& samples, const NewtonRestartOpti
         return {et * s, ett * s * s + 2.0 * t * s * et};
     };
     std::mt19937_64 rng(options.seed);
-    const double maxOffset = options.maxOffsetDeg * M_PI / 180.0;
+    const double maxOffset = Radians(options.maxOffsetDeg);
     std::uniform_real_distribution<double> randomOffset(-maxOffset, maxOffset);
     NewtonOptions newtonOptions;
     newtonOptions.lower = xLo;

@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "lexel/solvers/geometry.h"
 
 namespace lexel::flatland {
 
 namespace {
-double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-Vec2 Perp(const Vec2& v) { return {-v.y(), v.x()}; }
 // The optical axis is perpendicular to a film (lexel plane) direction v.
-double AxisOfFilmDirection(const Vec2& v) { return std::atan2(v.y(), v.x()) + 0.5 * M_PI; }
+double AxisOfFilmDirection(const Vec2& v) {
+    return std::atan2(v.y(), v.x()) + 0.5 * std::numbers::pi;
+}
 }  // namespace
 
 BaselineAxis NormalAxis(const SamplingPass& pass) { return {pass.wsAxis0, {}}; }
@@ -43,7 +46,7 @@ enum class PsmFilm { kPole, kNearPlane };
 BaselineAxis PsmAxisImpl(const FlatScene& scene, const SamplingPass& pass, PsmFilm film) {
     const FlatCamera& cam = scene.camera;
     const Vec2 d = cam.wsDirection, u = Perp(d);
-    const double tanHalf = std::tan(0.5 * cam.fovDeg * M_PI / 180.0);
+    const double tanHalf = std::tan(Radians(0.5 * cam.fovDeg));
     double n = cam.near, f = cam.far;
     if (!(n > 0.0) || !std::isfinite(f)) {
         n = INFINITY, f = 0.0;
@@ -77,7 +80,7 @@ BaselineAxis PsmAxisImpl(const FlatScene& scene, const SamplingPass& pass, PsmFi
         rayAngle[i] = WrapAngle(angle - ref);
     }
     const auto [lo, hi] = std::minmax_element(rayAngle.begin(), rayAngle.end());
-    if (*hi - *lo >= M_PI)
+    if (*hi - *lo >= std::numbers::pi)
         return {pass.wsAxis0, "PPS rays span 180 degrees or more; normal axis used"};
     const double axis = ref + 0.5 * (*lo + *hi);
     const Vec2 a{std::cos(axis), std::sin(axis)};

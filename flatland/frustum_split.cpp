@@ -8,6 +8,7 @@
 #include "lexel/flatland/angle_solvers.h"
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/geometry.h"
 #include "lexel/solvers/lagrange_allocation.h"
 
 namespace lexel::flatland {
@@ -150,8 +151,8 @@ MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full,
     for (std::size_t j = 0; j < count; ++j) {
         const PlannedFrustum& planned = split.frusta[j];
         FrustumReport fr;
-        fr.wsRayLowDeg = (split.wsAxis0 + low[j]) * 180.0 / M_PI;
-        fr.wsRayHighDeg = (split.wsAxis0 + high[j]) * 180.0 / M_PI;
+        fr.wsRayLowDeg = Degrees(split.wsAxis0 + low[j]);
+        fr.wsRayHighDeg = Degrees(split.wsAxis0 + high[j]);
         fr.lexels = planned.lexels;
         double axis = planned.wsAxis;
         auto f = FootprintsFromScratch(parts[j], scene.wsLight, axis, planned.lexels,

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "lexel/solvers/geometry.h"
 
 namespace lexel::flatland {
 
@@ -64,7 +67,7 @@ std::vector<double> RemappedFootprints(const LexelSamples& samples, double t) {
 double WsAxisFromT(const LexelSamples& samples, double t) { return samples.wsAxis0 + std::atan(t); }
 
 double TFromLexelPlaneDeg(const LexelSamples& samples, double lexelPlaneDeg) {
-    return std::tan(lexelPlaneDeg * M_PI / 180.0 - samples.wsAxis0);
+    return std::tan(Radians(lexelPlaneDeg) - samples.wsAxis0);
 }
 
 std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
@@ -95,9 +98,10 @@ std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pas
     }
     if (!std::isnan(wsRayLow)) {
         // Film coordinates of the bounding rays: s = tan(β − θ); both must be in front.
-        const double xLow = std::remainder(wsRayLow - wsAxis, 2 * M_PI);
-        const double xHigh = std::remainder(wsRayHigh - wsAxis, 2 * M_PI);
-        if (!(std::abs(xLow) < M_PI / 2 && std::abs(xHigh) < M_PI / 2)) return std::nullopt;
+        const double xLow = std::remainder(wsRayLow - wsAxis, 2 * std::numbers::pi);
+        const double xHigh = std::remainder(wsRayHigh - wsAxis, 2 * std::numbers::pi);
+        if (!(std::abs(xLow) < std::numbers::pi / 2 && std::abs(xHigh) < std::numbers::pi / 2))
+            return std::nullopt;
         lo = std::min(lo, std::tan(xLow));
         hi = std::max(hi, std::tan(xHigh));
     }

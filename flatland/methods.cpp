@@ -1,9 +1,9 @@
 #include "lexel/flatland/methods.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <optional>
 
 #include "lexel/flatland/angle_solvers.h"
@@ -12,6 +12,7 @@
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/flatland/sampling.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/stopwatch.h"
 
 namespace lexel::flatland {
 
@@ -34,11 +35,6 @@ void CheckFlatlandMethod(const std::string& name) {
 
 namespace {
 
-double ElapsedMs(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
 // Measures a single-frustum axis at full resolution. The decision pass may see a narrower sweep
 // than the full pass, so an axis valid for it can be invalid at full resolution; it is then
 // clamped one part in 1e3 of the valid range inside the nearer end, and the note says so.
@@ -51,7 +47,7 @@ MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full,
         const double xLo = std::atan(valid.lo), xHi = std::atan(valid.hi);
         const double inset = 1e-3 * (xHi - xLo);
         double x = std::atan(t);
-        if (!std::isfinite(t)) x = M_PI / 2;
+        if (!std::isfinite(t)) x = std::numbers::pi / 2;
         x = std::clamp(x, xLo + inset, xHi - inset);
         t = std::tan(x);
         note += (note.empty() ? "" : "; ") + std::string("angle clamped into the valid range");
@@ -82,7 +78,7 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
     report.lexels = scene.lexels;
     report.metric = metric;
 
-    auto start = std::chrono::steady_clock::now();
+    Stopwatch timer;
     if (!fullPass)
         fullPass =
             std::make_shared<const SamplingPass>(RunSamplingPass(scene, scene.camera.pixels));
@@ -93,19 +89,19 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
     if (scene.DecisionPixels() != scene.camera.pixels)
         coarse = RunSamplingPass(scene, scene.DecisionPixels());
     const SamplingPass& decision = coarse ? *coarse : full;
-    report.samplingMs = ElapsedMs(start);
+    report.samplingMs = timer.Ms();
     report.pixelsVisible = static_cast<int>(full.samples.size());
     const LexelSamples fullSamples = MakeLexelSamples(full, scene.lexels);
     const LexelSamples samples = MakeLexelSamples(decision, scene.lexels);
 
     for (const std::string& method : methods) {
-        start = std::chrono::steady_clock::now();
+        timer.Restart();
         if (method == "split-greedy" || method == "split-dp") {
             const FrustaOptions options = scene.frusta.value_or(FrustaOptions{});
             const SplitResult split = SplitLightFrustum(
                 decision, scene.lexels, options,
                 method == "split-dp" ? SplitStrategy::kDynamicProgram : SplitStrategy::kGreedy);
-            const double ms = ElapsedMs(start);
+            const double ms = timer.Ms();
             MethodReport r = EvaluateSplit(scene, full, split);
             r.method = method;
             r.solveMs = ms;
@@ -139,7 +135,7 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
             solution.wsAxis = axis.wsAxis;
             solution.note = axis.note;
         }
-        const double ms = ElapsedMs(start);
+        const double ms = timer.Ms();
         report.methods.push_back(
             EvaluateAxis(scene, full, fullSamples, method, solution.wsAxis, solution.note, ms));
     }

@@ -5,21 +5,18 @@
 #include <string>
 
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/geometry.h"
 
 namespace lexel::flatland {
 
-namespace {
-double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-Vec2 Perp(const Vec2& v) { return {-v.y(), v.x()}; }  // +90°
-double Deg2Rad(double d) { return d * std::numbers::pi / 180.0; }
-}  // namespace
+namespace {}  // namespace
 
 std::optional<RayHit> CastPixelRay(const FlatCamera& camera,
                                    const std::vector<FlatSegment>& segments, int pixels, double p) {
     const Vec2 d = camera.wsDirection;
     const Vec2 u = Perp(d);
     const double sigma = 2.0 * p / pixels - 1.0;
-    const Vec2 ray = d + std::tan(Deg2Rad(0.5 * camera.fovDeg)) * sigma * u;  // ray·d == 1
+    const Vec2 ray = d + std::tan(Radians(0.5 * camera.fovDeg)) * sigma * u;  // ray·d == 1
     std::optional<RayHit> best;
     for (std::size_t s = 0; s < segments.size(); ++s) {
         const Vec2 a = segments[s].a;
@@ -45,7 +42,7 @@ double PixelDerivativeAlong(const FlatCamera& camera, int pixels, const Vec2& ws
     const Vec2 u = Perp(d);
     const Vec2 cs = wsPoint - camera.wsPosition;
     const double xc = cs.dot(d), yc = cs.dot(u);
-    const double scale = pixels / (2.0 * std::tan(Deg2Rad(0.5 * camera.fovDeg)));
+    const double scale = pixels / (2.0 * std::tan(Radians(0.5 * camera.fovDeg)));
     return scale * (wsTangent.dot(u) * xc - wsTangent.dot(d) * yc) / (xc * xc);
 }
 
@@ -94,7 +91,7 @@ SamplingPass RunSamplingPass(const FlatScene& scene, int pixels) {
     const double sweep = hi - lo;
     if (sweep >= std::numbers::pi * (1.0 - 1e-12))
         throw InputError("/light/position: the visible points span " +
-                         std::to_string(sweep * 180.0 / std::numbers::pi) +
+                         std::to_string(Degrees(sweep)) +
                          " degrees as seen from the light; no lexel plane has them all in front");
     // Zero extent: all visible points on one ray from the light (1e-12 rad is the angular
     // resolution of double-precision atan2 at unit scale).

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/geometry.h"
 
 namespace lexel::flatland {
 
@@ -86,7 +87,7 @@ double WrapAngle(double radians) {
 }
 
 double LexelPlaneDegFromAxis(double wsAxisAngle) {
-    double deg = std::remainder(wsAxisAngle * 180.0 / std::numbers::pi, 180.0);  // [-90, 90]
+    double deg = std::remainder(Degrees(wsAxisAngle), 180.0);  // [-90, 90]
     if (deg <= -90.0) deg += 180.0;
     return deg;
 }

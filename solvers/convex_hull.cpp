@@ -171,4 +171,13 @@ std::vector<Eigen::Vector2d> ConvexHull(std::span<const Eigen::Vector2d> points)
     return hull;
 }
 
+std::vector<glm::dvec2> ConvexHull(std::span<const glm::dvec2> points) {
+    std::vector<Eigen::Vector2d> pts(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) pts[i] = {points[i].x, points[i].y};
+    const std::vector<Eigen::Vector2d> hull = ConvexHull(pts);
+    std::vector<glm::dvec2> out(hull.size());
+    for (std::size_t i = 0; i < hull.size(); ++i) out[i] = {hull[i].x(), hull[i].y()};
+    return out;
+}
+
 }  // namespace lexel

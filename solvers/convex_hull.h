@@ -21,6 +21,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
 
@@ -46,5 +47,7 @@ int DotSign(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vec
 // input points, bit for bit. Throws InputError ("convex hull: point K is not finite") on a NaN
 // or infinite coordinate.
 std::vector<Eigen::Vector2d> ConvexHull(std::span<const Eigen::Vector2d> points);
+// The same for GLM points.
+std::vector<glm::dvec2> ConvexHull(std::span<const glm::dvec2> points);
 
 }  // namespace lexel

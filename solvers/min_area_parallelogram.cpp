@@ -1,3 +1,53 @@
+// The minimum-area enclosing parallelogram flush with a hull edge (min_area_parallelogram.h).
+//
+// Chong & Gortler's report (§2.3, Algorithm 1 step 4b-ii, Fig. 3) adds a heuristic shear to the
+// minimum-area rectangle: while looping over the hull edges, "check to see if the minimum and
+// maximum extents in the current edge direction can be shifted to better line up with the edge's
+// endpoints". Here that shear is optimized exactly.
+//
+// For hull edge a → b let u be its unit direction and v = u rotated +90° (the inward normal of a
+// counter-clockwise hull), and give every hull vertex y_i the edge coordinates
+//   s_i = u·(y_i - a),  t_i = v·(y_i - a) ≥ 0          (t = 0 on the edge's own line),
+// with height H = max t_i. The shear s' = s + k t fixes the edge (t = 0) and the height and slides
+// every point along u in proportion to its height. The region s' ∈ [min, max], t ∈ [0, H] is a
+// parallelogram (sides along u and along v - k u) of area E(k) · H, where
+//   E(k) = max_i (s_i + k t_i) - min_i (s_i + k t_i)
+// is a maximum of lines minus a minimum of lines: convex and piecewise linear in k. Its slope is
+// t_R - t_L, the heights of the vertices R and L that attain the max and the min. Those change only
+// where two adjacent hull vertices j, j+1 tie, at the breakpoint
+//   κ_j = (s_j - s_{j+1}) / (t_{j+1} - t_j)      (hull edges not parallel to a → b),
+// the edge normal's direction: on the right chain (b up to the top, t rising) R steps j → j+1, on
+// the left chain (the top down to a, t falling) L does. As k → -∞ the max is b's (t = 0) and the
+// min the top's (t = H): slope -H; each breakpoint adds |t_{j+1} - t_j|, up to +H at k → +∞. So
+// E is bounded below and its minimizers form a closed interval [kLo, kHi] that starts at the
+// first breakpoint where the slope becomes ≥ 0 and ends at the next one when the slope is exactly
+// 0 there (the flat stretch where R = b, L = a: the extent is then |b - a|, the least any shear can
+// give). Merging the two chains' breakpoints in increasing k finds it in O(h); among the minimizers
+// k* is the one closest to 0 (clamp(0, kLo, kHi)), so an edge that cannot gain keeps k* = 0 and
+// its rectangle exactly. A gain under 1e-12 of E(0) counts as none (rounding, e.g. points on a
+// rectangle whose sides are perpendicular only to the last bit), so k* = 0 there too. The shear is
+// bounded: E(k) ≥ |k| H - E(0) and E(k*) ≤ E(0) give |k*| ≤ 2 E(0) / H, finite whenever H > 0,
+// which holds for every edge of a hull of ≥ 3 strictly convex vertices.
+//
+// The report's rule is a special case. In Fig. 3 both extents of the vertices off the edge lie
+// left of the edge's endpoints (min < s_a = 0, max < s_b); shearing right until the leftmost
+// off-edge vertex lines up with a is exactly the walk above stopping at the left-chain breakpoint
+// where the min passes to a. If no vertex overshoots b on the way, the slope there becomes
+// t_b - t_a = 0 and k* is that breakpoint (the plateau's end nearest 0) with extent |b - a|; if
+// one does, the exact walk stops earlier, where the overshoot would start to cost more than the
+// alignment gains, and the result is never larger than the heuristic's.
+//
+// Over all edges the least E(k*) · H is the minimum-area enclosing parallelogram of the hull. Some
+// minimum has a side pair flush with a hull edge: with one pair's direction θ2 fixed, the strip
+// of the other pair, with lines at angle θ, has width w(θ) = d |cos(θ - φ)| while its two
+// supporting vertices stay the same (d, φ fixed by them), and the area w(θ) / |sin(θ - θ2)| · w2
+// has derivative ∓ d w2 cos(θ2 - φ) / sin²(θ - θ2), of one sign there; so it is least where the
+// supporting vertices change, i.e. where θ is a hull-edge direction. For that edge the best other
+// direction is the k*-optimal one. (Both pairs can be made flush, and the optimum found in O(h) by
+// rotating calipers: C. Schwarz, J. Teich, E. Welzl & B. Evans, 1994 technical report, presented
+// with proofs by G. Rote, "The largest contained quadrilateral and the smallest enclosing
+// parallelogram of a convex polygon", arXiv:1905.11203, 2019.) Here each edge costs O(h), O(h²)
+// in all: h, the hull size, is small in the 3D fitter, and the hull itself is O(n log n).
 #include "lexel/solvers/min_area_parallelogram.h"
 
 #include <cmath>
@@ -8,47 +58,12 @@
 
 #include "lexel/solvers/convex_hull.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/geometry.h"
+#include "lexel/solvers/min_area_rectangle.h"
 
 namespace lexel {
 
-double Parallelogram2::Area() const {
-    const double sine = axisU.x() * axisV.y() - axisU.y() * axisV.x();
-    return 4.0 * halfU * halfV * sine;
-}
-
-std::array<Eigen::Vector2d, 4> Parallelogram2::Corners() const {
-    const Eigen::Vector2d u = halfU * axisU;
-    const Eigen::Vector2d v = halfV * axisV;
-    return {center - u - v, center + u - v, center + u + v, center - u + v};
-}
-
-std::array<Eigen::Vector2d, 2> Parallelogram2::DualAxes() const {
-    // The rows of [axisU axisV]⁻¹: each axis turned a quarter and divided by the determinant.
-    const double det = axisU.x() * axisV.y() - axisU.y() * axisV.x();
-    return {Eigen::Vector2d(axisV.y(), -axisV.x()) / det,
-            Eigen::Vector2d(-axisU.y(), axisU.x()) / det};
-}
-
-bool Parallelogram2::Contains(const Eigen::Vector2d& p, double tolerance) const {
-    const auto [dualU, dualV] = DualAxes();
-    const Eigen::Vector2d d = p - center;
-    return std::abs(dualU.dot(d)) <= halfU + tolerance &&
-           std::abs(dualV.dot(d)) <= halfV + tolerance;
-}
-
-Parallelogram2 ToParallelogram(const Rectangle2& r) {
-    Parallelogram2 p;
-    p.center = r.center;
-    p.axisU = r.axisU;
-    p.axisV = r.axisV;
-    p.halfU = r.halfU;
-    p.halfV = r.halfV;
-    return p;
-}
-
 namespace {
-
-Eigen::Vector2d RotatedPlus90(const Eigen::Vector2d& u) { return {-u.y(), u.x()}; }
 
 // One candidate: the least parallelogram flush with hull edge i → i+1 (h ≥ 3, strictly convex,
 // counter-clockwise), by the breakpoint walk of the header comment. `s` and `t` are scratch of
@@ -67,7 +82,7 @@ EdgeCandidate FitEdge(std::span<const Eigen::Vector2d> hull, std::size_t i, std:
     const Eigen::Vector2d& a = hull[i];
     const Eigen::Vector2d edge = hull[iB] - a;
     const Eigen::Vector2d u = edge / std::hypot(edge.x(), edge.y());
-    const Eigen::Vector2d v = RotatedPlus90(u);
+    const Eigen::Vector2d v = Perp(u);
     // Edge coordinates relative to a (far-from-origin clouds keep their low digits). The edge's
     // own endpoints are put exactly on t = 0, so that the stretch where b and a attain the max and
     // the min has slope exactly 0 below.
@@ -194,7 +209,7 @@ Parallelogram2 ParallelogramOfValidHull(std::span<const Eigen::Vector2d> hull,
                                         ParallelogramStructure* structure) {
     if (hull.size() < 3) {
         if (structure) *structure = {};
-        return ToParallelogram(MinAreaRectangleOfHull(hull));
+        return MinAreaRectangleOfHull(hull);
     }
     std::vector<double> s(hull.size()), t(hull.size());
     EdgeCandidate best;
@@ -237,17 +252,6 @@ Parallelogram2 ParallelogramFlushWithEdge(std::span<const Eigen::Vector2d> ccwHu
     EdgeCandidate c = FitEdge(ccwHull, edge, s, t);
     if (structure) *structure = c.structure;
     return c.parallelogram;
-}
-
-Parallelogram2 OrientLongSideAlong(const Parallelogram2& p, bool longSideOnU) {
-    const bool swap = longSideOnU ? p.halfU < p.halfV : p.halfV < p.halfU;
-    if (!swap) return p;
-    Parallelogram2 q = p;
-    q.axisU = p.axisV;  // (axisV, -axisU) has the same orientation as (axisU, axisV)
-    q.axisV = -p.axisU;
-    q.halfU = p.halfV;
-    q.halfV = p.halfU;
-    return q;
 }
 
 }  // namespace lexel

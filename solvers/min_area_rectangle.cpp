@@ -1,3 +1,20 @@
+// Minimum-area enclosing rectangle of a planar point set, by rotating calipers
+// (min_area_rectangle.h).
+//
+// H. Freeman & R. Shapira, "Determining the minimum-area encasing rectangle for an arbitrary
+// closed curve", CACM 18(7), 1975: the minimum-area rectangle around a convex polygon has one
+// side collinear with an edge of the polygon, so only the h hull-edge directions need trying.
+// G. T. Toussaint, "Solving geometric problems with the rotating calipers", Proc. IEEE MELECON
+// 1983: as the base edge steps counter-clockwise around the hull, the three other supporting
+// vertices (farthest along the edge, farthest from it, farthest against it) only ever advance
+// counter-clockwise too, so all h candidate rectangles cost O(h) together after the hull.
+//
+// Use in lexel: S. Brabec, T. Annen & H.-P. Seidel, "Practical Shadow Mapping", Journal of
+// Graphics Tools 7(4), 2002, fit the light frustum to the minimum enclosing rectangle of the
+// visible points, found by rotating calipers, then translate and scale it to use the whole
+// shadow map. The 3D fitter does the same with the affine part of the light matrix: this
+// rectangle around the 2D convex hull of the projected points, its longer side laid along the
+// map's longer dimension (OrientLongSideAlong).
 #include "lexel/solvers/min_area_rectangle.h"
 
 #include <cmath>
@@ -9,39 +26,26 @@
 
 #include "lexel/solvers/convex_hull.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/geometry.h"
 
 namespace lexel {
 
-std::array<Eigen::Vector2d, 4> Rectangle2::Corners() const {
-    const Eigen::Vector2d u = halfU * axisU;
-    const Eigen::Vector2d v = halfV * axisV;
-    return {center - u - v, center + u - v, center + u + v, center - u + v};
-}
-
-bool Rectangle2::Contains(const Eigen::Vector2d& p, double tolerance) const {
-    const Eigen::Vector2d d = p - center;
-    return std::abs(d.dot(axisU)) <= halfU + tolerance &&
-           std::abs(d.dot(axisV)) <= halfV + tolerance;
-}
-
 namespace {
 
-Eigen::Vector2d RotatedPlus90(const Eigen::Vector2d& u) { return {-u.y(), u.x()}; }
-
-Rectangle2 PointRectangle(const Eigen::Vector2d& p) {
-    Rectangle2 r;  // axisU = (1, 0), axisV = (0, 1), zero extents
+Parallelogram2 PointRectangle(const Eigen::Vector2d& p) {
+    Parallelogram2 r;  // axisU = (1, 0), axisV = (0, 1), zero extents
     r.center = p;
     return r;
 }
 
 // Zero-width rectangle along the segment a→b (a ≠ b).
-Rectangle2 SegmentRectangle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+Parallelogram2 SegmentRectangle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     const Eigen::Vector2d d = b - a;
     const double length = std::hypot(d.x(), d.y());  // hypot: no overflow in the squares
-    Rectangle2 r;
+    Parallelogram2 r;
     r.center = 0.5 * (a + b);
     r.axisU = d / length;
-    r.axisV = RotatedPlus90(r.axisU);
+    r.axisV = Perp(r.axisU);
     r.halfU = 0.5 * length;
     r.halfV = 0.0;
     return r;
@@ -59,11 +63,12 @@ Rectangle2 SegmentRectangle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) 
 // O(h) in total. Whether the next vertex is farther is the sign of a dot or cross product of two
 // edge vectors, decided exactly (DotSign, CrossSign), so the climb finds the exact supporting
 // vertices; only the extents computed from them are rounded.
-Rectangle2 RotatingCalipers(std::span<const Eigen::Vector2d> hull) {
+Parallelogram2 RotatingCalipers(std::span<const Eigen::Vector2d> hull,
+                                ParallelogramStructure* structure) {
     const std::size_t h = hull.size();
     const auto next = [h](std::size_t k) { return k + 1 == h ? 0 : k + 1; };
     std::size_t right = 1, top = 1, left = 1;
-    Rectangle2 best;
+    Parallelogram2 best;
     double bestArea = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < h; ++i) {
         const Eigen::Vector2d& a = hull[i];
@@ -78,7 +83,7 @@ Rectangle2 RotatingCalipers(std::span<const Eigen::Vector2d> hull) {
 
         const Eigen::Vector2d edge = b - a;
         const Eigen::Vector2d u = edge / std::hypot(edge.x(), edge.y());
-        const Eigen::Vector2d v = RotatedPlus90(u);
+        const Eigen::Vector2d v = Perp(u);
         // Extents relative to the edge's start vertex, not the origin, so coordinates far from
         // the origin do not cost the extents their low digits.
         const double uMax = (hull[right] - a).dot(u);
@@ -92,31 +97,38 @@ Rectangle2 RotatingCalipers(std::span<const Eigen::Vector2d> hull) {
             best.halfU = 0.5 * (uMax - uMin);
             best.halfV = 0.5 * vMax;
             best.center = a + (0.5 * (uMax + uMin)) * u + best.halfV * v;
+            if (structure)
+                *structure = {static_cast<int>(i),    -1,
+                              static_cast<int>(left), static_cast<int>(right),
+                              static_cast<int>(top),  0.0};
         }
     }
     return best;
 }
 
 // Dispatch on a hull already in ConvexHull's form.
-Rectangle2 RectangleOfValidHull(std::span<const Eigen::Vector2d> hull) {
+Parallelogram2 RectangleOfValidHull(std::span<const Eigen::Vector2d> hull,
+                                    ParallelogramStructure* structure) {
+    if (structure) *structure = {};
     if (hull.size() == 1) return PointRectangle(hull[0]);
     if (hull.size() == 2) return SegmentRectangle(hull[0], hull[1]);
-    return RotatingCalipers(hull);
+    return RotatingCalipers(hull, structure);
 }
 
 }  // namespace
 
-Rectangle2 MinAreaRectangle(std::span<const Eigen::Vector2d> points) {
+Parallelogram2 MinAreaRectangle(std::span<const Eigen::Vector2d> points) {
     if (points.empty()) throw InputError("minimum-area rectangle: no points");
     for (std::size_t k = 0; k < points.size(); ++k)
         if (!points[k].allFinite())
             throw InputError("minimum-area rectangle: point " + std::to_string(k) +
                              " is not finite");
     const std::vector<Eigen::Vector2d> hull = ConvexHull(points);
-    return RectangleOfValidHull(hull);
+    return RectangleOfValidHull(hull, nullptr);
 }
 
-Rectangle2 MinAreaRectangleOfHull(std::span<const Eigen::Vector2d> ccwHull) {
+Parallelogram2 MinAreaRectangleOfHull(std::span<const Eigen::Vector2d> ccwHull,
+                                      ParallelogramStructure* structure) {
     const std::size_t h = ccwHull.size();
     if (h == 0) throw InputError("minimum-area rectangle: no points");
     for (std::size_t k = 0; k < h; ++k)
@@ -144,18 +156,7 @@ Rectangle2 MinAreaRectangleOfHull(std::span<const Eigen::Vector2d> ccwHull) {
         if (turning > 3.0 * std::numbers::pi)
             throw InputError("minimum-area rectangle: hull winds around more than once");
     }
-    return RectangleOfValidHull(ccwHull);
-}
-
-Rectangle2 OrientLongSideAlong(const Rectangle2& r, bool longSideOnU) {
-    const bool swap = longSideOnU ? r.halfU < r.halfV : r.halfV < r.halfU;
-    if (!swap) return r;
-    Rectangle2 s = r;
-    s.axisU = r.axisV;  // a +90° turn of the frame keeps it right-handed
-    s.axisV = -r.axisU;
-    s.halfU = r.halfV;
-    s.halfV = r.halfU;
-    return s;
+    return RectangleOfValidHull(ccwHull, structure);
 }
 
 }  // namespace lexel

@@ -1,4 +1,4 @@
-// Geometry shared by the baselines; see baseline_support.h for the references.
+// What the baselines share (baseline_support.h).
 #include "lexel/spatial/baseline_support.h"
 
 #include <Eigen/Core>
@@ -10,110 +10,6 @@
 #include "lexel/solvers/errors.h"
 
 namespace lexel::spatial::baseline_detail {
-
-std::vector<glm::dvec3> ConvexPolyhedron::Vertices() const {
-    std::vector<glm::dvec3> out;
-    for (const auto& face : faces) out.insert(out.end(), face.begin(), face.end());
-    return out;
-}
-
-ConvexPolyhedron FrustumPolyhedron(const std::array<glm::dvec3, 8>& c) {
-    ConvexPolyhedron p;
-    p.faces = {{c[0], c[1], c[2], c[3]}, {c[4], c[5], c[6], c[7]}, {c[0], c[1], c[5], c[4]},
-               {c[1], c[2], c[6], c[5]}, {c[2], c[3], c[7], c[6]}, {c[3], c[0], c[4], c[7]}};
-    return p;
-}
-
-ConvexPolyhedron ClipPolyhedron(const ConvexPolyhedron& polyhedron, const glm::dvec4& plane) {
-    const glm::dvec3 n(plane);
-    auto distance = [&](const glm::dvec3& x) { return glm::dot(n, x) + plane.w; };
-    ConvexPolyhedron out;
-    std::vector<glm::dvec3> cap;  // the new face on the plane: crossings and vertices on it
-    for (const auto& face : polyhedron.faces) {
-        std::vector<glm::dvec3> kept;
-        const std::size_t count = face.size();
-        for (std::size_t i = 0; i < count; ++i) {
-            const glm::dvec3& a = face[i];
-            const glm::dvec3& b = face[(i + 1) % count];
-            const double da = distance(a), db = distance(b);
-            if (da >= 0.0) kept.push_back(a);
-            if (da == 0.0) cap.push_back(a);
-            if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) {
-                const glm::dvec3 x = a + (da / (da - db)) * (b - a);
-                kept.push_back(x);
-                cap.push_back(x);
-            }
-        }
-        if (kept.size() >= 3) out.faces.push_back(std::move(kept));
-    }
-    if (out.faces.empty()) return out;
-    if (cap.size() >= 3) {
-        // Order the cap around its centroid: it is convex (a plane section of a convex body).
-        glm::dvec3 centroid(0.0);
-        for (const glm::dvec3& x : cap) centroid += x;
-        centroid /= static_cast<double>(cap.size());
-        glm::dvec3 b1, b2;
-        const double len = glm::length(n);
-        if (len > 0.0) {
-            PlaneBasis(n / len, &b1, &b2);
-            std::sort(cap.begin(), cap.end(), [&](const glm::dvec3& p, const glm::dvec3& q) {
-                const glm::dvec3 dp = p - centroid, dq = q - centroid;
-                return std::atan2(glm::dot(b2, dp), glm::dot(b1, dp)) <
-                       std::atan2(glm::dot(b2, dq), glm::dot(b1, dq));
-            });
-            out.faces.push_back(std::move(cap));
-        }
-    }
-    return out;
-}
-
-ConvexPolyhedron ClipToBounds(const ConvexPolyhedron& polyhedron, const Bounds& bounds) {
-    ConvexPolyhedron p = polyhedron;
-    for (int axis = 0; axis < 3 && !p.faces.empty(); ++axis) {
-        glm::dvec4 lower(0.0), upper(0.0);
-        lower[axis] = 1.0;  // x_axis - lo ≥ 0
-        lower.w = -bounds.lo[axis];
-        upper[axis] = -1.0;  // hi - x_axis ≥ 0
-        upper.w = bounds.hi[axis];
-        p = ClipPolyhedron(p, lower);
-        if (!p.faces.empty()) p = ClipPolyhedron(p, upper);
-    }
-    return p;
-}
-
-std::vector<glm::dvec2> ConvexHull2(std::span<const glm::dvec2> points) {
-    std::vector<Eigen::Vector2d> pts(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) pts[i] = {points[i].x, points[i].y};
-    const std::vector<Eigen::Vector2d> hull = ConvexHull(pts);
-    std::vector<glm::dvec2> out(hull.size());
-    for (std::size_t i = 0; i < hull.size(); ++i) out[i] = {hull[i].x(), hull[i].y()};
-    return out;
-}
-
-std::vector<glm::dvec2> IntersectConvexPolygons(std::span<const glm::dvec2> subject,
-                                                std::span<const glm::dvec2> clip) {
-    std::vector<glm::dvec2> current(subject.begin(), subject.end());
-    if (clip.size() < 3) return {};
-    for (std::size_t e = 0; e < clip.size() && !current.empty(); ++e) {
-        const glm::dvec2 a = clip[e], b = clip[(e + 1) % clip.size()];
-        const glm::dvec2 edge = b - a;
-        // Signed area × 2: ≥ 0 on the left of a→b (inside a counter-clockwise polygon).
-        auto side = [&](const glm::dvec2& p) {
-            return edge.x * (p.y - a.y) - edge.y * (p.x - a.x);
-        };
-        std::vector<glm::dvec2> next;
-        const std::size_t count = current.size();
-        for (std::size_t i = 0; i < count; ++i) {
-            const glm::dvec2 p = current[i], q = current[(i + 1) % count];
-            const double sp = side(p), sq = side(q);
-            if (sp >= 0.0) next.push_back(p);
-            if ((sp > 0.0 && sq < 0.0) || (sp < 0.0 && sq > 0.0))
-                next.push_back(p + (sp / (sp - sq)) * (q - p));
-        }
-        current = std::move(next);
-    }
-    return current;
-}
 
 glm::dvec4 WorldPlaneOfLightPlane(const LightSpace& lightSpace, const glm::dvec3& p4,
                                   double delta) {
@@ -134,8 +30,7 @@ std::vector<glm::dvec3> ToLightAll(const LightSpace& lightSpace,
 glm::dvec2 ProjectToPlane(const glm::dvec3& p4, const glm::dvec3& lsX) {
     glm::dvec3 b1, b2;
     PlaneBasis(p4, &b1, &b2);
-    const double w = glm::dot(p4, lsX);
-    return {glm::dot(b1, lsX) / w, glm::dot(b2, lsX) / w};
+    return ProjectToAxisPlane(p4, b1, b2, lsX);
 }
 
 bool CoversAll(const LightMatrix& m, std::span<const glm::dvec3> lsPoints, Resolution map) {
@@ -278,7 +173,7 @@ std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAx
     ConvexPolyhedron body = FrustumPolyhedron(camera.FrustumCorners());
     body = ClipPolyhedron(body, WorldPlaneOfLightPlane(*context.lightSpace, axis.p4,
                                                        LightPlaneOffset(context, axis)));
-    if (!body.faces.empty()) body = ClipToBounds(body, context.wsBounds);
+    if (!body.faces.empty()) body = ClipToBox(body, context.wsBounds.lo, context.wsBounds.hi);
     std::vector<glm::dvec3> out = body.Vertices();
     out.insert(out.end(), context.wsRelevant.begin(), context.wsRelevant.end());
     return out;

@@ -1,9 +1,7 @@
-// Geometry shared by the shadow-map baselines (spatial/baselines.h): convex polyhedra clipped by
-// planes (the view frustum ∩ scene bounds "body" of Wimmer et al., LiSPSM, EGSR 2004, and the
-// frustum-limiting step of Chong & Gortler report §3), Sutherland–Hodgman intersection of convex
-// polygons (I. E. Sutherland, G. W. Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974),
-// and the validity test every baseline must pass (report §2.1: relevant points strictly in front
-// of p4 and inside [0, W] × [0, H]).
+// Internal to lexel::spatial (not installed): what the shadow-map baselines (baselines.h) share —
+// the normal axis, the focus body (view frustum ∩ scene bounds, clipped with solvers/clipping.h),
+// the narrowest cone around directions, and the validity test every baseline must pass (report
+// §2.1: relevant points strictly in front of p4 and inside [0, W] × [0, H]).
 #pragma once
 
 #include <array>
@@ -12,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "lexel/solvers/clipping.h"
 #include "lexel/spatial/baselines.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
@@ -21,26 +20,6 @@ namespace lexel::spatial::baseline_detail {
 // How far outside [0, W] × [0, H] a relevant point may map, in texels: the rectangle fit is exact
 // up to rounding, which is ~1e-12 texel at these resolutions.
 inline constexpr double kMapToleranceTexels = 1e-6;
-
-// A convex polyhedron as its faces, each a planar convex polygon (orientation irrelevant).
-struct ConvexPolyhedron {
-    std::vector<std::vector<glm::dvec3>> faces;
-    std::vector<glm::dvec3> Vertices() const;  // with repeats (each vertex once per face)
-};
-
-// The frustum of FrustumCorners' layout (near face 0-3, far face 4-7, same winding).
-ConvexPolyhedron FrustumPolyhedron(const std::array<glm::dvec3, 8>& wsCorners);
-// The part with plane.xyz · x + plane.w ≥ 0; empty (no faces) when nothing is left.
-ConvexPolyhedron ClipPolyhedron(const ConvexPolyhedron& polyhedron, const glm::dvec4& plane);
-ConvexPolyhedron ClipToBounds(const ConvexPolyhedron& polyhedron, const Bounds& bounds);
-
-// Counter-clockwise convex hull (solvers/convex_hull, exact orientation) of 2D points.
-std::vector<glm::dvec2> ConvexHull2(std::span<const glm::dvec2> points);
-// subject ∩ clip for two counter-clockwise convex polygons (Sutherland–Hodgman: clip the subject
-// by each edge's left half-plane in turn). Empty when they do not overlap; a clip polygon with
-// fewer than 3 vertices gives an empty result.
-std::vector<glm::dvec2> IntersectConvexPolygons(std::span<const glm::dvec2> subject,
-                                                std::span<const glm::dvec2> clip);
 
 // The world half-space p4 · X(x) ≥ delta as a plane (n, d) with n·x + d ≥ 0 (X is affine in x).
 glm::dvec4 WorldPlaneOfLightPlane(const LightSpace& lightSpace, const glm::dvec3& p4, double delta);

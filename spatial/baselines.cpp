@@ -17,6 +17,7 @@
 #include <cmath>
 #include <vector>
 
+#include "lexel/solvers/convex_hull.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/baseline_support.h"
 
@@ -84,14 +85,14 @@ LightMatrix FocusedLightMatrix(const BaselineContext& context, BaselineDiagnosti
         const glm::dvec3 X = ls.ToLight(x);
         if (InFront(axis.p4, X)) frustumPlane.push_back(ProjectToPlane(axis.p4, X));
     }
-    const std::vector<glm::dvec2> frustumHull = ConvexHull2(frustumPlane);
+    const std::vector<glm::dvec2> frustumHull = ConvexHull(frustumPlane);
 
     std::vector<glm::dvec2> region;
     if (axis.cornersInFront) {
         std::vector<glm::dvec2> boundsPlane;
         for (const glm::dvec3& x : context.wsBounds.Corners())
             boundsPlane.push_back(ProjectToPlane(axis.p4, ls.ToLight(x)));
-        const std::vector<glm::dvec2> boundsHull = ConvexHull2(boundsPlane);
+        const std::vector<glm::dvec2> boundsHull = ConvexHull(boundsPlane);
         region = IntersectConvexPolygons(frustumHull, boundsHull);
     } else {
         region = frustumHull;  // normal's extent is the relevant points themselves: see FitCovering

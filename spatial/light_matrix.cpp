@@ -7,6 +7,7 @@
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/min_area_parallelogram.h"
 #include "lexel/solvers/min_area_rectangle.h"
+#include "lexel/spatial/affine_fit.h"
 
 namespace lexel::spatial {
 
@@ -82,38 +83,29 @@ bool InFront(const glm::dvec3& p4, const glm::dvec3& lsX) {
     return glm::dot(p4, lsX) > 1e-9 * glm::length(lsX);
 }
 
-glm::dvec3 PlaneBasisHelper(const glm::dvec3& p4) {
-    const glm::dvec3 a = glm::abs(p4);
-    return (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
-           : (a.y <= a.z)             ? glm::dvec3(0, 1, 0)
-                                      : glm::dvec3(0, 0, 1);
-}
-
-void PlaneBasis(const glm::dvec3& p4, glm::dvec3* b1, glm::dvec3* b2) {
-    *b1 = glm::normalize(glm::cross(PlaneBasisHelper(p4), p4));
-    *b2 = glm::cross(p4, *b1);
-}
-
 namespace {
 
-// The fitted frame in the plane: u1 = W/2 + W/(2 halfU) rowU·(y - c), u2 likewise. For the
-// rectangle the rows are its orthonormal axes. For the parallelogram (options.shear) a point is
-// y = c + a axisU + b axisV with a = dualU·(y - c), b = dualV·(y - c) (Parallelogram2::DualAxes),
-// so the rows are the dual axes: the rectangle's formula, whose axes are self-dual.
-struct PlaneFrame {
-    Eigen::Vector2d center, rowU, rowV;
-    double halfU, halfV;
-};
-
-PlaneFrame FitFrame(std::span<const Eigen::Vector2d> pts, Resolution map, bool shear) {
+// The fitted frame in the plane (affine_fit.h). For the rectangle the rows are its orthonormal
+// axes. For the parallelogram (options.shear) a point is y = c + a axisU + b axisV with
+// a = dualU·(y - c), b = dualV·(y - c) (Parallelogram2::DualAxes), so the rows are the dual axes:
+// the rectangle's formula, whose axes are self-dual.
+detail::PlaneFrame<double> FitFrame(std::span<const Eigen::Vector2d> pts, Resolution map,
+                                    bool shear) {
     const bool longSideOnU = map.width >= map.height;
+    const Parallelogram2 fit =
+        OrientLongSideAlong(shear ? MinAreaParallelogram(pts) : MinAreaRectangle(pts), longSideOnU);
+    Eigen::Vector2d rowU = fit.axisU, rowV = fit.axisV;
     if (shear) {
-        const Parallelogram2 par = OrientLongSideAlong(MinAreaParallelogram(pts), longSideOnU);
-        const auto [dualU, dualV] = par.DualAxes();
-        return {par.center, dualU, dualV, par.halfU, par.halfV};
+        const auto dual = fit.DualAxes();
+        rowU = dual[0];
+        rowV = dual[1];
     }
-    const Rectangle2 rect = OrientLongSideAlong(MinAreaRectangle(pts), longSideOnU);
-    return {rect.center, rect.axisU, rect.axisV, rect.halfU, rect.halfV};
+    return {{rowU.x(), rowU.y()},
+            {rowV.x(), rowV.y()},
+            rowU.dot(fit.center),
+            rowV.dot(fit.center),
+            fit.halfU,
+            fit.halfV};
 }
 
 }  // namespace
@@ -124,23 +116,13 @@ std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
     if (planePoints.empty()) return std::nullopt;
     std::vector<Eigen::Vector2d> pts(planePoints.size());
     for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = {planePoints[i].x, planePoints[i].y};
-    const PlaneFrame f = FitFrame(pts, map, options.shear);
-    // A zero extent (all points collinear or equal) gets a sliver so the map stays invertible.
-    const double longest = std::max({f.halfU, f.halfV, 1e-300});
-    const double halfU = std::max(f.halfU, 1e-9 * longest) * (1.0 + options.margin);
-    const double halfV = std::max(f.halfV, 1e-9 * longest) * (1.0 + options.margin);
-
-    // u1 = W/2 + W/(2 halfU) · rowU·(y - c), with y = (b1·X, b2·X)/(p4·X); multiplying by p4·X
-    // gives row p1 = (W/2 - kU rowU·c) p4 + kU (rowU.x b1 + rowU.y b2), and likewise p2.
+    const detail::PlaneFrame<double> frame = FitFrame(pts, map, options.shear);
     glm::dvec3 b1, b2;
     PlaneBasis(p4, &b1, &b2);
-    const double kU = 0.5 * map.width / halfU, kV = 0.5 * map.height / halfV;
     LightMatrix m;
     m.p4 = p4;
-    m.p1 = (0.5 * map.width - kU * f.rowU.dot(f.center)) * p4 +
-           kU * (f.rowU.x() * b1 + f.rowU.y() * b2);
-    m.p2 = (0.5 * map.height - kV * f.rowV.dot(f.center)) * p4 +
-           kV * (f.rowV.x() * b1 + f.rowV.y() * b2);
+    detail::AffineRowsFromFrame(&p4[0], &b1[0], &b2[0], frame, map, options.margin, &m.p1[0],
+                                &m.p2[0]);
     return m;
 }
 
@@ -153,8 +135,7 @@ std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
     planePoints.reserve(lsPoints.size());
     for (const glm::dvec3& X : lsPoints) {
         if (!InFront(p4, X)) return std::nullopt;
-        const double w = glm::dot(p4, X);
-        planePoints.emplace_back(glm::dot(b1, X) / w, glm::dot(b2, X) / w);
+        planePoints.push_back(ProjectToAxisPlane(p4, b1, b2, X));
     }
     return FitMapToPlanePoints(p4, planePoints, map, options);
 }

@@ -15,6 +15,7 @@
 #include <optional>
 #include <span>
 
+#include "lexel/solvers/geometry.h"
 #include "lexel/spatial/camera.h"
 #include "lexel/spatial/light_space.h"
 
@@ -111,11 +112,5 @@ std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
 std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
                                                std::span<const glm::dvec2> planePoints,
                                                Resolution map, const FitOptions& options = {});
-
-// A right-handed orthonormal basis (b1, b2) of the plane ⊥ p4 (|p4| = 1), stable in p4:
-// b1 = normalize(helper × p4), b2 = p4 × b1, with helper = PlaneBasisHelper(p4), the world axis
-// least aligned with p4 (locally constant in p4, so the basis is smooth where it does not switch).
-void PlaneBasis(const glm::dvec3& p4, glm::dvec3* b1, glm::dvec3* b2);
-glm::dvec3 PlaneBasisHelper(const glm::dvec3& p4);
 
 }  // namespace lexel::spatial

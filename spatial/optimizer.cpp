@@ -4,97 +4,50 @@
 #include <ceres/sphere_manifold.h>
 
 #include <Eigen/Core>
-#include <chrono>
+#include <algorithm>
 #include <cmath>
 
 #include "lexel/solvers/convex_hull.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/geometry.h"
 #include "lexel/solvers/min_area_parallelogram.h"
+#include "lexel/solvers/min_area_rectangle.h"
+#include "lexel/solvers/stopwatch.h"
+#include "lexel/spatial/affine_fit.h"
 #include "lexel/spatial/energy_gradient.h"
 
 namespace lexel::spatial {
 namespace {
 
-double MsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
-// Cross product and dot product for any scalar type.
-template <typename T>
-void Cross(const T* a, const T* b, T* out) {
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-// The combinatorics of a minimum-area rectangle around projected hull vertices: the flush edge
-// (a → b) and the vertices extreme along and across it. With the shear (FitOptions::shear) the
-// parallelogram's: the shear k* = (u·(y_i - y_j)) / (v·(y_j - y_i)) from the adjacent hull
-// vertices i, j that tie at it (shearI = -1: k* = 0), minU and maxU extreme in the sheared
-// coordinate (u + k* v)·y, minV = a (the edge's line) and maxV the vertex farthest from it.
-struct RectangleStructure {
-    int a, b, minU, maxU, minV, maxV;
-    bool swapAxes;  // the long side must go on the other map axis
-    int shearI = -1, shearJ = -1;
+// The combinatorics of the fit at p4 (minimum-area rectangle, or parallelogram with the shear)
+// around the projected vertices y, in vertex indices, from the solvers themselves, so that ties
+// and the choice of k* are the fit's exactly; and whether the long side goes on the other axis.
+struct FitStructure {
+    int a, b;        // the flush edge a → b
+    int minU, maxU;  // extreme in the (sheared) edge coordinate
+    int top;         // farthest from the edge's line (the edge itself is the other side)
+    int shearI = -1, shearJ = -1;  // the adjacent vertices tying at k* (-1: k* = 0)
+    bool swapAxes = false;
 };
 
-// The minimum-area parallelogram's structure, from the solver itself
-// (MinAreaParallelogramOfHull), so that ties and the choice of k* are the fit's exactly.
-std::optional<RectangleStructure> FindShearedStructure(const std::vector<Eigen::Vector2d>& hull,
-                                                       const std::vector<int>& index,
-                                                       Resolution map) {
-    ParallelogramStructure ps;
-    const Parallelogram2 par = MinAreaParallelogramOfHull(hull, &ps);
-    if (ps.edge < 0) return std::nullopt;
-    const auto at = [&](int k) { return index[static_cast<std::size_t>(k) % index.size()]; };
-    RectangleStructure s{at(ps.edge), at(ps.edge + 1), at(ps.minS), at(ps.maxS),
-                         at(ps.edge), at(ps.top),      false};
-    // As OrientLongSideAlong(Parallelogram2): side lengths, not extents.
-    s.swapAxes = map.width >= map.height ? par.halfU < par.halfV : par.halfV < par.halfU;
-    if (ps.shearEdge >= 0) s.shearI = at(ps.shearEdge), s.shearJ = at(ps.shearEdge + 1);
-    return s;
-}
-
-// Brute-force rotating calipers over h vertices (h is small): the minimum-area rectangle's
-// structure, ties to the first edge as in solvers/min_area_rectangle.
-std::optional<RectangleStructure> FindStructure(const std::vector<glm::dvec2>& y, Resolution map,
-                                                bool shear) {
+std::optional<FitStructure> FindStructure(const std::vector<glm::dvec2>& y, Resolution map,
+                                          bool shear) {
     std::vector<Eigen::Vector2d> pts(y.size());
     for (std::size_t i = 0; i < y.size(); ++i) pts[i] = {y[i].x, y[i].y};
     const std::vector<Eigen::Vector2d> hull = ConvexHull(pts);
     if (hull.size() < 3) return std::nullopt;
     std::vector<int> index(hull.size());
     for (std::size_t k = 0; k < hull.size(); ++k)
-        for (std::size_t i = 0; i < pts.size(); ++i)
-            if (pts[i] == hull[k]) {
-                index[k] = static_cast<int>(i);
-                break;
-            }
-    if (shear) return FindShearedStructure(hull, index, map);
-    std::optional<RectangleStructure> best;
-    double bestArea = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < hull.size(); ++k) {
-        const int a = index[k], b = index[(k + 1) % hull.size()];
-        const glm::dvec2 u = glm::normalize(y[b] - y[a]);
-        const glm::dvec2 v(-u.y, u.x);
-        RectangleStructure s{a, b, a, a, a, a, false};
-        double lo[2] = {glm::dot(u, y[a]), glm::dot(v, y[a])}, hi[2] = {lo[0], lo[1]};
-        for (int i : index) {
-            const double pu = glm::dot(u, y[i]), pv = glm::dot(v, y[i]);
-            if (pu < lo[0]) lo[0] = pu, s.minU = i;
-            if (pu > hi[0]) hi[0] = pu, s.maxU = i;
-            if (pv < lo[1]) lo[1] = pv, s.minV = i;
-            if (pv > hi[1]) hi[1] = pv, s.maxV = i;
-        }
-        const double area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
-        if (area < bestArea) {
-            bestArea = area;
-            s.swapAxes = (hi[0] - lo[0] >= hi[1] - lo[1]) != (map.width >= map.height);
-            best = s;
-        }
-    }
-    return best;
+        index[k] = static_cast<int>(std::find(pts.begin(), pts.end(), hull[k]) - pts.begin());
+    ParallelogramStructure ps;
+    const Parallelogram2 fit =
+        shear ? MinAreaParallelogramOfHull(hull, &ps) : MinAreaRectangleOfHull(hull, &ps);
+    const auto at = [&](int k) { return index[static_cast<std::size_t>(k) % index.size()]; };
+    FitStructure s{at(ps.edge), at(ps.edge + 1), at(ps.minS), at(ps.maxS), at(ps.top)};
+    if (ps.shearEdge >= 0) s.shearI = at(ps.shearEdge), s.shearJ = at(ps.shearEdge + 1);
+    // Whether OrientLongSideAlong turns the frame (it swaps unequal half sides only).
+    s.swapAxes = OrientLongSideAlong(fit, map.width >= map.height).halfU != fit.halfU;
+    return s;
 }
 
 // h(fit(p4)) for the hull vertices and samples, differentiable in p4 through the fit for a fixed
@@ -128,36 +81,21 @@ struct RefinedEnergy {
             if (!InFront(p4d, v)) return false;
         glm::dvec3 b1d, b2d;
         PlaneBasis(p4d, &b1d, &b2d);
-        // b1 = normalize(helper × p4), b2 = p4 × b1, with the same helper axis as PlaneBasis.
-        const glm::dvec3 helper = PlaneBasisHelper(p4d);
-        const T h[3] = {T(helper.x), T(helper.y), T(helper.z)};
         T b1[3], b2[3];
-        Cross(h, p4, b1);
-        const T n1 = sqrt(b1[0] * b1[0] + b1[1] * b1[1] + b1[2] * b1[2]);
-        for (T& c : b1) c /= n1;
-        Cross(p4, b1, b2);
+        PlaneBasis(p4, PlaneBasisHelper(p4d), b1, b2);  // the same basis, differentiable
 
         std::vector<glm::dvec2> yd(vertices.size());
-        for (std::size_t i = 0; i < yd.size(); ++i) {
-            const glm::dvec3& v = vertices[i];
-            const double w = glm::dot(p4d, v);
-            yd[i] = {glm::dot(b1d, v) / w, glm::dot(b2d, v) / w};
-        }
-        const std::optional<RectangleStructure> s = FindStructure(yd, map, shear);
+        for (std::size_t i = 0; i < yd.size(); ++i)
+            yd[i] = ProjectToAxisPlane(p4d, b1d, b2d, vertices[i]);
+        const std::optional<FitStructure> s = FindStructure(yd, map, shear);
         if (!s) return false;
-        const auto project = [&](int i, T* y) {
-            const glm::dvec3& v = vertices[i];
-            const T w = p4[0] * v.x + p4[1] * v.y + p4[2] * v.z;
-            y[0] = (b1[0] * v.x + b1[1] * v.y + b1[2] * v.z) / w;
-            y[1] = (b2[0] * v.x + b2[1] * v.y + b2[2] * v.z) / w;
-        };
-        T ya[2], yb[2], y[4][2];
+        const auto project = [&](int i, T* y) { ProjectToAxisPlane(p4, b1, b2, vertices[i], y); };
+        T ya[2], yb[2], y[3][2];
         project(s->a, ya);
         project(s->b, yb);
         project(s->minU, y[0]);
         project(s->maxU, y[1]);
-        project(s->minV, y[2]);
-        project(s->maxV, y[3]);
+        project(s->top, y[2]);
         T u[2] = {yb[0] - ya[0], yb[1] - ya[1]};
         const T un = sqrt(u[0] * u[0] + u[1] * u[1]);
         u[0] /= un;
@@ -175,23 +113,18 @@ struct RefinedEnergy {
             u[1] += k * v[1];
         }
         T loU = u[0] * y[0][0] + u[1] * y[0][1], hiU = u[0] * y[1][0] + u[1] * y[1][1];
-        T loV = v[0] * y[2][0] + v[1] * y[2][1], hiV = v[0] * y[3][0] + v[1] * y[3][1];
+        T loV = v[0] * ya[0] + v[1] * ya[1], hiV = v[0] * y[2][0] + v[1] * y[2][1];
         if (s->swapAxes) {  // +90° turn of the frame, as OrientLongSideAlong
             const T newU[2] = {v[0], v[1]}, newV[2] = {-u[0], -u[1]};
             const T nLoU = loV, nHiU = hiV, nLoV = -hiU, nHiV = -loU;
             u[0] = newU[0], u[1] = newU[1], v[0] = newV[0], v[1] = newV[1];
             loU = nLoU, hiU = nHiU, loV = nLoV, hiV = nHiV;
         }
-        const T halfU = T(0.5 * (1.0 + margin)) * (hiU - loU);
-        const T halfV = T(0.5 * (1.0 + margin)) * (hiV - loV);
-        const T kU = T(0.5 * map.width) / halfU, kV = T(0.5 * map.height) / halfV;
-        const T cU = T(0.5) * (loU + hiU), cV = T(0.5) * (loV + hiV);
-        // p1 = (W/2 - kU cU) p4 + kU (u.x b1 + u.y b2); p2 likewise (light_matrix.cpp).
+        const detail::PlaneFrame<T> frame{{u[0], u[1]},         {v[0], v[1]},
+                                          T(0.5) * (loU + hiU), T(0.5) * (loV + hiV),
+                                          T(0.5) * (hiU - loU), T(0.5) * (hiV - loV)};
         T p1[3], p2[3];
-        for (int c = 0; c < 3; ++c) {
-            p1[c] = (T(0.5 * map.width) - kU * cU) * p4[c] + kU * (u[0] * b1[c] + u[1] * b2[c]);
-            p2[c] = (T(0.5 * map.height) - kV * cV) * p4[c] + kV * (v[0] * b1[c] + v[1] * b2[c]);
-        }
+        detail::AffineRowsFromFrame(p4, b1, b2, frame, map, margin, p1, p2);
         T total(0.0);
         for (std::size_t k = 0; k < samples->lsX.size(); ++k) {
             const glm::dvec3& X = samples->lsX[k];
@@ -234,8 +167,8 @@ RelevantHull::RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dv
     for (const glm::dvec3& X : lsRelevant) {
         if (!InFront(p4Reference, X))
             throw InputError("optimizer: a relevant point is behind the initial axis's plane");
-        const double w = glm::dot(p4Reference, X);
-        y.emplace_back(glm::dot(b1, X) / w, glm::dot(b2, X) / w);
+        const glm::dvec2 yX = ProjectToAxisPlane(p4Reference, b1, b2, X);
+        y.emplace_back(yX.x, yX.y);
     }
     // Akl–Toussaint pre-filter (S. G. Akl & G. T. Toussaint, "A fast convex hull algorithm",
     // Information Processing Letters 7(5), 1978): a point strictly inside the quadrilateral of the
@@ -293,7 +226,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
             : std::span<const glm::dvec3>(samples.lsRelevant);
     r.coneGenerators = lsCone.size();
 
-    auto start = std::chrono::steady_clock::now();
+    Stopwatch timer;
     std::optional<RelevantHull> hull;
     if (options.hullOnce) {
         try {
@@ -303,12 +236,12 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
             hull.reset();  // the initial axis does not see every point: fit from every generator
         }
     }
-    r.hullMs = MsSince(start);
+    r.hullMs = timer.Ms();
     const auto fit = [&](const glm::dvec3& p4) {
         return hull ? hull->Fit(p4, map, fitOptions) : FitMapToPoints(p4, lsCone, map, fitOptions);
     };
 
-    start = std::chrono::steady_clock::now();
+    timer.Restart();
     const BoundedEnergy energy(samples);  // Energy, stopping once h reaches the bound
     glm::dvec3 p4 = glm::normalize(initialP4);
     std::optional<LightMatrix> best = fit(p4);
@@ -339,7 +272,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
         p4 = nextP4;
         r.hAfterIteration.push_back(bestH);
     }
-    r.searchMs = MsSince(start);
+    r.searchMs = timer.Ms();
     if (!best) {
         // Not even the initial axis sees every relevant point; nothing to optimize.
         r.usedFallback = true;
@@ -350,7 +283,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
     r.hBeforeRefine = bestH;
 
     if (options.refine && hull && hull->Vertices().size() >= 3 && !samples.lsX.empty()) {
-        start = std::chrono::steady_clock::now();
+        timer.Restart();
         double x[3] = {p4.x, p4.y, p4.z};
         ceres::GradientProblem problem(
             new ceres::AutoDiffFirstOrderFunction<RefinedEnergy, 3>(
@@ -376,7 +309,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
                 best = m;
             }
         }
-        r.refineMs = MsSince(start);
+        r.refineMs = timer.Ms();
     }
     r.matrix = *best;
     r.h = bestH;

@@ -9,6 +9,7 @@
 //
 //   ./build/notebooks_cpp/notebook_01_footprint
 #include <cstdio>
+#include <numbers>
 
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/flatland/sampling.h"
@@ -32,7 +33,8 @@ int main() {
     std::printf("  %10s  %8s\n", "L1 = Σf", "L∞");
     // The normal shadow map (axis bisecting the light's view), Theorem 1's angle, and a bad one.
     const double normal = pass.wsAxis0;
-    const double theorem1 = std::atan2(-10.0, 2.5) + M_PI / 2;  // film ∥ light → (−0.5, 0)
+    const double theorem1 =
+        std::atan2(-10.0, 2.5) + std::numbers::pi / 2;  // film ∥ light → (−0.5, 0)
     for (double axis : {normal, theorem1, normal - 0.6}) {
         const auto f = FootprintsFromScratch(pass, scene.wsLight, axis, scene.lexels);
         std::printf("%10.2f° ", LexelPlaneDegFromAxis(axis));

@@ -1,9 +1,9 @@
 #include "lexel/spatial/harness/evaluation.h"
 
-#include <chrono>
 #include <span>
 
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/ray_caster.h"
 
@@ -115,10 +115,9 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     for (const std::string& method : options.methods) {
         MethodOutcome m;
         m.method = method;
-        const auto start = std::chrono::steady_clock::now();
+        const Stopwatch timer;
         const MethodMatrix computed = ComputeLightMatrix(method, context);
-        m.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                   .count();
+        m.ms = timer.Ms();
         m.matrix = computed.matrix;
         if (computed.optimizer) {
             m.hAfterIteration = computed.optimizer->hAfterIteration;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "lexel/solvers/geometry.h"
 #include "lexel/spatial/harness/primitives.h"
 
 namespace lexel::spatial {
@@ -105,7 +106,7 @@ std::vector<Light> SweepLights(const LightSweep& sweep, const glm::dvec3& wsCent
     if (!(sweep.radius > 0.0) || !std::isfinite(sweep.radius))
         throw std::invalid_argument("SweepLights: radius must be positive and finite");
     std::mt19937_64 rng(sweep.seed);
-    const double minY = std::sin(kSweepMinElevationDeg * std::numbers::pi / 180.0);
+    const double minY = std::sin(Radians(kSweepMinElevationDeg));
     std::vector<Light> lights;
     lights.reserve(static_cast<std::size_t>(sweep.count));
     for (int i = 0; i < sweep.count; ++i) {

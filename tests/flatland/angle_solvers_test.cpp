@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "lexel/flatland/baselines.h"
 #include "lexel/flatland/methods.h"
@@ -16,7 +17,7 @@ using testing::Describe;
 using testing::RandomScene;
 using testing::SingleSegmentScene;
 
-double Deg(double radians) { return radians * 180.0 / M_PI; }
+double Deg(double radians) { return radians * 180.0 / std::numbers::pi; }
 
 // Theorem 1: on a single segment, every optimum makes the footprint constant, at the geometric
 // angle (lexel plane parallel to the line from the light to the segment's view-plane point).
@@ -81,7 +82,7 @@ TEST(AngleSolvers, LinfAngleMatchesGoldenSectionToNanodegrees) {
         EXPECT_LE(linf.objective, sweep.objective * (1 + 1e-12));
         EXPECT_LT(std::abs(Deg(std::atan(linf.t) - std::atan(sweep.t))), 1e-6);
         // Moving 1e-9° either way never lowers the maximum.
-        const double x = std::atan(linf.t), step = 1e-9 * M_PI / 180;
+        const double x = std::atan(linf.t), step = 1e-9 * std::numbers::pi / 180;
         EXPECT_GE(AngleObjective(samples, Metric::kLinf, std::tan(x + step)),
                   linf.objective * (1 - 1e-15));
         EXPECT_GE(AngleObjective(samples, Metric::kLinf, std::tan(x - step)),

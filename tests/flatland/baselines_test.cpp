@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/flatland/methods.h"
@@ -64,7 +65,7 @@ TEST(Baselines, NormalAxisBisectsTheSweep) {
 TEST(Baselines, PlaneOptimalByHand) {
     const FlatScene scene = testing::ExampleScene();
     const double axis = PlaneOptimalAxis(scene).wsAxis;
-    EXPECT_NEAR(LexelPlaneDegFromAxis(axis), std::atan(0.25) * 180 / M_PI, 1e-12);
+    EXPECT_NEAR(LexelPlaneDegFromAxis(axis), std::atan(0.25) * 180 / std::numbers::pi, 1e-12);
 }
 
 // Thesis §2.2.3, "Ideal performance": with a point light on the view plane and a single plane,

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "lexel/flatland/angle_solvers.h"
 #include "lexel/flatland/lexel_remap.h"
@@ -73,7 +74,8 @@ TEST(FrustumSplit, ReportedFrustaRecomputeFromScratch) {
     std::size_t count = 0;
     for (std::size_t j = 0; j < r.frusta.size(); ++j) {
         const FrustumReport& fr = r.frusta[j];
-        const double lo = fr.wsRayLowDeg * M_PI / 180, hi = fr.wsRayHighDeg * M_PI / 180;
+        const double lo = fr.wsRayLowDeg * std::numbers::pi / 180,
+                     hi = fr.wsRayHighDeg * std::numbers::pi / 180;
         const double width = std::tan(hi - fr.wsAxis) - std::tan(lo - fr.wsAxis);  // W(θ)
         double l1 = 0, worst = 0;
         std::size_t n = 0;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "test_scenes.h"
@@ -45,8 +46,8 @@ TEST(LexelRemap, ValidityMatchesPointsInFront) {
     const ValidInterval valid = ValidTInterval(samples);
     const double xLo = std::atan(valid.lo), xHi = std::atan(valid.hi);
     // The valid range of the axis is (Δ/2 − 90°, 90° − Δ/2) about the bisector.
-    EXPECT_NEAR(xHi, M_PI / 2 - pass.halfSweep, 1e-12);
-    EXPECT_NEAR(xLo, -(M_PI / 2 - pass.halfSweep), 1e-12);
+    EXPECT_NEAR(xHi, std::numbers::pi / 2 - pass.halfSweep, 1e-12);
+    EXPECT_NEAR(xLo, -(std::numbers::pi / 2 - pass.halfSweep), 1e-12);
     EXPECT_TRUE(
         FootprintsFromScratch(pass, scene.wsLight, pass.wsAxis0 + xHi - 1e-6, 1).has_value());
     EXPECT_FALSE(

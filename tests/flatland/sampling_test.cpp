@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/solvers/errors.h"
@@ -29,7 +30,8 @@ TEST(Sampling, FloorHitsLieOnTheFloorAtPixelCenters) {
         EXPECT_NEAR(s.depth, (s.wsPoint - scene.camera.wsPosition).dot(scene.camera.wsDirection),
                     1e-9);
     }
-    const double slopeLimit = std::tan(std::atan(0.25)) / std::tan(M_PI / 6);  // σ at the horizon
+    const double slopeLimit =
+        std::tan(std::atan(0.25)) / std::tan(std::numbers::pi / 6);  // σ at the horizon
     const int lastVisible = static_cast<int>(std::floor(100 * (1 + slopeLimit) / 2 - 0.5));
     EXPECT_EQ(pass.samples.back().pixel, std::min(lastVisible, 99));
     EXPECT_EQ(pass.samples.front().pixel, 0);

@@ -227,7 +227,7 @@ TEST(MinAreaParallelogram, IsTheMinimumAreaEnclosingParallelogram) {
         const Points points = RandomCloud(rng, 5 + static_cast<int>(seed % 40), seed % 4);
         SCOPED_TRACE("seed " + std::to_string(seed) + ": " + Describe(points));
         const Parallelogram2 p = MinAreaParallelogram(points);
-        const Rectangle2 r = MinAreaRectangle(points);
+        const Parallelogram2 r = MinAreaRectangle(points);
         if (p.Area() < 0.99 * r.Area()) ++sheared;
         ExpectValid(p, points, 1e-12 * (p.halfU + p.halfV));
         const double area = p.Area();
@@ -294,7 +294,7 @@ TEST(MinAreaParallelogram, NoShearWhereTheRectangleIsOptimal) {
     const Points hull = ConvexHull(box);
     const Parallelogram2 p = MinAreaParallelogramOfHull(hull, &st);
     EXPECT_EQ(st.shear, 0.0);
-    const Rectangle2 r = MinAreaRectangle(box);
+    const Parallelogram2 r = MinAreaRectangle(box);
     EXPECT_NEAR(p.Area(), r.Area(), 1e-14 * r.Area());
     EXPECT_NEAR(std::abs(p.axisU.dot(p.axisV)), 0.0, 1e-15);
     for (const Eigen::Vector2d& c : p.Corners()) {
@@ -311,7 +311,7 @@ TEST(MinAreaParallelogram, DegenerateAndSliverInputStayFinite) {
                                  Points{{0, 0}, {1, 1}, {3, 3}, {2, 2}}}) {
         SCOPED_TRACE(Describe(points));
         const Parallelogram2 p = MinAreaParallelogram(points);
-        const Parallelogram2 r = ToParallelogram(MinAreaRectangle(points));
+        const Parallelogram2 r = MinAreaRectangle(points);
         EXPECT_EQ(p.center, r.center);
         EXPECT_EQ(p.axisU, r.axisU);
         EXPECT_EQ(p.halfU, r.halfU);

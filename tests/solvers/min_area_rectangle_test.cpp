@@ -77,7 +77,7 @@ double EdgeDirectionMinArea(const Points& points) {
 
 // Checks that hold for every result: orthonormal right-handed axes, non-negative extents, and
 // every input point inside within `tolerance`.
-void ExpectValidRectangle(const Rectangle2& r, const Points& points, double tolerance) {
+void ExpectValidRectangle(const Parallelogram2& r, const Points& points, double tolerance) {
     EXPECT_NEAR(r.axisU.norm(), 1.0, 1e-15);
     EXPECT_EQ(r.axisV.x(), -r.axisU.y());
     EXPECT_EQ(r.axisV.y(), r.axisU.x());
@@ -105,7 +105,7 @@ Points SampleRectangle(const Eigen::Vector2d& center, double angle, double halfU
 TEST(MinAreaRectangle, AxisAlignedRectangleIsExact) {
     const Points points = {{5, 3}, {1, 2},      {3, 2.5}, {5, 2}, {1, 3},
                            {2, 2}, {4.5, 2.75}, {1, 2.5}, {5, 3}, {1, 3}};
-    const Rectangle2 r = MinAreaRectangle(points);
+    const Parallelogram2 r = MinAreaRectangle(points);
     EXPECT_EQ(r.Area(), 4.0);
     EXPECT_EQ(r.halfU, 2.0);
     EXPECT_EQ(r.halfV, 0.5);
@@ -128,7 +128,7 @@ TEST(MinAreaRectangle, RotatedRectangleAreaAndDirection) {
     const double angle = kPi / 6;  // 30°
     const Points points = SampleRectangle({0.7, -0.2}, angle, 1.5, 0.5, rng);
     SCOPED_TRACE(Describe(points));
-    const Rectangle2 r = MinAreaRectangle(points);
+    const Parallelogram2 r = MinAreaRectangle(points);
     EXPECT_NEAR(r.Area(), 3.0, 1e-12);
     EXPECT_NEAR(std::max(r.halfU, r.halfV), 1.5, 1e-12);
     EXPECT_NEAR(std::min(r.halfU, r.halfV), 0.5, 1e-12);
@@ -161,7 +161,7 @@ TEST(MinAreaRectangle, KnownRegularPolygons) {
                                  radius * Eigen::Vector2d(std::cos(phase + 2 * kPi * k / c.sides),
                                                           std::sin(phase + 2 * kPi * k / c.sides)));
             SCOPED_TRACE(std::to_string(c.sides) + "-gon, phase " + std::to_string(phase));
-            const Rectangle2 r = MinAreaRectangle(points);
+            const Parallelogram2 r = MinAreaRectangle(points);
             EXPECT_NEAR(r.Area() / (c.expectedOverRSquared * radius * radius), 1.0, 1e-12);
             ExpectValidRectangle(r, points, 1e-9 * radius);
         }
@@ -179,7 +179,7 @@ TEST(MinAreaRectangle, RegularPolygonsAndCirclesAgainstBruteForce) {
             points.push_back(center + Rotated({radius, 0.0}, phase + 2 * kPi * k / sides));
         SCOPED_TRACE("seed " + std::to_string(seed) + ", " + std::to_string(sides) + "-gon, " +
                      Describe(points));
-        const Rectangle2 r = MinAreaRectangle(points);
+        const Parallelogram2 r = MinAreaRectangle(points);
         const double brute = BruteForceMinArea(points);
         EXPECT_LE(r.Area(), brute * (1 + 1e-12));
         // A 20000-step grid misses the optimal angle by at most π/80000 ≈ 4e-5 rad, and the box
@@ -208,7 +208,7 @@ TEST(MinAreaRectangle, RandomCloudsAgainstReferences) {
                                          scale * Rotated({gauss(rng), aspect * gauss(rng)}, angle));
         SCOPED_TRACE("seed " + std::to_string(seed) + ", trial " + std::to_string(trial) + ", " +
                      Describe(points));
-        const Rectangle2 r = MinAreaRectangle(points);
+        const Parallelogram2 r = MinAreaRectangle(points);
         const Points hull = ConvexHull(points);
         const double extent = onGrid ? 2.0 : scale * 10;
         ExpectValidRectangle(r, points, 1e-9 * extent);
@@ -228,7 +228,7 @@ TEST(MinAreaRectangle, RandomCloudsAgainstReferences) {
         }
         EXPECT_TRUE(alongEdge);
         // The hull entry point gives the very same rectangle.
-        const Rectangle2 fromHull = MinAreaRectangleOfHull(hull);
+        const Parallelogram2 fromHull = MinAreaRectangleOfHull(hull);
         EXPECT_TRUE(fromHull.center == r.center && fromHull.axisU == r.axisU &&
                     fromHull.axisV == r.axisV && fromHull.halfU == r.halfU &&
                     fromHull.halfV == r.halfV);
@@ -250,7 +250,7 @@ TEST(MinAreaRectangle, NeedleThinAndFinelySampledInputs) {
             p = Eigen::Vector2d(5, -7) + Rotated({uniform(rng), thickness * uniform(rng)}, angle);
         SCOPED_TRACE("seed " + std::to_string(seed) + ", trial " + std::to_string(trial) + ", " +
                      Describe(points));
-        const Rectangle2 r = MinAreaRectangle(points);
+        const Parallelogram2 r = MinAreaRectangle(points);
         ExpectValidRectangle(r, points, 1e-9);
         EXPECT_LE(r.halfV, 1e-11);  // the rectangle is as thin as the cloud
         // Areas here are ~1e-16 and both sides round at that level (length ≤ 2 times direction
@@ -263,7 +263,7 @@ TEST(MinAreaRectangle, NeedleThinAndFinelySampledInputs) {
     Points circle(100000);
     for (std::size_t k = 0; k < circle.size(); ++k)
         circle[k] = Rotated({3.0, 0.0}, 2 * kPi * static_cast<double>(k) / circle.size());
-    const Rectangle2 r = MinAreaRectangle(circle);
+    const Parallelogram2 r = MinAreaRectangle(circle);
     ExpectValidRectangle(r, circle, 1e-9 * 3);
     EXPECT_NEAR(r.Area(), 36.0, 36.0 * 1e-9);  // a fine polygon's box is the circle's square
 }
@@ -277,7 +277,7 @@ TEST(MinAreaRectangle, DegenerateInputsAreExact) {
     }
 
     for (const Points& single : {Points{{2.5, -1}}, Points(40, Eigen::Vector2d(2.5, -1))}) {
-        const Rectangle2 r = MinAreaRectangle(single);
+        const Parallelogram2 r = MinAreaRectangle(single);
         EXPECT_TRUE(r.center == Eigen::Vector2d(2.5, -1));
         EXPECT_TRUE(r.axisU == Eigen::Vector2d(1, 0));
         EXPECT_TRUE(r.axisV == Eigen::Vector2d(0, 1));
@@ -289,7 +289,7 @@ TEST(MinAreaRectangle, DegenerateInputsAreExact) {
 
     // Two points: axisU runs from the lowest-x point to the other, here (3, 4)/5.
     for (const Points& pair : {Points{{4, 5}, {1, 1}}, Points{{1, 1}, {4, 5}, {1, 1}, {4, 5}}}) {
-        const Rectangle2 r = MinAreaRectangle(pair);
+        const Parallelogram2 r = MinAreaRectangle(pair);
         EXPECT_TRUE(r.center == Eigen::Vector2d(2.5, 3));
         EXPECT_TRUE(r.axisU == Eigen::Vector2d(0.6, 0.8));
         EXPECT_TRUE(r.axisV == Eigen::Vector2d(-0.8, 0.6));
@@ -303,7 +303,7 @@ TEST(MinAreaRectangle, DegenerateInputsAreExact) {
     for (int t = -3; t <= 5; ++t) line.emplace_back(t, 2 * t);
     line.insert(line.end(), line.begin(), line.begin() + 4);
     std::shuffle(line.begin(), line.end(), std::mt19937_64(11));
-    const Rectangle2 r = MinAreaRectangle(line);
+    const Parallelogram2 r = MinAreaRectangle(line);
     EXPECT_TRUE(r.center == Eigen::Vector2d(1, 2));
     EXPECT_DOUBLE_EQ(r.axisU.x(), 1 / std::sqrt(5.0));
     EXPECT_DOUBLE_EQ(r.axisU.y(), 2 / std::sqrt(5.0));
@@ -312,7 +312,7 @@ TEST(MinAreaRectangle, DegenerateInputsAreExact) {
     EXPECT_EQ(r.Area(), 0.0);
     ExpectValidRectangle(r, line, 1e-9 * 10);
 
-    const Rectangle2 vertical = MinAreaRectangle(Points{{2, 5}, {2, 1}, {2, 2}});
+    const Parallelogram2 vertical = MinAreaRectangle(Points{{2, 5}, {2, 1}, {2, 2}});
     EXPECT_TRUE(vertical.center == Eigen::Vector2d(2, 3));
     EXPECT_TRUE(vertical.axisU == Eigen::Vector2d(0, 1));
     EXPECT_TRUE(vertical.axisV == Eigen::Vector2d(-1, 0));
@@ -362,14 +362,14 @@ TEST(MinAreaRectangle, HullEntryPointChecksItsInput) {
 }
 
 TEST(MinAreaRectangle, OrientLongSideAlong) {
-    Rectangle2 r;
+    Parallelogram2 r;
     r.center = {1, -2};
     r.axisU = {std::cos(0.3), std::sin(0.3)};
     r.axisV = {-r.axisU.y(), r.axisU.x()};
     r.halfU = 0.5;
     r.halfV = 2.0;
 
-    const Rectangle2 longU = OrientLongSideAlong(r, true);
+    const Parallelogram2 longU = OrientLongSideAlong(r, true);
     EXPECT_EQ(longU.halfU, 2.0);
     EXPECT_EQ(longU.halfV, 0.5);
     EXPECT_TRUE(longU.axisU == r.axisV);
@@ -382,11 +382,11 @@ TEST(MinAreaRectangle, OrientLongSideAlong) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR((after[k] - before[(k + 1) % 4]).norm(), 0.0, 1e-15);
 
     // Already oriented: unchanged, bit for bit.
-    const Rectangle2 same = OrientLongSideAlong(r, false);
+    const Parallelogram2 same = OrientLongSideAlong(r, false);
     EXPECT_TRUE(same.axisU == r.axisU && same.axisV == r.axisV && same.halfU == r.halfU &&
                 same.halfV == r.halfV && same.center == r.center);
     // And back: long side on V again, still right-handed.
-    const Rectangle2 longV = OrientLongSideAlong(longU, false);
+    const Parallelogram2 longV = OrientLongSideAlong(longU, false);
     EXPECT_EQ(longV.halfU, 0.5);
     EXPECT_EQ(longV.halfV, 2.0);
     EXPECT_NEAR(Cross(longV.axisU, longV.axisV), 1.0, 1e-15);
@@ -397,7 +397,7 @@ TEST(MinAreaRectangle, OrientLongSideAlong) {
     for (int trial = 0; trial < 20; ++trial) {
         const Points points = SampleRectangle({0, 0}, 0.37 * trial, 0.2 + 0.1 * trial, 1.0, rng);
         SCOPED_TRACE("trial " + std::to_string(trial) + ", " + Describe(points));
-        const Rectangle2 fitted = OrientLongSideAlong(MinAreaRectangle(points), true);
+        const Parallelogram2 fitted = OrientLongSideAlong(MinAreaRectangle(points), true);
         EXPECT_GE(fitted.halfU, fitted.halfV);
         EXPECT_NEAR(Cross(fitted.axisU, fitted.axisV), 1.0, 1e-15);
         ExpectValidRectangle(fitted, points, 1e-9 * 3);

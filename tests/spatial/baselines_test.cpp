@@ -9,6 +9,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
@@ -123,7 +124,7 @@ std::vector<Light> SweepLights(std::uint64_t seed, int points, int directionals)
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     auto hemisphere = [&]() {
-        const double y = unit(rng), phi = 2.0 * M_PI * unit(rng);
+        const double y = unit(rng), phi = 2.0 * std::numbers::pi * unit(rng);
         const double r = std::sqrt(std::max(0.0, 1.0 - y * y));
         return glm::dvec3(r * std::cos(phi), y, r * std::sin(phi));
     };
@@ -278,7 +279,8 @@ TEST(LispsmBaseline, OptimalNearMatchesClosedForms) {
     // γ = 90°: n + √(fn) (Lloyd 2006 §4.1).
     EXPECT_DOUBLE_EQ(LispsmOptimalNear(0.1, 100.0, 1.0), 0.1 + std::sqrt(10.0));
     // γ = 45°, n = 1, f = 100: (1 + 10) / (√2 / 2) = 11 √2 = 15.556349186104045.
-    EXPECT_NEAR(LispsmOptimalNear(1.0, 100.0, std::sin(M_PI / 4.0)), 15.556349186104045, 1e-12);
+    EXPECT_NEAR(LispsmOptimalNear(1.0, 100.0, std::sin(std::numbers::pi / 4.0)), 15.556349186104045,
+                1e-12);
 }
 
 TEST(LispsmBaseline, BodyDepthsAndOptimalNearForLevelCamera) {

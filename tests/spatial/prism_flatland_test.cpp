@@ -21,7 +21,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "lexel/cases/flatland_case.h"
 #include "lexel/flatland/angle_solvers.h"
