@@ -44,8 +44,8 @@
 #include <random>
 #include <vector>
 
-#include "lexel/cases/spatial_case.h"
-#include "lexel/cases/spatial_report.h"
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/baselines.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/ray_caster.h"

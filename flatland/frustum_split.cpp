@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
 #include "lexel/flatland/angle_solvers.h"
 #include "lexel/flatland/lexel_remap.h"
@@ -24,10 +25,10 @@ struct Group {
 SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
                               const FrustaOptions& options, SplitStrategy strategy) {
     if (options.metric == Metric::kLinf)
-        throw InputError(
-            "/frusta/metric: must be l1 or l2 (the Lagrange allocation needs a sum), got linf");
+        throw std::invalid_argument(
+            "frustum split: the metric must be L1 or L2 (the Lagrange allocation needs a sum)");
     if (options.max < 1 || options.budget < 1)
-        throw InputError("/frusta: max and budget must be at least 1");
+        throw std::invalid_argument("frustum split: max and budget must be at least 1");
     const int exponent = options.metric == Metric::kL1 ? 1 : 2;
     const auto& samples = decision.samples;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -116,6 +117,12 @@ SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
         errors.push_back(g.unitError);
         termSum += g.term;
     }
+    const auto holding =
+        std::count_if(errors.begin(), errors.end(), [](double e) { return e > 0; });
+    if (holding > lexels)
+        throw DomainError(Subject::kLexels, std::to_string(lexels) + " lexels cannot serve " +
+                                                std::to_string(holding) +
+                                                " frusta that hold samples");
     const std::vector<int> alloc = AllocateLexelsInteger(errors, exponent, lexels);
     for (std::size_t j = 0; j < alloc.size(); ++j) result.frusta[j].lexels = alloc[j];
     result.realTotal = AllocatedTotal(termSum, exponent, lexels);

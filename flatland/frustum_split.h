@@ -42,7 +42,9 @@ struct SplitResult {
     double wsAxis0 = 0.0;    // the pass's θ0
 };
 
-// Plans the split from the decision pass. Throws InputError for a metric other than l1/l2.
+// Plans the split from the decision pass. Throws DomainError (Subject::kLexels) when there are
+// fewer lexels than frusta that hold samples; std::invalid_argument for a metric other than
+// L1/L2 or max, budget < 1 (a loader checks these).
 SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
                               const FrustaOptions& options, SplitStrategy strategy);
 

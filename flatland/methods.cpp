@@ -25,12 +25,9 @@ const std::vector<std::string>& FlatlandMethodNames() {
     return names;
 }
 
-void CheckFlatlandMethod(const std::string& name) {
+bool IsFlatlandMethod(std::string_view name) {
     const auto& names = FlatlandMethodNames();
-    if (std::find(names.begin(), names.end(), name) != names.end()) return;
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    throw InputError("--method: unknown flatland method '" + name + "' (known: " + list + ")");
+    return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 namespace {
@@ -68,8 +65,11 @@ MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full,
 }  // namespace
 
 CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods,
-                           Metric metric, std::shared_ptr<const SamplingPass> fullPass) {
-    for (const auto& m : methods) CheckFlatlandMethod(m);
+                           Metric metric, std::shared_ptr<const SamplingPass> fullPass,
+                           const SamplingPass* decisionPass) {
+    for (const auto& m : methods)
+        if (!IsFlatlandMethod(m))
+            throw std::invalid_argument("unknown flatland method '" + m + "'");
     CheckSceneGeometry(scene);
     CaseReport report;
     report.caseName = scene.name;
@@ -86,9 +86,9 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
     report.fullPass = fullPass;
     // The decision pass is the full one unless the case asks for a coarser one (no copy).
     std::optional<SamplingPass> coarse;
-    if (scene.DecisionPixels() != scene.camera.pixels)
+    if (!decisionPass && scene.DecisionPixels() != scene.camera.pixels)
         coarse = RunSamplingPass(scene, scene.DecisionPixels());
-    const SamplingPass& decision = coarse ? *coarse : full;
+    const SamplingPass& decision = decisionPass ? *decisionPass : coarse ? *coarse : full;
     report.samplingMs = timer.Ms();
     report.pixelsVisible = static_cast<int>(full.samples.size());
     const LexelSamples fullSamples = MakeLexelSamples(full, scene.lexels);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lexel/flatland/sampling.h"
@@ -43,12 +44,15 @@ struct CaseReport {
 
 // All method names, in report order.
 const std::vector<std::string>& FlatlandMethodNames();
-// Throws InputError naming an unknown method.
-void CheckFlatlandMethod(const std::string& name);
+bool IsFlatlandMethod(std::string_view name);
 
-// `fullPass`, when given, must be RunSamplingPass(scene, scene.camera.pixels); callers that run
-// one scene repeatedly with different decision resolutions pass it to avoid recomputing it.
+// Runs `methods` (names from FlatlandMethodNames; std::invalid_argument otherwise) on the scene.
+// Throws DomainError as CheckSceneGeometry, RunSamplingPass and SplitLightFrustum do.
+// `fullPass`, when given, must be RunSamplingPass(scene, scene.camera.pixels), and
+// `decisionPass` RunSamplingPass(scene, scene.DecisionPixels()): callers that run one scene
+// repeatedly with different decision resolutions pass them to avoid recomputing them.
 CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods,
-                           Metric metric, std::shared_ptr<const SamplingPass> fullPass = nullptr);
+                           Metric metric, std::shared_ptr<const SamplingPass> fullPass = nullptr,
+                           const SamplingPass* decisionPass = nullptr);
 
 }  // namespace lexel::flatland

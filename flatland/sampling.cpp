@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "lexel/solvers/errors.h"
@@ -46,7 +47,12 @@ double PixelDerivativeAlong(const FlatCamera& camera, int pixels, const Vec2& ws
     return scale * (wsTangent.dot(u) * xc - wsTangent.dot(d) * yc) / (xc * xc);
 }
 
-SamplingPass RunSamplingPass(const FlatScene& scene, int pixels) {
+std::optional<SamplingPass> TrySamplingPass(const FlatScene& scene, int pixels,
+                                            std::optional<DomainError>* defect) {
+    const auto fail = [&](DomainError error) -> std::optional<SamplingPass> {
+        if (defect) defect->emplace(std::move(error));
+        return std::nullopt;
+    };
     const std::vector<FlatSegment> segments = Segments(scene);
     SamplingPass pass;
     pass.pixels = pixels;
@@ -70,10 +76,11 @@ SamplingPass RunSamplingPass(const FlatScene& scene, int pixels) {
         // pixel on it maps to one lexel and its footprint is unbounded.
         if (std::abs(dAlphadLambda) * toPoint.norm() <= 1e-12 * s.wsTangent.norm()) {
             const auto& seg = segments[hit->segment];
-            throw InputError("/geometry/" + std::to_string(seg.polyline) + "/" +
-                             std::to_string(seg.index) +
-                             ": the light lies on this visible segment's line, so its footprint "
-                             "dp/dl is unbounded");
+            return fail(
+                DomainError(Subject::kSegment,
+                            "the light lies on this visible segment's line, so its footprint "
+                            "dp/dl is unbounded",
+                            {seg.polyline, seg.index}));
         }
         s.dpdAngle = std::abs(s.dpdLambda / dAlphadLambda);
         const double wsAngle = std::atan2(toPoint.y(), toPoint.x());
@@ -82,7 +89,8 @@ SamplingPass RunSamplingPass(const FlatScene& scene, int pixels) {
         pass.samples.push_back(s);
     }
     if (pass.samples.empty())
-        throw InputError("/geometry: no camera pixel sees any geometry (Ω is empty)");
+        return fail(
+            DomainError(Subject::kGeometry, "no camera pixel sees any geometry (Ω is empty)"));
 
     // The sweep: with all angles taken relative to one visible point, a set that fits in an open
     // half-plane has relative angles spanning less than π, and one that does not spans at least π.
@@ -90,20 +98,28 @@ SamplingPass RunSamplingPass(const FlatScene& scene, int pixels) {
     for (const auto& s : pass.samples) lo = std::min(lo, s.lsAngle), hi = std::max(hi, s.lsAngle);
     const double sweep = hi - lo;
     if (sweep >= std::numbers::pi * (1.0 - 1e-12))
-        throw InputError("/light/position: the visible points span " +
-                         std::to_string(Degrees(sweep)) +
-                         " degrees as seen from the light; no lexel plane has them all in front");
+        return fail(DomainError(
+            Subject::kLight,
+            "the visible points span " + std::to_string(Degrees(sweep)) +
+                " degrees as seen from the light; no lexel plane has them all in front"));
     // Zero extent: all visible points on one ray from the light (1e-12 rad is the angular
     // resolution of double-precision atan2 at unit scale).
     if (sweep <= 1e-12)
-        throw InputError(
-            "/light/position: all visible points lie on one ray from the light; the "
-            "lexel plane would have zero extent");
+        return fail(DomainError(Subject::kLight,
+                                "all visible points lie on one ray from the light; the lexel plane "
+                                "would have zero extent"));
     const double mid = 0.5 * (lo + hi);
     pass.wsAxis0 = WrapAngle(wsRef + mid);
     pass.halfSweep = 0.5 * sweep;
     for (auto& s : pass.samples) s.lsAngle -= mid;
     return pass;
+}
+
+SamplingPass RunSamplingPass(const FlatScene& scene, int pixels) {
+    std::optional<DomainError> defect;
+    std::optional<SamplingPass> pass = TrySamplingPass(scene, pixels, &defect);
+    if (!pass) throw *defect;
+    return std::move(*pass);
 }
 
 }  // namespace lexel::flatland

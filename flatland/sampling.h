@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "lexel/flatland/scene.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::flatland {
 
@@ -56,10 +57,13 @@ std::optional<RayHit> CastPixelRay(const FlatCamera& camera,
 double PixelDerivativeAlong(const FlatCamera& camera, int pixels, const Vec2& wsPoint,
                             const Vec2& wsTangent);
 
-// Runs the pass at `pixels` resolution. Throws InputError when no pixel sees geometry, when the
-// visible points span 180° or more from the light (no lexel plane has them all in front), when
-// they all lie on one ray from the light (zero extent), or when a visible segment's line passes
-// through the light (its footprints are unbounded).
+// Runs the pass at `pixels` resolution. Throws DomainError: Subject::kGeometry when no pixel sees
+// geometry; kLight when the visible points span 180° or more from the light (no lexel plane has
+// them all in front) or all lie on one ray from the light (zero extent); kSegment when a visible
+// segment's line passes through the light (its footprints are unbounded).
 SamplingPass RunSamplingPass(const FlatScene& scene, int pixels);
+// The same without throwing: nullopt, with the error in *defect when given.
+std::optional<SamplingPass> TrySamplingPass(const FlatScene& scene, int pixels,
+                                            std::optional<DomainError>* defect = nullptr);
 
 }  // namespace lexel::flatland

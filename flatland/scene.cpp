@@ -1,5 +1,6 @@
 #include "lexel/flatland/scene.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -60,23 +61,28 @@ void CheckSceneGeometry(const FlatScene& scene) {
     const double onEps = 1e-12 * SceneScale(scene);
     for (std::size_t i = 0; i < scene.geometry.size(); ++i) {
         const auto& polyline = scene.geometry[i];
-        const std::string where = "/geometry/" + std::to_string(i);
+        const int poly = static_cast<int>(i);
         for (std::size_t j = 0; j + 1 < polyline.size(); ++j) {
-            const std::string seg = where + "/" + std::to_string(j);
+            const std::string seg =
+                "segment " + std::to_string(j) + " of polyline " + std::to_string(i);
+            const std::array<int, 2> at = {poly, static_cast<int>(j)};
             if ((polyline[j + 1] - polyline[j]).norm() <= onEps)
-                throw InputError(seg + ": zero-length segment (points " + std::to_string(j) +
-                                 " and " + std::to_string(j + 1) + " coincide)");
+                throw DomainError(Subject::kSegment,
+                                  "zero-length segment (points " + std::to_string(j) + " and " +
+                                      std::to_string(j + 1) + " coincide)",
+                                  at);
             if (DistanceToSegment(scene.wsLight, polyline[j], polyline[j + 1]) <= onEps)
-                throw InputError("/light/position: the light lies on segment " + seg);
+                throw DomainError(Subject::kLight, "the light lies on " + seg, at);
             if (DistanceToSegment(scene.camera.wsPosition, polyline[j], polyline[j + 1]) <= onEps)
-                throw InputError("/camera/position: the camera lies on segment " + seg);
+                throw DomainError(Subject::kCamera, "the camera lies on " + seg, at);
         }
         const bool closed =
             polyline.size() >= 4 && (polyline.front() - polyline.back()).norm() <= onEps;
+        const std::string where = "the closed polyline " + std::to_string(i);
         if (closed && InsideClosed(scene.wsLight, polyline))
-            throw InputError("/light/position: the light is inside the closed polyline " + where);
+            throw DomainError(Subject::kLight, "the light is inside " + where, {poly, -1});
         if (closed && InsideClosed(scene.camera.wsPosition, polyline))
-            throw InputError("/camera/position: the camera is inside the closed polyline " + where);
+            throw DomainError(Subject::kCamera, "the camera is inside " + where, {poly, -1});
     }
 }
 

@@ -52,7 +52,8 @@ struct FlatSegment {
 std::vector<FlatSegment> Segments(const FlatScene& scene);
 
 // Geometric sanity of a scene: zero-length segments, the light or the camera on a segment or
-// inside a closed polyline. Throws InputError naming the JSON pointer of the offending element.
+// inside a closed polyline. Throws DomainError: Subject::kSegment (index {polyline, segment}) for
+// a zero-length segment; kLight or kCamera, with the segment's or polyline's index, for the rest.
 void CheckSceneGeometry(const FlatScene& scene);
 
 // Angle helpers. World angles are radians counterclockwise from +x.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "lexel/solvers/errors.h"
@@ -136,7 +137,8 @@ std::vector<Eigen::Vector2d> ConvexHull(std::span<const Eigen::Vector2d> points)
     // Checked first: a NaN would also break the strict weak ordering the sort relies on.
     for (std::size_t k = 0; k < points.size(); ++k)
         if (!points[k].allFinite())
-            throw InputError("convex hull: point " + std::to_string(k) + " is not finite");
+            throw std::invalid_argument("convex hull: point " + std::to_string(k) +
+                                        " is not finite");
 
     std::vector<Eigen::Vector2d> sorted(points.begin(), points.end());
     std::sort(sorted.begin(), sorted.end(), LexicographicLess);

@@ -44,8 +44,8 @@ int DotSign(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vec
 // Degenerate input: no points → empty; one distinct point (possibly repeated) → that point;
 // all points collinear (two distinct points included) → the two extreme points, lowest-x
 // (then lowest-y) first. Duplicates anywhere are fine. Every returned vertex is one of the
-// input points, bit for bit. Throws InputError ("convex hull: point K is not finite") on a NaN
-// or infinite coordinate.
+// input points, bit for bit. Throws std::invalid_argument ("convex hull: point K is not finite") on
+// a NaN or infinite coordinate.
 std::vector<Eigen::Vector2d> ConvexHull(std::span<const Eigen::Vector2d> points);
 // The same for GLM points.
 std::vector<glm::dvec2> ConvexHull(std::span<const glm::dvec2> points);

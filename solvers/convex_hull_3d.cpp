@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -214,7 +215,8 @@ std::vector<std::size_t> PlanarHullVertices(std::span<const Eigen::Vector3d> poi
 std::vector<std::size_t> ConvexHullVertices3D(std::span<const Eigen::Vector3d> points) {
     for (std::size_t k = 0; k < points.size(); ++k)
         if (!points[k].allFinite())
-            throw InputError("convex hull 3d: point " + std::to_string(k) + " is not finite");
+            throw std::invalid_argument("convex hull 3d: point " + std::to_string(k) +
+                                        " is not finite");
     const std::vector<std::size_t> all = Iota(points.size());
     if (points.size() < 4) return points.empty() ? all : PlanarHullVertices(points, all);
 

@@ -44,8 +44,8 @@ inline constexpr double kFlatTolerance = 1e-12;
 // Indices of the hull vertices into `points`, ascending. No points → empty; one distinct point
 // (possibly repeated) → one index; collinear points → the two extremes; coplanar points → the
 // corners of their planar hull; otherwise Qhull's vertices. Duplicates anywhere are fine (one of
-// them is returned). Throws InputError ("convex hull 3d: point K is not finite") on a NaN or
-// infinite coordinate. Never prints. Thread-safe (one Qhull instance per call).
+// them is returned). Throws std::invalid_argument ("convex hull 3d: point K is not finite") on a
+// NaN or infinite coordinate. Never prints. Thread-safe (one Qhull instance per call).
 std::vector<std::size_t> ConvexHullVertices3D(std::span<const Eigen::Vector3d> points);
 
 }  // namespace lexel

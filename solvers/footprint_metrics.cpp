@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,9 @@ FootprintStats SummarizeFootprints(std::span<const double> footprints,
                                    std::span<const double> weights) {
     const bool weighted = !weights.empty();
     if (weighted && weights.size() != footprints.size())
-        throw InputError("footprint weights: expected " + std::to_string(footprints.size()) +
-                         " weights, got " + std::to_string(weights.size()));
+        throw std::invalid_argument("footprint weights: expected " +
+                                    std::to_string(footprints.size()) + " weights, got " +
+                                    std::to_string(weights.size()));
     FootprintStats stats;
     // Pass 1: sums and max. Sums in long double: a million footprints of mixed magnitude must
     // not lose the last digit the thesis tables print.
@@ -25,10 +27,11 @@ FootprintStats SummarizeFootprints(std::span<const double> footprints,
         const double f = footprints[i];
         const double w = weighted ? weights[i] : 1.0;
         if (std::isnan(f) || f < 0)
-            throw InputError("footprint " + std::to_string(i) + ": must be a non-negative number");
+            throw std::invalid_argument("footprint " + std::to_string(i) +
+                                        ": must be a non-negative number");
         if (std::isnan(w) || w < 0 || std::isinf(w))
-            throw InputError("footprint weight " + std::to_string(i) +
-                             ": must be finite and non-negative");
+            throw std::invalid_argument("footprint weight " + std::to_string(i) +
+                                        ": must be finite and non-negative");
         if (w == 0) continue;
         ++stats.count;
         sumW += w;
@@ -94,11 +97,11 @@ std::string_view MetricName(Metric metric) {
     return "?";
 }
 
-Metric ParseMetric(std::string_view name) {
+std::optional<Metric> ParseMetric(std::string_view name) {
     if (name == "l1") return Metric::kL1;
     if (name == "l2") return Metric::kL2;
     if (name == "linf") return Metric::kLinf;
-    throw InputError("metric: must be one of l1, l2, linf, got '" + std::string(name) + "'");
+    return std::nullopt;
 }
 
 Eigen::Vector2d SingularValues2x2(const Eigen::Matrix2d& m) {

@@ -22,6 +22,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -41,15 +42,15 @@ struct FootprintStats {
     double worst() const { return linf; }
 };
 
-// Aggregates f (and optional weights of the same length). Throws InputError on a NaN, a negative
-// footprint, a negative weight, or mismatched lengths. An empty input gives all zeros.
+// Aggregates f (and optional weights of the same length). Throws std::invalid_argument on a NaN, a
+// negative footprint, a negative weight, or mismatched lengths. An empty input gives all zeros.
 FootprintStats SummarizeFootprints(std::span<const double> footprints,
                                    std::span<const double> weights = {});
 
 // The three norms the optimizers minimize (ch. 2.1).
 enum class Metric { kL1, kL2, kLinf };
-std::string_view MetricName(Metric metric);  // "l1", "l2", "linf"
-Metric ParseMetric(std::string_view name);   // throws InputError on an unknown name
+std::string_view MetricName(Metric metric);                // "l1", "l2", "linf"
+std::optional<Metric> ParseMetric(std::string_view name);  // nullopt for an unknown name
 
 // 3D badness of one sample from J = ∂u/∂x (texels per pixel).
 enum class Badness {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "lexel/solvers/errors.h"
@@ -40,8 +41,8 @@ std::vector<int> AllocateLexelsInteger(std::span<const double> errors, int expon
     std::size_t occupied = 0;
     for (double e : errors) occupied += e > 0.0;
     if (static_cast<long>(occupied) > lexels)
-        throw InputError("lexels: " + std::to_string(lexels) + " lexels cannot serve " +
-                         std::to_string(occupied) + " frusta that hold samples");
+        throw std::invalid_argument("lexels: " + std::to_string(lexels) + " lexels cannot serve " +
+                                    std::to_string(occupied) + " frusta that hold samples");
     const std::vector<double> real = AllocateLexelsReal(errors, exponent, lexels);
     std::vector<int> alloc(n, 0);
     long used = 0;

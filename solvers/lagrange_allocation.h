@@ -27,7 +27,7 @@ double AllocatedTotal(double termSum, int exponent, double lexels);  // (Σ term
 
 std::vector<double> AllocateLexelsReal(std::span<const double> errors, int exponent, double lexels);
 
-// Throws InputError when there are fewer lexels than frusta holding samples.
+// Throws std::invalid_argument when there are fewer lexels than frusta holding samples.
 std::vector<int> AllocateLexelsInteger(std::span<const double> errors, int exponent, int lexels);
 
 double AllocationError(std::span<const double> errors, std::span<const int> lexels, int exponent);

@@ -53,6 +53,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -225,18 +226,18 @@ Parallelogram2 ParallelogramOfValidHull(std::span<const Eigen::Vector2d> hull,
 }  // namespace
 
 Parallelogram2 MinAreaParallelogram(std::span<const Eigen::Vector2d> points) {
-    if (points.empty()) throw InputError("minimum-area parallelogram: no points");
+    if (points.empty()) throw std::invalid_argument("minimum-area parallelogram: no points");
     for (std::size_t k = 0; k < points.size(); ++k)
         if (!points[k].allFinite())
-            throw InputError("minimum-area parallelogram: point " + std::to_string(k) +
-                             " is not finite");
+            throw std::invalid_argument("minimum-area parallelogram: point " + std::to_string(k) +
+                                        " is not finite");
     const std::vector<Eigen::Vector2d> hull = ConvexHull(points);
     return ParallelogramOfValidHull(hull, nullptr);
 }
 
 Parallelogram2 MinAreaParallelogramOfHull(std::span<const Eigen::Vector2d> ccwHull,
                                           ParallelogramStructure* structure) {
-    MinAreaRectangleOfHull(ccwHull);  // the same validation, O(h); throws InputError
+    MinAreaRectangleOfHull(ccwHull);  // the same validation, O(h); throws std::invalid_argument
     return ParallelogramOfValidHull(ccwHull, structure);
 }
 
@@ -244,10 +245,12 @@ Parallelogram2 ParallelogramFlushWithEdge(std::span<const Eigen::Vector2d> ccwHu
                                           std::size_t edge, ParallelogramStructure* structure) {
     MinAreaRectangleOfHull(ccwHull);
     if (ccwHull.size() < 3)
-        throw InputError("minimum-area parallelogram: a flush edge needs at least 3 hull vertices");
+        throw std::invalid_argument(
+            "minimum-area parallelogram: a flush edge needs at least 3 hull vertices");
     if (edge >= ccwHull.size())
-        throw InputError("minimum-area parallelogram: edge " + std::to_string(edge) +
-                         " of a hull of " + std::to_string(ccwHull.size()) + " vertices");
+        throw std::invalid_argument("minimum-area parallelogram: edge " + std::to_string(edge) +
+                                    " of a hull of " + std::to_string(ccwHull.size()) +
+                                    " vertices");
     std::vector<double> s(ccwHull.size()), t(ccwHull.size());
     EdgeCandidate c = FitEdge(ccwHull, edge, s, t);
     if (structure) *structure = c.structure;

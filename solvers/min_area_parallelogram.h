@@ -19,7 +19,7 @@ namespace lexel {
 // are broken like MinAreaRectangle: the first minimal hull edge in ConvexHull's order wins; axisU
 // is that edge's direction and axisV = (v - k* u) / √(1 + k*²). Degenerate input: fewer than 3 hull
 // vertices (one distinct point, or all collinear) gives MinAreaRectangle's rectangle, unsheared.
-// Throws InputError on no points or a non-finite coordinate.
+// Throws std::invalid_argument on no points or a non-finite coordinate.
 Parallelogram2 MinAreaParallelogram(std::span<const Eigen::Vector2d> points);
 
 // The same for a hull in ConvexHull's form (validated as MinAreaRectangleOfHull does), optionally
@@ -30,7 +30,7 @@ Parallelogram2 MinAreaParallelogramOfHull(std::span<const Eigen::Vector2d> ccwHu
 // The least parallelogram with a side pair parallel to hull edge ccwHull[edge] → ccwHull[edge + 1
 // mod h], one side on that edge: the per-edge step of MinAreaParallelogramOfHull (k* closest to 0
 // among the minimizers of E). The hull is validated as there and must have ≥ 3 vertices, and
-// edge < h; InputError otherwise.
+// edge < h; std::invalid_argument otherwise.
 Parallelogram2 ParallelogramFlushWithEdge(std::span<const Eigen::Vector2d> ccwHull,
                                           std::size_t edge,
                                           ParallelogramStructure* structure = nullptr);

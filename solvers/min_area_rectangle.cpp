@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -118,11 +119,11 @@ Parallelogram2 RectangleOfValidHull(std::span<const Eigen::Vector2d> hull,
 }  // namespace
 
 Parallelogram2 MinAreaRectangle(std::span<const Eigen::Vector2d> points) {
-    if (points.empty()) throw InputError("minimum-area rectangle: no points");
+    if (points.empty()) throw std::invalid_argument("minimum-area rectangle: no points");
     for (std::size_t k = 0; k < points.size(); ++k)
         if (!points[k].allFinite())
-            throw InputError("minimum-area rectangle: point " + std::to_string(k) +
-                             " is not finite");
+            throw std::invalid_argument("minimum-area rectangle: point " + std::to_string(k) +
+                                        " is not finite");
     const std::vector<Eigen::Vector2d> hull = ConvexHull(points);
     return RectangleOfValidHull(hull, nullptr);
 }
@@ -130,13 +131,13 @@ Parallelogram2 MinAreaRectangle(std::span<const Eigen::Vector2d> points) {
 Parallelogram2 MinAreaRectangleOfHull(std::span<const Eigen::Vector2d> ccwHull,
                                       ParallelogramStructure* structure) {
     const std::size_t h = ccwHull.size();
-    if (h == 0) throw InputError("minimum-area rectangle: no points");
+    if (h == 0) throw std::invalid_argument("minimum-area rectangle: no points");
     for (std::size_t k = 0; k < h; ++k)
         if (!ccwHull[k].allFinite())
-            throw InputError("minimum-area rectangle: hull vertex " + std::to_string(k) +
-                             " is not finite");
+            throw std::invalid_argument("minimum-area rectangle: hull vertex " + std::to_string(k) +
+                                        " is not finite");
     if (h == 2 && ccwHull[0] == ccwHull[1])
-        throw InputError("minimum-area rectangle: hull vertices 0 and 1 coincide");
+        throw std::invalid_argument("minimum-area rectangle: hull vertices 0 and 1 coincide");
     if (h >= 3) {
         // Strict left turns everywhere (exact test) make the polygon locally convex; it is then
         // convex iff its edge directions turn once around, i.e. the exterior angles, each in
@@ -148,13 +149,14 @@ Parallelogram2 MinAreaRectangleOfHull(std::span<const Eigen::Vector2d> ccwHull,
             const Eigen::Vector2d& cur = ccwHull[k];
             const Eigen::Vector2d& nxt = ccwHull[(k + 1) % h];
             if (OrientationSign(prev, cur, nxt) <= 0)
-                throw InputError("minimum-area rectangle: hull vertex " + std::to_string(k) +
-                                 " is not a strict counter-clockwise turn");
+                throw std::invalid_argument("minimum-area rectangle: hull vertex " +
+                                            std::to_string(k) +
+                                            " is not a strict counter-clockwise turn");
             const Eigen::Vector2d e0 = cur - prev, e1 = nxt - cur;
             turning += std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
         }
         if (turning > 3.0 * std::numbers::pi)
-            throw InputError("minimum-area rectangle: hull winds around more than once");
+            throw std::invalid_argument("minimum-area rectangle: hull winds around more than once");
     }
     return RectangleOfValidHull(ccwHull, structure);
 }

@@ -152,7 +152,9 @@ NormalAxis ChooseNormalAxis(const BaselineContext& context) {
         axis.p4 = *cone;
         return axis;
     }
-    throw InputError("baselines: no optical axis sees every relevant point from this light");
+    throw DomainError(Subject::kLight,
+                      "no optical axis sees every visible point from this light (they surround "
+                      "it)");
 }
 
 double LightPlaneOffset(const BaselineContext& context, const NormalAxis& axis) {
@@ -181,8 +183,9 @@ std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAx
 
 void CheckContext(const BaselineContext& context) {
     if (context.lightSpace == nullptr)
-        throw InputError("baselines: the context needs a light space");
-    if (context.wsBounds.Empty()) throw InputError("baselines: the scene bounds are empty");
+        throw std::invalid_argument("baselines: the context needs a light space");
+    if (context.wsBounds.Empty())
+        throw DomainError(Subject::kGeometry, "the scene bounds are empty");
 }
 
 }  // namespace lexel::spatial::baseline_detail

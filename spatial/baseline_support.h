@@ -58,7 +58,7 @@ std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAx
 // δ above: the light-space depth along p4 below which nothing relevant lies (> 0).
 double LightPlaneOffset(const BaselineContext& context, const NormalAxis& axis);
 
-// Throws InputError unless the context has a light space and a non-empty bounds.
+// Throws std::invalid_argument without a light space, DomainError for empty bounds.
 void CheckContext(const BaselineContext& context);
 
 }  // namespace lexel::spatial::baseline_detail

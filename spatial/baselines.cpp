@@ -46,16 +46,29 @@ LightMatrix FitCovering(const glm::dvec3& p4, std::vector<glm::dvec2> planePoint
         Note(diagnostics, std::string(method) + ": refitted over the relevant points too");
     }
     for (const glm::dvec3& X : lsRelevant) {
-        if (!InFront(p4, X)) throw InputError(std::string(method) + ": relevant point behind p4");
+        if (!InFront(p4, X))
+            throw DomainError(Subject::kLight, std::string(method) +
+                                                   ": a visible point is behind the light's plane");
         planePoints.push_back(ProjectToPlane(p4, X));
     }
     const auto m = FitMapToPlanePoints(p4, planePoints, map);
     if (!m || !CoversAll(*m, lsRelevant, map))
-        throw InputError(std::string(method) + ": no rectangle covers the relevant points");
+        throw DomainError(Subject::kLight,
+                          std::string(method) + ": no rectangle covers the visible points");
     return *m;
 }
 
 }  // namespace
+
+glm::dvec3 InitialLightAxis(const LightSpace& lightSpace, const Bounds& wsBounds,
+                            std::span<const glm::dvec3> wsRelevant) {
+    BaselineContext context;
+    context.lightSpace = &lightSpace;
+    context.wsBounds = wsBounds;
+    context.wsRelevant = wsRelevant;
+    CheckContext(context);
+    return ChooseNormalAxis(context).p4;
+}
 
 LightMatrix NormalLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
     CheckContext(context);
@@ -107,13 +120,18 @@ LightMatrix FocusedLightMatrix(const BaselineContext& context, BaselineDiagnosti
                        "focused", diagnostics);
 }
 
-LightMatrix PlaneOptimalProjectiveMatrix(const BaselineContext& context) {
+std::optional<LightMatrix> PlaneOptimalProjectiveMatrix(const BaselineContext& context,
+                                                        std::string* failure) {
     CheckContext(context);
-    if (!context.floorPlane) throw InputError("plane-optimal: the scene has no floor plane");
+    const auto fail = [&](const std::string& why) -> std::optional<LightMatrix> {
+        if (failure) *failure = why;
+        return std::nullopt;
+    };
+    if (!context.floorPlane) return fail("the scene has no floor plane");
     const glm::dvec4& floorPlane = *context.floorPlane;
     const glm::dvec3 n(floorPlane);
     const double nLen = glm::length(n);
-    if (!(nLen > 0.0)) throw InputError("plane-optimal: the floor plane normal is zero");
+    if (!(nLen > 0.0)) return fail("the floor plane normal is zero");
     const glm::dvec3 unitN = n / nLen;
     const glm::dvec3 wsOnPlane = -(floorPlane.w / nLen) * unitN;
     glm::dvec3 t1, t2;
@@ -133,7 +151,7 @@ LightMatrix PlaneOptimalProjectiveMatrix(const BaselineContext& context) {
     glm::dmat4 unit = basis;
     for (int c = 0; c < 4; ++c) unit[c] /= glm::length(unit[c]);
     if (!(std::abs(glm::determinant(unit)) > 1e-12))
-        throw InputError("plane-optimal: the light lies on the floor plane");
+        return fail("the light lies on the floor plane");
 
     const glm::dmat4 screenFromWorld = context.camera.ScreenFromWorld(context.map);
     const glm::dmat4 qb = screenFromWorld * basis;  // columns Q·B_k (and Q·L, dropped)
@@ -146,7 +164,7 @@ LightMatrix PlaneOptimalProjectiveMatrix(const BaselineContext& context) {
         for (const glm::dvec3& x : context.wsRelevant) wsCenter += x;
         wsCenter /= static_cast<double>(context.wsRelevant.size());
     }
-    return FromScreenRows(ls, rows, wsCenter);
+    return FromScreenRows(ls, rows, wsCenter, failure);
 }
 
 namespace {
@@ -174,21 +192,21 @@ glm::dvec3 Slerp(const glm::dvec3& a, const glm::dvec3& b, double t) {
 LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
                                     BaselineDiagnostics* diagnostics) {
     CheckContext(context);
-    if (!context.floorPlane) throw InputError("plane-optimal: the scene has no floor plane");
+    if (!context.floorPlane)
+        throw DomainError(Subject::kGeometry,
+                          "plane-optimal needs a floor plane (a plane primitive or the "
+                          "floor_objects generator)");
     auto fallBack = [&](const std::string& why) {
         Note(diagnostics, "plane-optimal: " + why + "; using focused");
         return FocusedLightMatrix(context, diagnostics);
     };
-    LightMatrix projective;
-    try {
-        projective = PlaneOptimalProjectiveMatrix(context);
-    } catch (const InputError& e) {
-        return fallBack(e.what());  // the light on the floor plane (or rows not annihilating it)
-    }
+    std::string failure;  // the light on the floor plane (or rows not annihilating it)
+    const std::optional<LightMatrix> projective = PlaneOptimalProjectiveMatrix(context, &failure);
+    if (!projective) return fallBack(failure);
     const std::vector<glm::dvec3> lsRelevant = ToLightAll(*context.lightSpace, context.wsRelevant);
     if (lsRelevant.empty()) return fallBack("no relevant points to fit");
 
-    glm::dvec3 p4 = projective.p4;
+    glm::dvec3 p4 = projective->p4;
     if (!AllInFrontWithMargin(p4, lsRelevant)) {
         // The report's observation that one map cannot serve every configuration: a relevant
         // point off the plane whose shadow on the plane falls behind the camera is behind p4.

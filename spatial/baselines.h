@@ -74,8 +74,8 @@ struct BaselineDiagnostics {
 // of the unit corner directions; else the axis of the narrowest cone around the corner
 // directions (it exists whenever any axis sees every corner); else (a light in the plane of a
 // box face) the narrowest cone around the relevant points, fitted over them only. Throws
-// InputError when no axis sees every relevant point (they surround the light: no single light
-// matrix sees them). Focused, LiSPSM and PSM start from this same axis.
+// DomainError (Subject::kLight) when no axis sees every relevant point (they surround the light:
+// no single light matrix sees them). Focused, LiSPSM and PSM start from this same axis.
 LightMatrix NormalLightMatrix(const BaselineContext& context,
                               BaselineDiagnostics* diagnostics = nullptr);
 
@@ -102,19 +102,27 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context,
 LightMatrix PsmLightMatrix(const BaselineContext& context,
                            BaselineDiagnostics* diagnostics = nullptr);
 
-// Plane-optimal for context.floorPlane (InputError when the scene has none), refitted over
-// wsRelevant. When a relevant point is behind the plane-optimal p4 (off the plane, its shadow on
-// the plane behind the camera), p4 is turned toward the focused p4 along the great circle by the
-// smallest fraction that sees every relevant point (bisection, 40 steps; diagnostics'
+// Plane-optimal for context.floorPlane (DomainError, Subject::kGeometry, when there is none),
+// refitted over wsRelevant. When a relevant point is behind the plane-optimal p4 (off the plane,
+// its shadow on the plane behind the camera), p4 is turned toward the focused p4 along the great
+// circle by the smallest fraction that sees every relevant point (bisection, 40 steps; diagnostics'
 // rotationFraction). Fallback to focused: the light on the floor plane, no relevant points, or no
 // such fraction.
 LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
                                     BaselineDiagnostics* diagnostics = nullptr);
 
 // The plane-optimal matrix before the affine refit: for A = identity, a floor point seen at
-// screen point x (pixels of context.map's size) maps to u = x. Throws InputError when the
-// scene has no floor plane or the light lies on it (no plane-optimal matrix exists).
-LightMatrix PlaneOptimalProjectiveMatrix(const BaselineContext& context);
+// screen point x (pixels of context.map's size) maps to u = x. nullopt, with the reason in
+// *failure, when there is no floor plane or the light lies on it (no plane-optimal matrix exists).
+std::optional<LightMatrix> PlaneOptimalProjectiveMatrix(const BaselineContext& context,
+                                                        std::string* failure = nullptr);
+
+// The optical axis Algorithm 1 starts from (report §2.3: "we start with a standard shadow map";
+// focused's axis, which normal's is): in the frame of `lightSpace`, the axis toward the centre of
+// wsBounds, or NormalLightMatrix's fallbacks when a bounds corner is behind it. Unit length.
+// Throws DomainError (Subject::kLight) when no axis sees every visible point.
+glm::dvec3 InitialLightAxis(const LightSpace& lightSpace, const Bounds& wsBounds,
+                            std::span<const glm::dvec3> wsRelevant);
 
 // Wimmer et al.'s optimal distance from the warp's projection centre to the body's near face:
 // n_opt = (z_n + √(z_f z_n)) / sin γ; z_n + √(z_f z_n) when γ = 90° (Lloyd 2006 §4.1).

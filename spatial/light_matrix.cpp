@@ -4,7 +4,6 @@
 #include <cmath>
 #include <vector>
 
-#include "lexel/solvers/errors.h"
 #include "lexel/solvers/min_area_parallelogram.h"
 #include "lexel/solvers/min_area_rectangle.h"
 #include "lexel/spatial/affine_fit.h"
@@ -40,8 +39,13 @@ LightMatrix LightMatrix::ThenAffine(const glm::dmat3& a) const {
     return out;
 }
 
-LightMatrix FromScreenRows(const LightSpace& lightSpace, const glm::dmat4& screenFromWorld,
-                           const glm::dvec3& wsCenter) {
+std::optional<LightMatrix> FromScreenRows(const LightSpace& lightSpace,
+                                          const glm::dmat4& screenFromWorld,
+                                          const glm::dvec3& wsCenter, std::string* failure) {
+    const auto fail = [&](const std::string& why) -> std::optional<LightMatrix> {
+        if (failure) *failure = why;
+        return std::nullopt;
+    };
     const glm::dmat3 linear = lightSpace.LightFromWorldLinear();  // rows e1, e2, (e3 | 0)
     const glm::dvec3 lsCenter = lightSpace.ToLight(wsCenter);
     glm::dvec3 rows[3];
@@ -60,13 +64,13 @@ LightMatrix FromScreenRows(const LightSpace& lightSpace, const glm::dmat4& scree
             p.z = glm::dot(e3, rXyz);
             const double atLight = glm::dot(rXyz, lightSpace.light().position) + rW;
             if (std::abs(atLight) > 1e-9 * scale * (1.0 + glm::length(lightSpace.light().position)))
-                throw InputError("light matrix: row " + std::to_string(r + 1) +
-                                 " does not send the point light to infinity");
+                return fail("row " + std::to_string(r + 1) +
+                            " does not send the point light to infinity");
         } else {
             const double alongLight = glm::dot(rXyz, lightSpace.light().direction);
             if (std::abs(alongLight) > 1e-9 * scale)
-                throw InputError("light matrix: row " + std::to_string(r + 1) +
-                                 " does not send the directional light to infinity");
+                return fail("row " + std::to_string(r + 1) +
+                            " does not send the directional light to infinity");
             // p·X(c) = r·[c; 1] at the centre fixes the third component.
             p.z =
                 (glm::dot(rXyz, wsCenter) + rW - p.x * lsCenter.x - p.y * lsCenter.y) / lsCenter.z;
@@ -74,9 +78,9 @@ LightMatrix FromScreenRows(const LightSpace& lightSpace, const glm::dmat4& scree
         rows[k] = p;
     }
     double norm = glm::length(rows[2]);
-    if (!(norm > 0.0)) throw InputError("light matrix: the optical axis row is zero");
+    if (!(norm > 0.0)) return fail("the optical axis row is zero");
     if (glm::dot(rows[2], lsCenter) < 0.0) norm = -norm;
-    return {rows[0] / norm, rows[1] / norm, rows[2] / norm};
+    return LightMatrix{rows[0] / norm, rows[1] / norm, rows[2] / norm};
 }
 
 bool InFront(const glm::dvec3& p4, const glm::dvec3& lsX) {

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 #include <optional>
 #include <span>
+#include <string>
 
 #include "lexel/solvers/geometry.h"
 #include "lexel/spatial/camera.h"
@@ -45,10 +46,12 @@ struct LightMatrix {
 
 // The LightMatrix equal to a world-space 4×4 whose rows 1, 2, 4 send world points to texels
 // (u^i = row_i·[x;1] / row_4·[x;1]); row 3 is ignored. The rows must annihilate the light (send it
-// to infinity, report Fig. 1); throws InputError otherwise (relative tolerance 1e-9). The result
-// is scaled so that |p4| = 1 and p4 · X > 0 at the bounds centre `wsCenter`.
-LightMatrix FromScreenRows(const LightSpace& lightSpace, const glm::dmat4& screenFromWorld,
-                           const glm::dvec3& wsCenter);
+// to infinity, report Fig. 1, relative tolerance 1e-9); nullopt otherwise, with the reason in
+// *failure when given. The result is scaled so that |p4| = 1 and p4 · X > 0 at `wsCenter`.
+std::optional<LightMatrix> FromScreenRows(const LightSpace& lightSpace,
+                                          const glm::dmat4& screenFromWorld,
+                                          const glm::dvec3& wsCenter,
+                                          std::string* failure = nullptr);
 
 // Whether X is strictly in front of the plane p4·X = 0, with a relative margin: p4·X > ε|X| where
 // ε = 1e-9 (dimensionless; guards against points on the horizon that would map to ±huge texels).

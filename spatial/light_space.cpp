@@ -21,21 +21,26 @@ bool Finite(const glm::dvec3& v) {
 }  // namespace
 
 LightSpace::LightSpace(const Light& light, const Bounds& wsBounds) : light_(light) {
-    if (wsBounds.Empty()) throw InputError("light: the scene has no geometry to light");
+    if (wsBounds.Empty())
+        throw DomainError(Subject::kGeometry, "the scene has no geometry to light");
     if (IsPoint()) {
-        if (!Finite(light.position)) throw InputError("light: position is not finite");
+        if (!Finite(light.position))
+            throw DomainError(Subject::kLight, "the point light's position is not finite");
         if (wsBounds.Contains(light.position))
-            throw InputError("light: point light at " + Vec(light.position) +
-                             " is inside the geometry's bounds; no light matrix can see all of it");
+            throw DomainError(
+                Subject::kLight,
+                "point light at " + Vec(light.position) +
+                    " is inside the geometry's bounds; no light matrix can see all of it");
         origin_ = light.position;
         const glm::dvec3 toCenter = wsBounds.Center() - light.position;
         if (!(glm::length(toCenter) > 0.0))
-            throw InputError("light: point light sits at the centre of the geometry");
+            throw DomainError(Subject::kLight, "point light sits at the centre of the geometry");
         e3_ = glm::normalize(toCenter);
     } else {
         const double len = glm::length(light.direction);
         if (!Finite(light.direction) || !(len > 0.0))
-            throw InputError("light: directional light needs a finite, non-zero direction");
+            throw DomainError(Subject::kLight,
+                              "directional light needs a finite, non-zero direction");
         light_.direction = light.direction / len;
         e3_ = light_.direction;
         origin_ = wsBounds.Center();

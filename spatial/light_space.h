@@ -31,7 +31,7 @@ struct Light {
 
 class LightSpace {
   public:
-    // Frames `light` so that X = (0, 0, +) points at the centre of `wsBounds`. Throws InputError
+    // Frames `light` so that X = (0, 0, +) points at the centre of `wsBounds`. Throws DomainError
     // when the bounds are empty, when a point light lies inside them ("a light inside the
     // geometry": no light matrix can see every relevant point), or when a directional light's
     // direction is zero or not finite.

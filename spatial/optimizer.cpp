@@ -158,15 +158,16 @@ std::optional<double> RefinedObjective(std::span<const glm::dvec3> vertices,
     return h.a;
 }
 
-RelevantHull::RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dvec3& p4Reference) {
-    if (lsRelevant.empty()) throw InputError("optimizer: no relevant points");
+std::optional<RelevantHull> RelevantHull::Of(std::span<const glm::dvec3> lsRelevant,
+                                             const glm::dvec3& p4Reference) {
+    if (lsRelevant.empty()) return std::nullopt;
+    RelevantHull hull;
     glm::dvec3 b1, b2;
     PlaneBasis(p4Reference, &b1, &b2);
     std::vector<Eigen::Vector2d> y;
     y.reserve(lsRelevant.size());
     for (const glm::dvec3& X : lsRelevant) {
-        if (!InFront(p4Reference, X))
-            throw InputError("optimizer: a relevant point is behind the initial axis's plane");
+        if (!InFront(p4Reference, X)) return std::nullopt;
         const glm::dvec2 yX = ProjectToAxisPlane(p4Reference, b1, b2, X);
         y.emplace_back(yX.x, yX.y);
     }
@@ -199,7 +200,8 @@ RelevantHull::RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dv
         if (!inside) candidates.push_back(y[i]);
     }
     for (const Eigen::Vector2d& v : ConvexHull(candidates))
-        vertices_.push_back(v.x() * b1 + v.y() * b2 + p4Reference);
+        hull.vertices_.push_back(v.x() * b1 + v.y() * b2 + p4Reference);
+    return hull;
 }
 
 std::optional<LightMatrix> RelevantHull::Fit(const glm::dvec3& p4, Resolution map,
@@ -214,7 +216,8 @@ glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& k, double angle) {
 
 OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
                                     Resolution map, const OptimizerOptions& options) {
-    if (samples.lsRelevant.empty()) throw InputError("optimizer: no relevant points");
+    if (samples.lsRelevant.empty())
+        throw DomainError(Subject::kCamera, "the camera sees nothing: no relevant points");
     OptimizerResult r;
     const FitOptions fitOptions{options.margin, options.shear};
 
@@ -228,14 +231,9 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
 
     Stopwatch timer;
     std::optional<RelevantHull> hull;
-    if (options.hullOnce) {
-        try {
-            hull.emplace(lsCone, glm::normalize(initialP4));
-            r.hullVertices = hull->Vertices().size();
-        } catch (const InputError&) {
-            hull.reset();  // the initial axis does not see every point: fit from every generator
-        }
-    }
+    // Without the hull (the initial axis does not see every point) fit from every generator.
+    if (options.hullOnce) hull = RelevantHull::Of(lsCone, glm::normalize(initialP4));
+    if (hull) r.hullVertices = hull->Vertices().size();
     r.hullMs = timer.Ms();
     const auto fit = [&](const glm::dvec3& p4) {
         return hull ? hull->Fit(p4, map, fitOptions) : FitMapToPoints(p4, lsCone, map, fitOptions);
@@ -277,7 +275,9 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
         // Not even the initial axis sees every relevant point; nothing to optimize.
         r.usedFallback = true;
         best = FitMapToPoints(glm::normalize(initialP4), lsCone, map, fitOptions);
-        if (!best) throw InputError("optimizer: no light matrix sees every relevant point");
+        if (!best)
+            throw DomainError(Subject::kLight,
+                              "no light matrix from the initial axis sees every visible point");
         bestH = Energy(*best, samples);
     }
     r.hBeforeRefine = bestH;

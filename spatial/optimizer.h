@@ -90,22 +90,25 @@ struct OptimizerResult {
 // generators of it: all relevant points, or the light-space 3D hull vertices (lsRelevantHull).
 class RelevantHull {
   public:
-    // Throws InputError when there are no points, or some point is not in front of p4Reference.
-    RelevantHull(std::span<const glm::dvec3> lsRelevant, const glm::dvec3& p4Reference);
+    // The hull of the points projected on the plane p4Reference·X = 1; nullopt when there are no
+    // points or some point is not in front of it (InFront).
+    static std::optional<RelevantHull> Of(std::span<const glm::dvec3> lsRelevant,
+                                          const glm::dvec3& p4Reference);
     std::span<const glm::dvec3> Vertices() const { return vertices_; }
     // FitMapToPoints(p4, all relevant points) from the hull vertices only.
     std::optional<LightMatrix> Fit(const glm::dvec3& p4, Resolution map,
                                    const FitOptions& options) const;
 
   private:
+    RelevantHull() = default;
     std::vector<glm::dvec3> vertices_;  // on the plane p4Reference·X = 1
 };
 
 // p4 rotated by `angle` radians about the unit axis (Rodrigues).
 glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& unitAxis, double angle);
 
-// Algorithm 1 from `initialP4` (the focused method's axis). Throws InputError when the samples
-// have no relevant points.
+// Algorithm 1 from `initialP4` (InitialLightAxis, baselines.h). Throws DomainError: kCamera when
+// the samples have no relevant points; kLight when not even the initial axis sees them all.
 OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
                                     Resolution map, const OptimizerOptions& options = {});
 

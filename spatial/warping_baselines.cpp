@@ -36,7 +36,6 @@
 #include <optional>
 #include <vector>
 
-#include "lexel/solvers/errors.h"
 #include "lexel/spatial/baseline_support.h"
 #include "lexel/spatial/baselines.h"
 
@@ -208,13 +207,11 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostic
                  glm::dvec4(depthA * axisF, -depthA * glm::dot(axisF, center) + depthB),
                  glm::dvec4(lightAxis, -glm::dot(lightAxis, center)),
                  glm::dvec4(axisF, -glm::dot(axisF, center)));
-    LightMatrix warped;
-    try {
-        warped = FromScreenRows(ls, warp * dFromWorld, Centroid(wsBody));
-    } catch (const InputError& e) {
-        return fallBack(e.what());
-    }
-    const auto m = RefitOverBody(context, warped.p4, wsBody);
+    std::string failure;
+    const std::optional<LightMatrix> warped =
+        FromScreenRows(ls, warp * dFromWorld, Centroid(wsBody), &failure);
+    if (!warped) return fallBack("light matrix: " + failure);
+    const auto m = RefitOverBody(context, warped->p4, wsBody);
     if (!m) return fallBack("the warp's p4 leaves a body or relevant point behind or outside");
     return *m;
 }
@@ -288,14 +285,11 @@ LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* 
     // orients p4 the same way.
     const glm::dvec4 wsInsideH = glm::inverse(clipFromWorld) * glm::dvec4(ppsInside, 1.0);
     if (!(std::abs(wsInsideH.w) > 0.0)) return fallBack("degenerate NDC body point");
-    LightMatrix warped;
-    try {
-        warped =
-            FromScreenRows(ls, lightFromPps * clipFromWorld, glm::dvec3(wsInsideH) / wsInsideH.w);
-    } catch (const InputError& e) {
-        return fallBack(e.what());
-    }
-    const auto m = RefitOverBody(context, warped.p4, wsBody);
+    std::string failure;
+    const std::optional<LightMatrix> warped = FromScreenRows(
+        ls, lightFromPps * clipFromWorld, glm::dvec3(wsInsideH) / wsInsideH.w, &failure);
+    if (!warped) return fallBack("light matrix: " + failure);
+    const auto m = RefitOverBody(context, warped->p4, wsBody);
     if (!m) return fallBack("the NDC light frustum leaves a body or relevant point behind");
     return *m;
 }

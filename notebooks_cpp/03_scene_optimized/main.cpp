@@ -15,7 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "lexel/cases/spatial_case.h"
+#include "lexel/cases/load/spatial_case.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/images.h"
 

@@ -11,13 +11,13 @@ namespace lexel::spatial {
 
 Evaluator::Evaluator(const Scene& scene, const RenderBackend& backend)
     : scene_(scene), backend_(backend), bounds_(scene.geometry.ComputeBounds()) {
-    if (bounds_.Empty()) throw InputError("geometry: the scene has no triangles");
+    if (bounds_.Empty()) throw DomainError(Subject::kGeometry, "the scene has no triangles");
     frame_ = backend.RenderCamera(scene.camera, scene.camera.resolution);
     readback_ = RenderReadback(backend, scene.camera, scene.readback);
     if (readback_.wsRelevant.empty())
-        throw InputError("/camera: no geometry is visible at the readback resolution (" +
-                         std::to_string(scene.readback.width) + "×" +
-                         std::to_string(scene.readback.height) + ")");
+        throw DomainError(Subject::kCamera, "no geometry is visible at the readback resolution (" +
+                                                std::to_string(scene.readback.width) + "×" +
+                                                std::to_string(scene.readback.height) + ")");
     caster_ = std::make_unique<RayCaster>(scene.geometry);
 }
 

@@ -61,12 +61,13 @@ struct LightOutcome {
 class Evaluator {
   public:
     // Renders the frame (camera.resolution) and the readback (scene.readback) once; builds the
-    // ray caster. Throws InputError "/camera: no geometry is visible ..." when the readback sees
+    // ray caster. Throws DomainError: kGeometry without triangles, kCamera when the readback sees
     // nothing.
     Evaluator(const Scene& scene, const RenderBackend& backend);
     ~Evaluator();
 
-    // Throws InputError for a light inside the geometry.
+    // Throws DomainError (Subject::kLight) for a light inside the geometry, or one no light
+    // matrix can serve.
     LightOutcome Evaluate(const Light& light, const EvaluationOptions& options) const;
 
     // Misclassified counted pixels of any matrix for `light` (renders its map, traces the truth).

@@ -1,6 +1,7 @@
 #include "lexel/spatial/harness/methods.h"
 
-#include "lexel/solvers/errors.h"
+#include <algorithm>
+#include <stdexcept>
 
 namespace lexel::spatial {
 
@@ -9,14 +10,9 @@ std::vector<std::string> SpatialMethodNames() {
             "normal",  "psm",     "optimal-refined", "optimal-shear"};
 }
 
-void CheckSpatialMethod(std::string_view name) {
-    std::string known;
-    for (const std::string& m : SpatialMethodNames()) {
-        if (m == name) return;
-        known += (known.empty() ? "" : ", ") + m;
-    }
-    throw InputError("--method: unknown 3D method '" + std::string(name) + "' (known: " + known +
-                     ")");
+bool IsSpatialMethod(std::string_view name) {
+    const std::vector<std::string> names = SpatialMethodNames();
+    return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 BaselineContext MakeBaselineContext(const Scene& scene, const LightSpace& lightSpace,
@@ -39,17 +35,17 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
     if (name == "psm") return {PsmLightMatrix(context.baseline), std::nullopt};
     if (name == "plane-optimal") return {PlaneOptimalLightMatrix(context.baseline), std::nullopt};
     if (name == "optimal" || name == "optimal-refined" || name == "optimal-shear") {
-        if (!context.samples) throw InputError("internal: optimal needs the light's samples");
+        if (!context.samples) throw std::invalid_argument("optimal needs the light's samples");
         OptimizerOptions options;
         options.refine = name == "optimal-refined";
         options.shear = name == "optimal-shear";
-        const glm::dvec3 initialP4 = FocusedLightMatrix(context.baseline).p4;
+        const BaselineContext& b = context.baseline;
+        const glm::dvec3 initialP4 = InitialLightAxis(*b.lightSpace, b.wsBounds, b.wsRelevant);
         OptimizerResult r =
             OptimizeLightMatrix(*context.samples, initialP4, context.baseline.map, options);
         return {r.matrix, std::move(r)};
     }
-    CheckSpatialMethod(name);
-    throw InputError("internal: method '" + std::string(name) + "' has no implementation");
+    throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 
 }  // namespace lexel::spatial

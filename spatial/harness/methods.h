@@ -26,8 +26,7 @@ struct MethodContext {
 
 // Every method, in the column order of the report's Table 1 followed by the extra ones.
 std::vector<std::string> SpatialMethodNames();
-// Throws InputError naming the unknown method and listing the known ones.
-void CheckSpatialMethod(std::string_view name);
+bool IsSpatialMethod(std::string_view name);
 // The matrix, and for `optimal`, `optimal-refined` and `optimal-shear` the optimizer's trace (h
 // per iteration, time profile). `optimal` is Algorithm 1 as published (initial axis: focused's)
 // without the optional affine shear; `optimal-refined` adds the Ceres refinement on the unit

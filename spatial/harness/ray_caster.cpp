@@ -79,19 +79,21 @@ struct RayCaster::Impl {
 };
 
 RayCaster::RayCaster(const TriangleMesh& wsMesh) : impl_(std::make_unique<Impl>()) {
-    if (wsMesh.triangles.empty()) throw InputError("ray caster: the scene has no triangles");
+    if (wsMesh.triangles.empty())
+        throw DomainError(Subject::kGeometry, "the scene has no triangles");
     const std::size_t vertexCount = wsMesh.positions.size();
     for (std::size_t t = 0; t < wsMesh.triangles.size(); ++t) {
         for (int k = 0; k < 3; ++k) {
             const unsigned v = wsMesh.triangles[t][k];
             if (v >= vertexCount)
-                throw InputError("ray caster: triangle " + std::to_string(t) +
-                                 " references vertex " + std::to_string(v) + " of " +
-                                 std::to_string(vertexCount));
+                throw DomainError(Subject::kGeometry,
+                                  "triangle " + std::to_string(t) + " references vertex " +
+                                      std::to_string(v) + " of " + std::to_string(vertexCount));
             if (const glm::vec3& p = wsMesh.positions[v];
                 !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                throw InputError("ray caster: vertex " + std::to_string(v) + " of triangle " +
-                                 std::to_string(t) + " is not finite");
+                throw DomainError(Subject::kGeometry, "vertex " + std::to_string(v) +
+                                                          " of triangle " + std::to_string(t) +
+                                                          " is not finite");
         }
     }
 

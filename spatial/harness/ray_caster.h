@@ -68,9 +68,9 @@ class RayCaster {
     };
 
     // Copies the mesh into Embree-owned buffers and builds a high-quality, robust BVH.
-    // Throws InputError when the mesh has no triangles, a triangle indexes a missing vertex,
-    // or a referenced position is not finite; std::runtime_error with Embree's message when
-    // Embree fails (device creation, out of memory, build errors).
+    // Throws DomainError (Subject::kGeometry) when the mesh has no triangles, a triangle indexes a
+    // missing vertex, or a referenced position is not finite; std::runtime_error with Embree's
+    // message when Embree fails (device creation, out of memory, build errors).
     explicit RayCaster(const TriangleMesh& wsMesh);
     ~RayCaster();
     RayCaster(RayCaster&&) noexcept;

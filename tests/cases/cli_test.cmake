@@ -51,7 +51,7 @@ expect_run(2 "^$" "^lexel: error: .*bad_fov.json: /camera/fov_deg: must be in \\
 expect_run(2 "^$" "bad_syntax.json:4:[0-9]+: invalid JSON" run "${DATA}/bad_syntax.json" --out "${WORK}/bad")
 expect_run(2 "^$" "/camera/zoom: unknown key" run "${DATA}/unknown_key.json" --out "${WORK}/bad")
 expect_run(2 "^$" "no camera pixel sees any geometry" run "${DATA}/no_visible.json" --out "${WORK}/bad")
-expect_run(2 "^$" "/light/position: the light lies on segment /geometry/0/0" run "${DATA}/light_on_segment.json" --out "${WORK}/bad")
+expect_run(2 "^$" "/light/position: the light lies on segment 0 of polyline 0 \\(/geometry/0/0\\)" run "${DATA}/light_on_segment.json" --out "${WORK}/bad")
 expect_run(2 "^$" "no lexel plane has them all in front" run "${DATA}/wide_sweep.json" --out "${WORK}/bad")
 expect_run(2 "^$" "zero-length segment" run "${DATA}/zero_segment.json" --out "${WORK}/bad")
 expect_run(2 "^$" "the camera is inside the closed polyline" run "${DATA}/camera_inside.json" --out "${WORK}/bad")
@@ -238,17 +238,17 @@ expect_bad3d(spatial_missing_mesh.json
              "${any}spatial_missing_mesh.json: /geometry/1/mesh: ${any}models/does_not_exist.obj: mesh file not found")
 expect_bad3d(spatial_invalid_mesh.json
              "${any}spatial_invalid_mesh.json: /geometry/1/mesh: /usr/share/assimp/models/invalid/empty.obj: cannot read mesh: ${any}")
-# Found only once the camera is rendered; the message names the camera (today without the file
-# or a leading '/'; see the report of the branch that added these tests).
+# Found only once the camera is rendered; the message names the file and the camera.
 expect_bad3d(spatial_no_visible.json
-             "(${any}spatial_no_visible.json: )?/?camera: no geometry is visible${any}")
-# A camera_path pose that sees nothing: today the message names /camera, not the pose.
-expect_bad3d(spatial_path_no_visible.json "${any}camera${any}: no geometry is visible${any}" run)
+             "${any}spatial_no_visible.json: /camera: no geometry is visible${any}")
+# A camera_path pose that sees nothing: the message names the pose.
+expect_bad3d(spatial_path_no_visible.json
+             "${any}spatial_path_no_visible.json: /camera_path/1: no geometry is visible${any}" run)
 # run needs fixed lights, sweep needs a light_sweep: each points to the other.
 expect_bad3d(spatial_sweep_only.json
-             "(${any}spatial_sweep_only.json: )?/?lights: the case has no fixed lights; run `lexel sweep`${any}" run)
+             "${any}spatial_sweep_only.json: /lights: the case has no fixed lights; run `lexel sweep`${any}" run)
 expect_bad3d(spatial_no_sweep.json
-             "(${any}spatial_no_sweep.json: )?/?light_sweep: the case has none${any}" sweep)
+             "${any}spatial_no_sweep.json: /light_sweep: the case has none${any}" sweep)
 # The mirror cases work.
 expect_run(0 "^Misclassified shadow pixels, spatial_sweep_only, 2 lights" "^$"
            sweep "${DATA}/spatial_sweep_only.json" --lights 2 --method optimal)

@@ -1,4 +1,4 @@
-#include "lexel/cases/figures.h"
+#include "lexel/cases/report/figures.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-#include "lexel/cases/flatland_case.h"
+#include "lexel/cases/load/flatland_case.h"
 
 #include <gtest/gtest.h>
 
-#include "lexel/cases/json_reader.h"
+#include "lexel/cases/load/json_reader.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
@@ -60,7 +60,7 @@ TEST(FlatlandCase, BadFieldsAreNamed) {
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/geometry/1", "value": [[1, 1], [1, 1]]}])"),
               "/geometry/1/0: zero-length segment (points 0 and 1 coincide)");
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/light/position", "value": [10, 0]}])"),
-              "/light/position: the light lies on segment /geometry/0/0");
+              "/light/position: the light lies on segment 0 of polyline 0 (/geometry/0/0)");
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/frusta/budget", "value": 9}])"),
               "/frusta/budget: must be in [1, 8], got 9");
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/frusta/metric", "value": "linf"}])"),

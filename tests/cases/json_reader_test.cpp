@@ -1,4 +1,4 @@
-#include "lexel/cases/json_reader.h"
+#include "lexel/cases/load/json_reader.h"
 
 #include <gtest/gtest.h>
 

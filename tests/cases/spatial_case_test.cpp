@@ -1,6 +1,6 @@
 // 3D case files: the shipped cases load as documented, and every kind of bad input is an
 // InputError naming the JSON pointer.
-#include "lexel/cases/spatial_case.h"
+#include "lexel/cases/load/spatial_case.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <limits>
 
-#include "lexel/cases/flatland_case.h"
+#include "lexel/cases/load/flatland_case.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/generator.h"
 #include "lexel/spatial/harness/primitives.h"

@@ -1,18 +1,23 @@
 // The thesis's findings (Chong 2003, ch. 4.1.3), asserted on the shipped reconstructions.
-#include "lexel/cases/tables.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "lexel/cases/flatland_case.h"
+#include "lexel/cases/load/flatland_case.h"
+#include "lexel/cases/report/tables_report.h"
+#include "lexel/cases/run/lowres.h"
+#include "lexel/cases/run/thesis_tables.h"
 
 namespace lexel::cases {
 namespace {
 
 class ThesisTables : public ::testing::Test {
   protected:
-    static void SetUpTestSuite() { results_ = new std::vector<TableResult>(RunThesisTables("")); }
+    static void SetUpTestSuite() {
+        const std::string dir = LEXEL_CASES_DIR;
+        results_ = new std::vector<TableResult>(RunThesisTables(
+            LoadThesisTables(dir + "/published/thesis_tables.json"), dir + "/flatland"));
+    }
     static void TearDownTestSuite() { delete results_; }
     static const TableResult& Case(const std::string& title) {
         for (const auto& r : *results_)

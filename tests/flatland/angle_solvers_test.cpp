@@ -130,7 +130,7 @@ TEST(AngleSolvers, NoReturnedAngleIsInvalid) {
         CaseReport report;
         try {
             report = RunFlatlandCase(scene, FlatlandMethodNames(), Metric::kL2);
-        } catch (const InputError&) {
+        } catch (const DomainError&) {
             continue;  // too few decision pixels see geometry for this scene
         }
         for (const auto& m : report.methods) {

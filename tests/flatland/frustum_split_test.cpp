@@ -102,7 +102,7 @@ TEST(FrustumSplit, LinfMetricIsRejected) {
     const FlatScene scene = RandomScene(1);
     const SamplingPass pass = RunSamplingPass(scene, 100);
     EXPECT_THROW(SplitLightFrustum(pass, 100, {16, 2, Metric::kLinf}, SplitStrategy::kGreedy),
-                 InputError);
+                 std::invalid_argument);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -84,8 +85,8 @@ TEST(Sampling, NoVisiblePixelIsAnError) {
     scene.geometry = {{{-50, 5}, {-40, 5}}};  // behind the camera
     try {
         RunSamplingPass(scene, 100);
-        FAIL() << "expected InputError";
-    } catch (const InputError& e) {
+        FAIL() << "expected DomainError";
+    } catch (const DomainError& e) {
         EXPECT_NE(std::string(e.what()).find("no camera pixel sees any geometry"),
                   std::string::npos)
             << e.what();
@@ -103,8 +104,8 @@ TEST(Sampling, SweepOfHalfACircleHasNoValidAngle) {
     scene.geometry = {{{-50, 0}, {200, 0}}, {{5, 3}, {30, 3}}};
     try {
         RunSamplingPass(scene, 400);
-        FAIL() << "expected InputError";
-    } catch (const InputError& e) {
+        FAIL() << "expected DomainError";
+    } catch (const DomainError& e) {
         EXPECT_NE(std::string(e.what()).find("no lexel plane has them all in front"),
                   std::string::npos)
             << e.what();
@@ -115,25 +116,33 @@ TEST(Sampling, LightOnAVisibleSegmentLineIsAnError) {
     FlatScene scene = ExampleScene();
     scene.wsLight = {-60, 0};  // on the floor's line, off the segment
     scene.geometry = {{{-50, 0}, {200, 0}}};
-    EXPECT_THROW(RunSamplingPass(scene, 100), InputError);
+    try {
+        RunSamplingPass(scene, 100);
+        FAIL() << "expected DomainError";
+    } catch (const DomainError& e) {
+        EXPECT_EQ(e.subject(), Subject::kSegment);
+        EXPECT_EQ(e.index(), (std::array<int, 2>{0, 0}));
+    }
+    EXPECT_FALSE(TrySamplingPass(scene, 100));
 }
 
 TEST(Scene, DegenerateGeometryIsRejected) {
     FlatScene zero = ExampleScene();
     zero.geometry = {{{1, 1}, {1, 1}}};
-    EXPECT_THROW(CheckSceneGeometry(zero), InputError);
+    EXPECT_THROW(CheckSceneGeometry(zero), DomainError);
     FlatScene lightOn = ExampleScene();
     lightOn.wsLight = {10, 0};
-    EXPECT_THROW(CheckSceneGeometry(lightOn), InputError);
+    EXPECT_THROW(CheckSceneGeometry(lightOn), DomainError);
     FlatScene inside = ExampleScene();
     inside.geometry.push_back(
         {{-1, 1}, {1, 1}, {1, 3}, {-1, 3}, {-1, 1}});  // a box around the camera
     try {
         CheckSceneGeometry(inside);
         FAIL();
-    } catch (const InputError& e) {
-        EXPECT_EQ(std::string(e.what()),
-                  "/camera/position: the camera is inside the closed polyline /geometry/2");
+    } catch (const DomainError& e) {
+        EXPECT_EQ(std::string(e.what()), "the camera is inside the closed polyline 2");
+        EXPECT_EQ(e.subject(), Subject::kCamera);
+        EXPECT_EQ(e.index()[0], 2);
     }
 }
 

@@ -29,7 +29,7 @@ bool Samples(const FlatScene& scene) {
         RunSamplingPass(scene, scene.camera.pixels);
         RunSamplingPass(scene, scene.DecisionPixels());
         return true;
-    } catch (const InputError&) {
+    } catch (const DomainError&) {
         return false;
     }
 }

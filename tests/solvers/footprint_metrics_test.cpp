@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "lexel/solvers/errors.h"
@@ -53,12 +54,12 @@ TEST(FootprintMetrics, LexelScaleInvariance) {
 }
 
 TEST(FootprintMetrics, BadInputIsAnError) {
-    EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, NAN}), InputError);
-    EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, -1}), InputError);
+    EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, NAN}), std::invalid_argument);
+    EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, -1}), std::invalid_argument);
     EXPECT_THROW(SummarizeFootprints(std::vector<double>{1, 2}, std::vector<double>{1}),
-                 InputError);
+                 std::invalid_argument);
     EXPECT_EQ(SummarizeFootprints(std::vector<double>{}).count, 0u);
-    EXPECT_THROW(ParseMetric("l3"), InputError);
+    EXPECT_FALSE(ParseMetric("l3"));
     EXPECT_EQ(ParseMetric("linf"), Metric::kLinf);
 }
 

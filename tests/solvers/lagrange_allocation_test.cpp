@@ -4,6 +4,7 @@
 
 #include <numeric>
 #include <random>
+#include <stdexcept>
 
 #include "lexel/solvers/errors.h"
 
@@ -61,7 +62,7 @@ TEST(LagrangeAllocation, IntegerAllocationIsExchangeOptimal) {
 }
 
 TEST(LagrangeAllocation, TooFewLexelsIsAnError) {
-    EXPECT_THROW(AllocateLexelsInteger(std::vector<double>{1, 2, 3}, 1, 2), InputError);
+    EXPECT_THROW(AllocateLexelsInteger(std::vector<double>{1, 2, 3}, 1, 2), std::invalid_argument);
 }
 
 }  // namespace

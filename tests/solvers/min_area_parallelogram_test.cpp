@@ -14,6 +14,7 @@
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -363,11 +364,13 @@ TEST(MinAreaParallelogram, OrientLongSideKeepsTheShapeAndOrientation) {
 }
 
 TEST(MinAreaParallelogram, RejectsBadInput) {
-    EXPECT_THROW(MinAreaParallelogram(Points{}), InputError);
-    EXPECT_THROW(MinAreaParallelogram(Points{{0, std::nan("")}}), InputError);
-    EXPECT_THROW(MinAreaParallelogramOfHull(Points{{0, 0}, {0, 1}, {1, 0}}), InputError);  // cw
-    EXPECT_THROW(ParallelogramFlushWithEdge(Points{{0, 0}, {1, 0}}, 0), InputError);
-    EXPECT_THROW(ParallelogramFlushWithEdge(Points{{0, 0}, {1, 0}, {0, 1}}, 3), InputError);
+    EXPECT_THROW(MinAreaParallelogram(Points{}), std::invalid_argument);
+    EXPECT_THROW(MinAreaParallelogram(Points{{0, std::nan("")}}), std::invalid_argument);
+    EXPECT_THROW(MinAreaParallelogramOfHull(Points{{0, 0}, {0, 1}, {1, 0}}),
+                 std::invalid_argument);  // cw
+    EXPECT_THROW(ParallelogramFlushWithEdge(Points{{0, 0}, {1, 0}}, 0), std::invalid_argument);
+    EXPECT_THROW(ParallelogramFlushWithEdge(Points{{0, 0}, {1, 0}, {0, 1}}, 3),
+                 std::invalid_argument);
 }
 
 }  // namespace

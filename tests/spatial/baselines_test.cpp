@@ -467,7 +467,7 @@ TEST(PlaneOptimalBaseline, ScreenToMapIsAffineOnTheFloor) {
          {Point({30.0, 60.0, -70.0}), Point({-90.0, 20.0, 10.0}), Directional({0.4, -1.0, 0.7})}) {
         const LightSpace ls(light, bounds);
         const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
-        const LightMatrix before = PlaneOptimalProjectiveMatrix(context);
+        const LightMatrix before = *PlaneOptimalProjectiveMatrix(context);
         const auto jBefore = FloorJacobians(before, ls, scene.camera, screenPoints);
         // Before the refit the map is the camera screen at map resolution: u = (400/750) xs.
         const glm::dmat2 expected(scale, 0.0, 0.0, scale);
@@ -496,7 +496,7 @@ TEST(PlaneOptimalBaseline, OffPlanePointBehindP4TurnsTowardFocused) {
     relevant.push_back({0.0, 3.0, 5.0});
     const LightSpace ls(Point({0.0, 5.0, -95.0}), bounds);
     const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
-    const LightMatrix before = PlaneOptimalProjectiveMatrix(context);
+    const LightMatrix before = *PlaneOptimalProjectiveMatrix(context);
     EXPECT_FALSE(InFront(before.p4, ls.ToLight(relevant.back())));
     BaselineDiagnostics d;
     const LightMatrix m = PlaneOptimalLightMatrix(context, &d);
@@ -511,7 +511,7 @@ TEST(PlaneOptimalBaseline, NeedsAFloorPlane) {
     scene.floorPlane.reset();
     const Bounds bounds = FloorBounds();
     const LightSpace ls(Point({0.0, 100.0, 0.0}), bounds);
-    EXPECT_THROW(PlaneOptimalLightMatrix(MakeBaselineContext(scene, ls, bounds, {})), InputError);
+    EXPECT_THROW(PlaneOptimalLightMatrix(MakeBaselineContext(scene, ls, bounds, {})), DomainError);
 }
 
 TEST(Baselines, ValidForLightsNearTheBoundsAndOtherCameraPoses) {

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <string>
 
-#include "lexel/cases/spatial_case.h"
+#include "lexel/cases/load/spatial_case.h"
 #include "lexel/solvers/min_area_parallelogram.h"
 #include "lexel/spatial/energy_gradient.h"
 #include "spatial/spatial_test_scenes.h"
@@ -70,7 +70,7 @@ TEST(RelevantHull, FitFromHullVerticesEqualsTheNaiveFit) {
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> uni(-1.0, 1.0);
         LightSamples s = RandomSamples(rng, 2000);
-        const RelevantHull hull(s.lsRelevant, {0, 0, 1});
+        const RelevantHull hull = *RelevantHull::Of(s.lsRelevant, {0, 0, 1});
         EXPECT_LT(hull.Vertices().size(), 60u);
         for (int k = 0; k < 20; ++k) {
             const glm::dvec3 p4 = glm::normalize(glm::dvec3(0.6 * uni(rng), 0.6 * uni(rng), 1.0));
@@ -156,7 +156,7 @@ TEST(RefinedObjective, EqualsTheFitsEnergyAndItsGradientMatchesCentralDifference
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> uni(-1.0, 1.0);
         const LightSamples s = SkewedSamples(rng, 400);
-        const RelevantHull hull(s.lsRelevant, {0, 0, 1});
+        const RelevantHull hull = *RelevantHull::Of(s.lsRelevant, {0, 0, 1});
         const std::span<const glm::dvec3> vertices = hull.Vertices();
         const Resolution map{400, 300};
         for (int trial = 0; trial < 8; ++trial) {
@@ -346,8 +346,8 @@ TEST(RelevantHull, FitFromFrameHullVerticesEqualsFitFromAllPoints) {
         const LightSpace ls(light, f.bounds);
         const LightSamples s = SamplesFor(f, ls);
         ASSERT_EQ(s.lsRelevantHull.size(), f.readback.wsRelevantHull.size());
-        const RelevantHull fromFrame(s.lsRelevantHull, {0, 0, 1});
-        const RelevantHull fromAll(s.lsRelevant, {0, 0, 1});
+        const RelevantHull fromFrame = *RelevantHull::Of(s.lsRelevantHull, {0, 0, 1});
+        const RelevantHull fromAll = *RelevantHull::Of(s.lsRelevant, {0, 0, 1});
         std::mt19937_64 rng(11);
         std::uniform_real_distribution<double> uni(-1.0, 1.0);
         for (int k = 0; k < 60; ++k) {

@@ -22,7 +22,7 @@
 
 #include <cmath>
 
-#include "lexel/cases/flatland_case.h"
+#include "lexel/cases/load/flatland_case.h"
 #include "lexel/flatland/angle_solvers.h"
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/flatland/sampling.h"

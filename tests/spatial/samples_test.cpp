@@ -10,7 +10,7 @@
 #include <random>
 #include <set>
 
-#include "lexel/cases/spatial_case.h"
+#include "lexel/cases/load/spatial_case.h"
 #include "lexel/solvers/convex_hull.h"
 #include "lexel/solvers/convex_hull_3d.h"
 #include "spatial/spatial_test_scenes.h"

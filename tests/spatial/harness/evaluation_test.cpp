@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "lexel/cases/spatial_case.h"
-#include "lexel/cases/spatial_report.h"
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/harness/methods.h"
 
 namespace lexel::spatial {
@@ -75,8 +75,7 @@ TEST(Evaluation, OptimalBeatsTheBaselinesOverOneHundredLights) {
     const Scene& scene = Walkthrough();
     const std::vector<std::string> methods = {"optimal", "focused", "lispsm", "plane-optimal",
                                               "normal"};
-    const cases::SweepResult r =
-        cases::RunSweep(scene, methods, cases::SweepLightsOf(scene, 100), false);
+    const cases::SweepResult r = cases::RunSweep(scene, methods, cases::SweepLightsOf(scene, 100));
     std::vector<double> mean(methods.size(), 0.0);
     for (const auto& light : r.cells)
         for (std::size_t m = 0; m < methods.size(); ++m) mean[m] += light[m].misclassified / 100.0;

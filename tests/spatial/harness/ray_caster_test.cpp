@@ -425,25 +425,26 @@ TEST(RayCaster, ConcurrentQueriesAndRebuildsGiveIdenticalAnswers) {
 // ---------------------------------------------------------------------------------------------
 // Input errors.
 
-TEST(RayCaster, EmptyMeshThrowsInputError) {
+TEST(RayCaster, EmptyMeshThrowsDomainError) {
     try {
         RayCaster caster{TriangleMesh{}};
-        FAIL() << "expected InputError";
-    } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "ray caster: the scene has no triangles");
+        FAIL() << "expected DomainError";
+    } catch (const DomainError& e) {
+        EXPECT_STREQ(e.what(), "the scene has no triangles");
+        EXPECT_EQ(e.subject(), Subject::kGeometry);
     }
     TriangleMesh pointsOnly;
     pointsOnly.positions = {{0, 0, 0}, {1, 0, 0}};
-    EXPECT_THROW(RayCaster{pointsOnly}, InputError);
+    EXPECT_THROW(RayCaster{pointsOnly}, DomainError);
 }
 
-TEST(RayCaster, BadIndicesOrPositionsThrowInputError) {
+TEST(RayCaster, BadIndicesOrPositionsThrowDomainError) {
     TriangleMesh outOfRange = Square();
     outOfRange.triangles.push_back({0, 1, 4});
-    EXPECT_THROW(RayCaster{outOfRange}, InputError);
+    EXPECT_THROW(RayCaster{outOfRange}, DomainError);
     TriangleMesh notFinite = Square();
     notFinite.positions[2].x = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_THROW(RayCaster{notFinite}, InputError);
+    EXPECT_THROW(RayCaster{notFinite}, DomainError);
 }
 
 }  // namespace

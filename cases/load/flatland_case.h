@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lexel/flatland/scene.h"
+#include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
 
@@ -13,10 +14,17 @@ inline constexpr long long kMaxPixels = 100'000'000;
 inline constexpr long long kMaxLexels = 1'000'000'000;
 inline constexpr long long kMaxWedges = 4096;
 
-// Validates a parsed document; throws InputError naming the JSON pointer and the reason.
+// Validates a parsed document (CheckSceneGeometry included); throws InputError naming the JSON
+// pointer and the reason.
 flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
                                       const std::string& fallbackName);
 flatland::FlatScene LoadFlatScene(const std::filesystem::path& path);
+
+// A DomainError met while checking or running a flatland scene, as the one line the CLI prints:
+// "<source>: <field>: <reason>", the field being the JSON pointer of the camera's or the light's
+// position, the geometry, a segment, or the lexel count (a segment or polyline the reason
+// mentions is pointed at in parentheses).
+InputError FlatlandInputError(const std::string& source, const DomainError& e);
 
 // True when the document is a 3D case (it has "lights" or "light_sweep"); false for flatland.
 bool IsSpatialCase(const nlohmann::json& document);

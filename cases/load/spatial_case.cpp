@@ -1,11 +1,11 @@
 // 3D case files (see spatial_case.h and cases/README.md).
-#include "lexel/cases/spatial_case.h"
+#include "lexel/cases/load/spatial_case.h"
 
 #include <cmath>
 #include <limits>
 
-#include "lexel/cases/flatland_case.h"
-#include "lexel/cases/json_reader.h"
+#include "lexel/cases/load/flatland_case.h"
+#include "lexel/cases/load/json_reader.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/generator.h"
 #include "lexel/spatial/harness/mesh_loader.h"
@@ -249,8 +249,8 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
         // flat geometry) is a case error too, not a failure later in a run.
         try {
             spatial::LightSpace(light, wsBounds);
-        } catch (const InputError& e) {
-            throw InputError(pointer + ": " + e.what());
+        } catch (const DomainError& e) {
+            throw InputError(SpatialErrorField(e, pointer) + ": " + e.what());
         }
     }
     if (scene.lightSweep && !(scene.lightSweep->radius > wsBounds.Radius()))
@@ -259,6 +259,36 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
             FormatNumber(wsBounds.Radius()) + " (the sweep is centred on the bounds), got " +
             FormatNumber(scene.lightSweep->radius));
     return scene;
+}
+
+std::string LightField(std::size_t light) { return "/lights/" + std::to_string(light); }
+
+std::string CameraPathField(std::size_t pose) { return "/camera_path/" + std::to_string(pose); }
+
+std::string SpatialErrorField(const DomainError& e, const std::string& light,
+                              const std::string& camera) {
+    switch (e.subject()) {
+        case Subject::kCamera:
+            return camera;
+        case Subject::kLight:
+            return light;
+        case Subject::kGeometry:
+        case Subject::kSegment:
+            return "/geometry";
+        case Subject::kLexels:
+            return "/shadow_map";
+    }
+    return "/";
+}
+
+std::unique_ptr<spatial::Evaluator> MakeEvaluator(const spatial::Scene& scene,
+                                                  const spatial::RenderBackend& backend,
+                                                  const std::string& camera) {
+    try {
+        return std::make_unique<spatial::Evaluator>(scene, backend);
+    } catch (const DomainError& e) {
+        throw InputError(SpatialErrorField(e, "/lights", camera) + ": " + e.what());
+    }
 }
 
 spatial::Scene LoadSpatialScene(const std::filesystem::path& path) {

@@ -1,9 +1,39 @@
-#include "lexel/cases/flatland_case.h"
+#include "lexel/cases/load/flatland_case.h"
 
-#include "lexel/cases/json_reader.h"
+#include "lexel/cases/load/json_reader.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
+
+namespace {
+
+// "<field>: <reason>" for a DomainError of a flatland scene (FlatlandInputError).
+std::string FlatlandErrorMessage(const DomainError& e) {
+    const auto [first, second] = e.index();
+    std::string geometry = "/geometry";
+    if (first >= 0) geometry += "/" + std::to_string(first);
+    if (second >= 0) geometry += "/" + std::to_string(second);
+    switch (e.subject()) {
+        case Subject::kCamera:
+            return "/camera/position: " + std::string(e.what()) +
+                   (first >= 0 ? " (" + geometry + ")" : "");
+        case Subject::kLight:
+            return "/light/position: " + std::string(e.what()) +
+                   (first >= 0 ? " (" + geometry + ")" : "");
+        case Subject::kGeometry:
+        case Subject::kSegment:
+            return geometry + ": " + e.what();
+        case Subject::kLexels:
+            return "/lexels: " + std::string(e.what());
+    }
+    return e.what();
+}
+
+}  // namespace
+
+InputError FlatlandInputError(const std::string& source, const DomainError& e) {
+    return InputError(source + ": " + FlatlandErrorMessage(e));
+}
 
 bool IsSpatialCase(const nlohmann::json& document) {
     // A 3D case may give only a light sweep; flatland cases have neither key.
@@ -65,11 +95,15 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
             const std::string metric = frusta["metric"].String();
             if (metric != "l1" && metric != "l2")
                 frusta["metric"].Fail("must be one of l1, l2, got '" + metric + "'");
-            options.metric = ParseMetric(metric);
+            options.metric = *ParseMetric(metric);
         }
         scene.frusta = options;
     }
-    flatland::CheckSceneGeometry(scene);
+    try {
+        flatland::CheckSceneGeometry(scene);
+    } catch (const DomainError& e) {
+        throw InputError(FlatlandErrorMessage(e));
+    }
     return scene;
 }
 

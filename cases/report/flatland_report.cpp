@@ -1,79 +1,10 @@
-#include "lexel/cases/report.h"
+#include "lexel/cases/report/flatland_report.h"
 
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
+
+#include "lexel/cases/report/text_table.h"
 
 namespace lexel::cases {
-
-std::string Fixed(double value, int digits) {
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-    // Values that round to zero print as 0, never as "-0.000".
-    if (std::abs(value) < 0.5 * std::pow(10.0, -digits)) value = 0.0;
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
-    return buffer;
-}
-
-std::string Significant(double value, int digits) {
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
-    return buffer;
-}
-
-namespace {
-// Terminal columns of a UTF-8 string: one per code point (continuation bytes are 10xxxxxx), so
-// "σ" and "∞" take one column like the ASCII around them.
-std::size_t DisplayWidth(const std::string& text) {
-    std::size_t width = 0;
-    for (unsigned char c : text) width += (c & 0xC0) != 0x80;
-    return width;
-}
-}  // namespace
-
-std::string TextTable::Render() const {
-    std::vector<std::size_t> width;
-    for (const auto& row : rows_)
-        for (std::size_t c = 0; c < row.size(); ++c) {
-            if (width.size() <= c) width.push_back(0);
-            width[c] = std::max(width[c], DisplayWidth(row[c]));
-        }
-    std::ostringstream out;
-    for (std::size_t r = 0; r < rows_.size(); ++r) {
-        for (std::size_t c = 0; c < rows_[r].size(); ++c) {
-            const std::string& cell = rows_[r][c];
-            const std::string pad(width[c] - DisplayWidth(cell), ' ');
-            out << (c ? "  " : "") << (c == 0 ? cell + pad : pad + cell);
-        }
-        out << '\n';
-        if (r == 0) {
-            std::size_t total = 0;
-            for (std::size_t c = 0; c < width.size(); ++c) total += width[c] + (c ? 2 : 0);
-            out << std::string(total, '-') << '\n';
-        }
-    }
-    return out.str();
-}
-
-std::string TextTable::RenderMarkdown() const {
-    std::ostringstream out;
-    for (std::size_t r = 0; r < rows_.size(); ++r) {
-        out << '|';
-        for (const auto& cell : rows_[r]) out << ' ' << cell << " |";
-        out << '\n';
-        if (r == 0) {
-            out << '|';
-            for (std::size_t c = 0; c < rows_[0].size(); ++c)
-                out << (c == 0 ? " --- |" : " ---: |");
-            out << '\n';
-        }
-    }
-    return out.str();
-}
 
 namespace {
 
@@ -179,17 +110,6 @@ std::string CaseTable(const flatland::CaseReport& report) {
 
 std::string CaseMarkdown(const flatland::CaseReport& report) {
     return "## " + CaseHeader(report) + "\n\n" + MethodTable(report).RenderMarkdown();
-}
-
-void WriteFileAtomically(const std::string& path, const std::string& content) {
-    const std::string temporary = path + ".partial";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error(path + ": cannot write");
-        out << content;
-        if (!out) throw std::runtime_error(path + ": write failed");
-    }
-    std::filesystem::rename(temporary, path);
 }
 
 }  // namespace lexel::cases

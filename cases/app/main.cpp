@@ -11,74 +11,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "lexel/cases/flatland_case.h"
-#include "lexel/cases/json_reader.h"
-#include "lexel/cases/report.h"
-#include "lexel/cases/spatial_report.h"
-#include "lexel/cases/tables.h"
+#include "lexel/cases/app/commands.h"
 #include "lexel/solvers/errors.h"
 
 #ifndef LEXEL_VERSION
 #define LEXEL_VERSION "unknown"
 #endif
-
-namespace {
-
-using namespace lexel;
-
-int RunCommand(const std::vector<std::string>& casePaths, std::vector<std::string> methods,
-               const std::string& metricName, const std::string& format, const std::string& outDir,
-               bool mapTruth, bool metricGiven) {
-    // 3D cases (they have "lights") go to the spatial harness, one at a time.
-    if (cases::IsSpatialCase(cases::ParseJsonFile(casePaths.front()))) {
-        if (casePaths.size() != 1)
-            throw InputError("run: give one 3D case at a time (got " +
-                             std::to_string(casePaths.size()) + " files)");
-        if (metricGiven)
-            throw InputError(
-                "--metric: 3D cases are measured by the report's h (eq. 6) and "
-                "misclassified pixels; --metric applies to flatland cases");
-        cases::SpatialRunOptions options;
-        options.methods = methods;
-        options.format = format;
-        options.outDir = outDir;
-        options.mapTruth = mapTruth;
-        return cases::RunSpatialCommand(casePaths.front(), options);
-    }
-    const Metric metric = ParseMetric(metricName);
-    if (methods.empty()) methods = flatland::FlatlandMethodNames();
-    for (const auto& m : methods) flatland::CheckFlatlandMethod(m);
-    // Everything is computed before anything is written: a bad second case leaves no files.
-    std::vector<flatland::CaseReport> reports;
-    for (const auto& path : casePaths) {
-        const flatland::FlatScene scene = cases::LoadFlatScene(path);
-        try {
-            reports.push_back(flatland::RunFlatlandCase(scene, methods, metric));
-        } catch (const InputError& e) {
-            throw InputError(path + ": " + e.what());
-        }
-    }
-    if (format == "json")
-        std::cout << cases::RunJson(reports).dump(2) << '\n';
-    else if (format == "csv")
-        std::cout << cases::RunCsv(reports);
-    else
-        for (std::size_t i = 0; i < reports.size(); ++i)
-            std::cout << (i ? "\n" : "") << cases::CaseTable(reports[i]);
-    if (!outDir.empty()) {
-        std::filesystem::create_directories(outDir);
-        for (const auto& r : reports) {
-            const std::string base = (std::filesystem::path(outDir) / r.caseName).string();
-            cases::WriteFileAtomically(base + ".json", cases::CaseReportJson(r).dump(2) + "\n");
-            cases::WriteFileAtomically(base + ".csv", cases::RunCsv(std::span(&r, 1)));
-            cases::WriteFileAtomically(base + ".md", cases::CaseMarkdown(r));
-        }
-        std::cerr << "lexel: wrote " << reports.size() * 3 << " files to " << outDir << '\n';
-    }
-    return 0;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"lexel: choose the light projection that minimizes shadow-map aliasing"};
@@ -138,21 +76,20 @@ int main(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? 0 : 2;
     }
+    using namespace lexel;
     try {
         if (*run)
-            return RunCommand(casePaths, methods, metric, format, runOut, !noMapTruth,
-                              run->count("--metric") > 0);
-        if (*sweep) {
-            cases::SweepOptions options;
-            options.lights = sweepLights;
-            options.methods = sweepMethods;
-            options.format = sweepFormat;
-            options.outDir = sweepOut;
-            return cases::RunSweepCommand(sweepCase, options);
-        }
-        if (*tables) return cases::RunTablesCommand(tablesOut, casesDir);
-        if (*lowres) return cases::RunLowresCommand(lowresCase, lowresOut);
+            return cases::RunCommand({casePaths, methods, metric, run->count("--metric") > 0,
+                                      format, runOut, !noMapTruth});
+        if (*sweep)
+            return cases::SweepCommand(
+                {sweepCase, sweepLights, sweepMethods, sweepFormat, sweepOut});
+        if (*tables) return cases::TablesCommand(tablesOut, casesDir);
+        if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);
     } catch (const InputError& e) {
+        std::cerr << "lexel: error: " << e.what() << '\n';
+        return 2;
+    } catch (const DomainError& e) {  // a domain error no command translated: still bad input
         std::cerr << "lexel: error: " << e.what() << '\n';
         return 2;
     } catch (const std::exception& e) {

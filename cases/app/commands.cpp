@@ -1,0 +1,245 @@
+#include "lexel/cases/app/commands.h"
+
+#include <iostream>
+#include <sstream>
+
+#include "lexel/cases/app/progress.h"
+#include "lexel/cases/load/flatland_case.h"
+#include "lexel/cases/load/json_reader.h"
+#include "lexel/cases/load/published.h"
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/report/figures.h"
+#include "lexel/cases/report/flatland_report.h"
+#include "lexel/cases/report/lowres_report.h"
+#include "lexel/cases/report/output.h"
+#include "lexel/cases/report/spatial_report.h"
+#include "lexel/cases/report/sweep_report.h"
+#include "lexel/cases/report/tables_report.h"
+#include "lexel/cases/report/text_table.h"
+#include "lexel/cases/run/lowres.h"
+#include "lexel/cases/run/spatial_run.h"
+#include "lexel/cases/run/sweep.h"
+#include "lexel/cases/run/thesis_tables.h"
+#include "lexel/flatland/methods.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/methods.h"
+
+#ifndef LEXEL_SOURCE_DATA_DIR
+#define LEXEL_SOURCE_DATA_DIR ""
+#endif
+
+namespace lexel::cases {
+
+namespace fs = std::filesystem;
+
+fs::path DataDirectory() {
+    // An installed lexel finds its data beside the binary (<prefix>/bin/lexel →
+    // <prefix>/share/lexel/cases); a build tree uses the source tree's.
+    std::error_code error;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        const fs::path installed = exe.parent_path().parent_path() / "share" / "lexel" / "cases";
+        if (fs::is_directory(installed / "published", error)) return installed;
+    }
+    return fs::path(LEXEL_SOURCE_DATA_DIR);
+}
+
+namespace {
+
+std::string KnownList(const std::vector<std::string>& names) {
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list;
+}
+
+std::vector<std::string> SpatialMethods(std::vector<std::string> methods) {
+    if (methods.empty()) return spatial::SpatialMethodNames();
+    for (const std::string& m : methods)
+        if (!spatial::IsSpatialMethod(m))
+            throw InputError("--method: unknown 3D method '" + m +
+                             "' (known: " + KnownList(spatial::SpatialMethodNames()) + ")");
+    return methods;
+}
+
+std::vector<std::string> FlatlandMethods(std::vector<std::string> methods) {
+    if (methods.empty()) return flatland::FlatlandMethodNames();
+    for (const std::string& m : methods)
+        if (!flatland::IsFlatlandMethod(m))
+            throw InputError("--method: unknown flatland method '" + m +
+                             "' (known: " + KnownList(flatland::FlatlandMethodNames()) + ")");
+    return methods;
+}
+
+// Errors a runner finds after loading get the case file's name in front, like the loader's own.
+template <class Body>
+auto WithCaseName(const fs::path& casePath, Body body) {
+    try {
+        return body();
+    } catch (const InputError& e) {
+        throw InputError(casePath.string() + ": " + e.what());
+    }
+}
+
+int RunSpatial(const RunFlags& flags) {
+    if (flags.cases.size() != 1)
+        throw InputError("run: give one 3D case at a time (got " +
+                         std::to_string(flags.cases.size()) + " files)");
+    if (flags.metricGiven)
+        throw InputError(
+            "--metric: 3D cases are measured by the report's h (eq. 6) and misclassified pixels; "
+            "--metric applies to flatland cases");
+    const fs::path casePath = flags.cases.front();
+    const spatial::Scene scene = LoadSpatialScene(casePath);
+    SpatialRunOptions options;
+    options.methods = SpatialMethods(flags.methods);
+    options.mapTruth = flags.mapTruth;
+    options.keepBuffers = !flags.outDir.empty();
+    const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
+    if (flags.format == "json")
+        std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
+    else if (flags.format == "csv")
+        std::cout << SpatialRunCsv(run);
+    else
+        std::cout << SpatialRunText(scene, run);
+    if (flags.outDir.empty()) return 0;
+    const fs::path dir(flags.outDir);
+    fs::create_directories(dir);
+    const int images = WriteSpatialImages(dir, scene, run);
+    WriteFileAtomically((dir / (scene.name + ".json")).string(),
+                        SpatialRunJson(scene, run).dump(2) + "\n");
+    WriteFileAtomically((dir / (scene.name + ".csv")).string(), SpatialRunCsv(run));
+    std::cerr << "lexel: wrote " << images << " images and " << scene.name << ".json/.csv to "
+              << flags.outDir << '\n';
+    return 0;
+}
+
+int RunFlatland(const RunFlags& flags) {
+    const std::optional<Metric> metric = ParseMetric(flags.metric);
+    if (!metric)
+        throw InputError("--metric: must be one of l1, l2, linf, got '" + flags.metric + "'");
+    const std::vector<std::string> methods = FlatlandMethods(flags.methods);
+    // Everything is computed before anything is written: a bad second case leaves no files.
+    std::vector<flatland::CaseReport> reports;
+    for (const auto& path : flags.cases) {
+        const flatland::FlatScene scene = LoadFlatScene(path);
+        try {
+            reports.push_back(flatland::RunFlatlandCase(scene, methods, *metric));
+        } catch (const DomainError& e) {
+            throw FlatlandInputError(path, e);
+        }
+    }
+    if (flags.format == "json")
+        std::cout << RunJson(reports).dump(2) << '\n';
+    else if (flags.format == "csv")
+        std::cout << RunCsv(reports);
+    else
+        for (std::size_t i = 0; i < reports.size(); ++i)
+            std::cout << (i ? "\n" : "") << CaseTable(reports[i]);
+    if (flags.outDir.empty()) return 0;
+    fs::create_directories(flags.outDir);
+    for (const auto& r : reports) {
+        const std::string base = (fs::path(flags.outDir) / r.caseName).string();
+        WriteFileAtomically(base + ".json", CaseReportJson(r).dump(2) + "\n");
+        WriteFileAtomically(base + ".csv", RunCsv(std::span(&r, 1)));
+        WriteFileAtomically(base + ".md", CaseMarkdown(r));
+    }
+    std::cerr << "lexel: wrote " << reports.size() * 3 << " files to " << flags.outDir << '\n';
+    return 0;
+}
+
+}  // namespace
+
+int RunCommand(const RunFlags& flags) {
+    // 3D cases (they have "lights") go to the spatial harness, one at a time.
+    if (IsSpatialCase(ParseJsonFile(flags.cases.front()))) return RunSpatial(flags);
+    return RunFlatland(flags);
+}
+
+int SweepCommand(const SweepFlags& flags) {
+    const fs::path casePath = flags.casePath;
+    const spatial::Scene scene = LoadSpatialScene(casePath);
+    const std::vector<std::string> methods = SpatialMethods(flags.methods);
+    const ReportTable1 report =
+        LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
+    const SweepResult r = WithCaseName(casePath, [&] {
+        const std::vector<spatial::Light> lights = SweepLightsOf(scene, flags.lights);
+        Progress bar("sweep", lights.size(), "lights");
+        return RunSweep(scene, methods, lights, [&] { bar.Step(); });
+    });
+    if (flags.format == "json")
+        std::cout << SweepJson(r).dump(2) << '\n';
+    else if (flags.format == "csv")
+        std::cout << SweepCsv(r, report);
+    else if (flags.format == "markdown")
+        std::cout << SweepMarkdown(r, report);
+    else
+        std::cout << SweepTable(r, report) << "sweep: " << Fixed(r.seconds, 1) << " s for "
+                  << r.lights.size() << " lights\n";
+    if (flags.outDir.empty()) return 0;
+    const fs::path dir(flags.outDir);
+    fs::create_directories(dir);
+    WriteFileAtomically((dir / "table1.md").string(), SweepMarkdown(r, report));
+    WriteFileAtomically((dir / "table1.csv").string(), SweepCsv(r, report));
+    WriteFileAtomically((dir / "sweep.json").string(), SweepJson(r).dump(2) + "\n");
+    WriteFileAtomically((dir / "lights.csv").string(), SweepLightsCsv(r));
+    std::cerr << "lexel: wrote table1.md, table1.csv, sweep.json, lights.csv to " << flags.outDir
+              << '\n';
+    return 0;
+}
+
+int TablesCommand(const std::string& outDir, const std::string& casesDir) {
+    const std::vector<ThesisTable> tables =
+        LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
+    const fs::path dir = casesDir.empty() ? DataDirectory() / "flatland" : fs::path(casesDir);
+    const std::vector<TableResult> results = RunThesisTables(tables, dir);
+    std::vector<std::vector<LowresRow>> lowres;
+    std::vector<std::pair<std::string, std::vector<LowresRow>>> studies;
+    for (const auto& r : results) {
+        lowres.push_back(RunLowresStudy(r.scene));
+        studies.emplace_back(r.scene.name, lowres.back());
+    }
+    std::cout << TablesText(results);
+    for (const auto& [name, rows] : studies) std::cout << LowresText(name, rows) << '\n';
+    const std::string summary = LowresSummary(results, lowres);
+    std::cout << summary;
+
+    fs::create_directories(outDir);
+    std::string markdown =
+        TablesMarkdown(results) + "## Low-resolution decision (thesis 4.1.1, Fig. 4.1)\n\n";
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const std::string& name = results[i].scene.name;
+        const std::string stem = fs::path(results[i].thesis.file).stem().string();
+        WriteCaseFigure((fs::path(outDir) / (stem + ".png")).string(), results[i].scene,
+                        results[i].report);
+        WriteLowresPlot((fs::path(outDir) / ("lowres_" + name + ".png")).string(),
+                        "Low-resolution decision: " + name, LowresCurves(lowres[i]));
+        markdown += LowresMarkdown(name, lowres[i]);
+    }
+    markdown += summary;
+    WriteFileAtomically((fs::path(outDir) / "tables.md").string(), markdown);
+    WriteFileAtomically((fs::path(outDir) / "tables.csv").string(), TablesCsv(results));
+    WriteFileAtomically((fs::path(outDir) / "lowres.csv").string(), LowresCsv(studies));
+    std::cout << "\nlexel: wrote tables.md, tables.csv, lowres.csv and " << 2 * results.size()
+              << " figures to " << fs::absolute(outDir).string() << '\n';
+    return 0;
+}
+
+int LowresCommand(const std::string& casePath, const std::string& outDir) {
+    const flatland::FlatScene scene = LoadFlatScene(casePath);
+    std::vector<LowresRow> rows;
+    try {
+        rows = RunLowresStudy(scene);
+    } catch (const DomainError& e) {
+        throw FlatlandInputError(casePath, e);
+    }
+    std::cout << LowresText(scene.name, rows);
+    if (outDir.empty()) return 0;
+    fs::create_directories(outDir);
+    WriteFileAtomically((fs::path(outDir) / ("lowres_" + scene.name + ".md")).string(),
+                        LowresMarkdown(scene.name, rows));
+    WriteLowresPlot((fs::path(outDir) / ("lowres_" + scene.name + ".png")).string(),
+                    "Low-resolution decision: " + scene.name, LowresCurves(rows));
+    return 0;
+}
+
+}  // namespace lexel::cases

@@ -1,0 +1,39 @@
+// The `lexel` commands: each loads its input, calls its runner (cases/run/), prints with its
+// formatter (cases/report/) and writes its files. Flags live in main.cpp only; these take the
+// parsed values. Each returns the exit status and throws InputError (exit 2) for bad input.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lexel::cases {
+
+// Where the shipped cases and the published tables live: cases/flatland, cases/spatial,
+// cases/published under this directory.
+std::filesystem::path DataDirectory();
+
+struct RunFlags {
+    std::vector<std::string> cases;    // case files
+    std::vector<std::string> methods;  // empty: all
+    std::string metric = "l1";         // flatland only
+    bool metricGiven = false;
+    std::string format = "table";  // table | json | csv
+    std::string outDir;            // empty: print only
+    bool mapTruth = true;          // 3D: also the report's 4000² truth map
+};
+int RunCommand(const RunFlags& flags);
+
+struct SweepFlags {
+    std::string casePath;
+    int lights = 0;                    // 0: the case's light_sweep count
+    std::vector<std::string> methods;  // empty: all
+    std::string format = "table";      // table | markdown | csv | json
+    std::string outDir;
+};
+int SweepCommand(const SweepFlags& flags);
+
+int TablesCommand(const std::string& outDir, const std::string& casesDir);
+int LowresCommand(const std::string& casePath, const std::string& outDir);
+
+}  // namespace lexel::cases

@@ -1,0 +1,47 @@
+// The published tables lexel reproduces, read from the data files in cases/published/: the four
+// tables of Chong 2003 ch. 4.1.3 (thesis_tables.json) and Table 1 of Chong & Gortler's report
+// (report_table1.json). Reading is strict (json_reader.h); errors name the file and pointer.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lexel::cases {
+
+// One printed row of a thesis table. Angles in degrees, footprints in pixels.
+struct ThesisRow {
+    std::string label;                 // as printed: "Our Method (L1)", "Perspective SM", ...
+    std::vector<std::string> methods;  // our methods the row stands for
+    double angle = 0.0, worst = 0.0, average = 0.0, meanPlusSigma = 0.0;
+    std::optional<double> twoFrustaMean;  // only "Projection Aliasing" prints it
+};
+
+struct ThesisTable {
+    std::string file;   // the case file it belongs to (cases/flatland/<file>)
+    std::string title;  // the thesis's heading
+    std::vector<ThesisRow> rows;
+    // The row printed for `method`, or null.
+    const ThesisRow* RowFor(const std::string& method) const;
+};
+
+std::vector<ThesisTable> LoadThesisTables(const std::filesystem::path& file);
+
+// Table 1 of the report: per set of lights ("all", or a method's worst 10%), the misclassified
+// pixels of each method and the percentages printed beside them.
+struct ReportTable1 {
+    struct Row {
+        std::string set;
+        std::vector<double> misclassified, percentMore;  // per method, in `methods` order
+    };
+    std::vector<std::string> methods;
+    std::vector<Row> rows;
+    const Row* Find(const std::string& set) const;  // null when the report has no such row
+    // The index of `method` in `methods`, or nullopt.
+    std::optional<std::size_t> Column(const std::string& method) const;
+};
+
+ReportTable1 LoadReportTable1(const std::filesystem::path& file);
+
+}  // namespace lexel::cases

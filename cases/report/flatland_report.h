@@ -1,0 +1,20 @@
+// Output formats of `lexel run` for flatland cases: an aligned terminal table, one JSON document
+// (schema in cases/README.md) and CSV.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+
+#include "lexel/flatland/methods.h"
+
+namespace lexel::cases {
+
+nlohmann::json CaseReportJson(const flatland::CaseReport& report);
+// One case: {"case": ..., "methods": [...]}; several: {"cases": [ ...those objects... ]}.
+nlohmann::json RunJson(std::span<const flatland::CaseReport> reports);
+std::string RunCsv(std::span<const flatland::CaseReport> reports);
+std::string CaseTable(const flatland::CaseReport& report);
+std::string CaseMarkdown(const flatland::CaseReport& report);
+
+}  // namespace lexel::cases

@@ -1,0 +1,155 @@
+#include "lexel/cases/report/spatial_report.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "lexel/cases/report/text_table.h"
+#include "lexel/cases/run/sweep.h"
+#include "lexel/spatial/harness/images.h"
+
+namespace lexel::cases {
+
+namespace {
+
+nlohmann::json FiniteOrNull(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+std::string LightHeader(std::size_t l, const spatial::LightOutcome& o) {
+    std::ostringstream text;
+    text << "light " << l << ": " << LightLabel(o.light) << " — " << o.receiverPixels
+         << " pixels face it, " << o.truthShadowed << " shadowed (Embree rays)";
+    if (o.mapTruthDisagree >= 0)
+        text << "; the report's focused 4000² map disagrees on " << o.mapTruthDisagree << " ("
+             << Fixed(100.0 * o.mapTruthDisagree / std::max<std::int64_t>(1, o.receiverPixels), 3)
+             << "%)";
+    text << "; " << o.samples.lsX.size() << " boundary samples\n";
+    return text.str();
+}
+
+std::string IterationLines(const spatial::LightOutcome& o) {
+    std::ostringstream text;
+    for (const auto& m : o.methods) {
+        if (m.hAfterIteration.empty()) continue;
+        text << m.method << ": h after each iteration (Algorithm 1)";
+        for (std::size_t i = 0; i < m.hAfterIteration.size(); ++i)
+            text << (i ? " → " : " ") << Significant(m.hAfterIteration[i], 6);
+        if (m.h < m.hBeforeRefine) text << "; refined " << Significant(m.h, 6);
+        text << '\n';
+    }
+    return text.str();
+}
+
+std::string CameraPathText(const CameraPathStudy& study, std::size_t light) {
+    TextTable table({"pose", "P changed", "median badness kept", "median badness new",
+                     "misclassified (hysteresis)", "misclassified (fresh)"});
+    for (std::size_t k = 0; k < study.poses.size(); ++k) {
+        const PoseOutcome& p = study.poses[k];
+        table.AddRow({std::to_string(k), p.changed ? "yes" : "no", Significant(p.medianKept, 5),
+                      Significant(p.medianNew, 5), std::to_string(p.misclassifiedHysteresis),
+                      std::to_string(p.misclassifiedFresh)});
+    }
+    std::ostringstream text;
+    text << "\ncamera path, light " << light << ": P changed in " << study.Changes() << " of "
+         << study.poses.size() << " poses (hysteresis: keep P unless the new median "
+         << "badness is below 80% of the kept one)\n"
+         << table.Render();
+    return text.str();
+}
+
+}  // namespace
+
+std::string SpatialRunText(const spatial::Scene&, const SpatialRun& run) {
+    std::ostringstream text;
+    for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
+        const auto& o = run.outcomes[l];
+        TextTable table(
+            {"method", "misclassified", "false shadow", "false light", "h (eq. 6)", "ms"});
+        for (const auto& m : o.methods)
+            table.AddRow({m.method, std::to_string(m.misclassified), std::to_string(m.falseShadow),
+                          std::to_string(m.misclassified - m.falseShadow), Significant(m.h, 6),
+                          Fixed(m.ms, 3)});
+        text << (l ? "\n" : "") << LightHeader(l, o) << table.Render() << IterationLines(o);
+    }
+    for (std::size_t l = 0; l < run.cameraPath.size(); ++l)
+        text << CameraPathText(run.cameraPath[l], l);
+    return text.str();
+}
+
+nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run) {
+    nlohmann::json doc;
+    doc["case"] = scene.name;
+    for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
+        const auto& o = run.outcomes[l];
+        nlohmann::json light = {{"light", l},
+                                {"description", LightLabel(o.light)},
+                                {"receiver_pixels", o.receiverPixels},
+                                {"truth_shadowed", o.truthShadowed},
+                                {"boundary_samples", o.samples.lsX.size()}};
+        if (o.mapTruthDisagree >= 0) light["map4000_disagrees_with_rays"] = o.mapTruthDisagree;
+        for (const auto& m : o.methods) {
+            nlohmann::json method = {{"method", m.method},
+                                     {"misclassified", m.misclassified},
+                                     {"false_shadow", m.falseShadow},
+                                     {"false_light", m.misclassified - m.falseShadow},
+                                     {"h", FiniteOrNull(m.h)},
+                                     {"ms", m.ms}};
+            if (!m.hAfterIteration.empty()) method["h_after_iteration"] = m.hAfterIteration;
+            light["methods"].push_back(method);
+        }
+        doc["lights"].push_back(light);
+    }
+    for (std::size_t l = 0; l < run.cameraPath.size(); ++l) {
+        const CameraPathStudy& study = run.cameraPath[l];
+        nlohmann::json poses = nlohmann::json::array();
+        for (std::size_t k = 0; k < study.poses.size(); ++k) {
+            const PoseOutcome& p = study.poses[k];
+            poses.push_back({{"pose", k},
+                             {"changed", p.changed},
+                             {"median_badness_kept", FiniteOrNull(p.medianKept)},
+                             {"median_badness_new", p.medianNew},
+                             {"misclassified_hysteresis", p.misclassifiedHysteresis},
+                             {"misclassified_fresh", p.misclassifiedFresh}});
+        }
+        doc["camera_path"].push_back({{"light", l},
+                                      {"poses", poses.size()},
+                                      {"changes", study.Changes()},
+                                      {"frames", poses}});
+    }
+    return doc;
+}
+
+std::string SpatialRunCsv(const SpatialRun& run) {
+    std::ostringstream csv;
+    csv << "light,method,misclassified,false_shadow,false_light,h,ms\n";
+    for (std::size_t l = 0; l < run.outcomes.size(); ++l)
+        for (const auto& m : run.outcomes[l].methods)
+            csv << l << ',' << m.method << ',' << m.misclassified << ',' << m.falseShadow << ','
+                << m.misclassified - m.falseShadow << ',' << Significant(m.h, 9) << ','
+                << Fixed(m.ms, 4) << '\n';
+    return csv.str();
+}
+
+int WriteSpatialImages(const std::filesystem::path& dir, const spatial::Scene& scene,
+                       const SpatialRun& run) {
+    int images = 0;
+    const spatial::Evaluator& evaluator = *run.evaluator;
+    for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
+        const spatial::LightOutcome& o = run.outcomes[l];
+        const spatial::LightSpace lightSpace(o.light, evaluator.bounds());
+        for (const auto& m : o.methods) {
+            const std::string base =
+                (dir / (scene.name + "_light" + std::to_string(l) + "_" + m.method)).string();
+            spatial::WriteImage(base + "_frame.png",
+                                spatial::FrameImage(evaluator.frame(), lightSpace, m.shades));
+            spatial::WriteImage(
+                base + "_errors.png",
+                spatial::MisclassificationImage(evaluator.frame(), lightSpace, m.shades, o.truth));
+            spatial::WriteImage(base + "_map.png", spatial::ShadowMapImage(m.map, o.samples));
+            images += 3;
+        }
+    }
+    return images;
+}
+
+}  // namespace lexel::cases

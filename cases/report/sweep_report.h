@@ -1,0 +1,23 @@
+// Table 1 of Chong & Gortler's report from a sweep (`lexel sweep`): mean misclassified pixels over
+// all lights and over each method's worst 10%, as a percentage more than the reference method
+// (`optimal` when it ran, else the first), with the report's published row beside ours; the
+// methods' mean h and time; in text, Markdown, CSV, JSON (schemas in cases/README.md), and the
+// per-light CSV.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "lexel/cases/load/published.h"
+#include "lexel/cases/run/sweep.h"
+
+namespace lexel::cases {
+
+std::string SweepTable(const SweepResult& result, const ReportTable1& report);
+std::string SweepMarkdown(const SweepResult& result, const ReportTable1& report);
+std::string SweepCsv(const SweepResult& result, const ReportTable1& report);
+nlohmann::json SweepJson(const SweepResult& result);
+// One row per light: position or direction, receiver pixels, and per method misclassified, h, ms.
+std::string SweepLightsCsv(const SweepResult& result);
+
+}  // namespace lexel::cases

@@ -1,0 +1,30 @@
+#include "lexel/cases/run/spatial_run.h"
+
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/solvers/errors.h"
+
+namespace lexel::cases {
+
+SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& options) {
+    if (scene.lights.empty())
+        throw InputError(
+            "/lights: the case has no fixed lights; run `lexel sweep` for its light_sweep");
+    SpatialRun run;
+    run.backend = spatial::MakeCpuRenderer(scene.geometry);
+    run.evaluator = MakeEvaluator(scene, *run.backend);
+    spatial::EvaluationOptions evalOptions;
+    evalOptions.methods = options.methods;
+    evalOptions.mapTruth = options.mapTruth;
+    evalOptions.keepBuffers = options.keepBuffers;
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+        try {
+            run.outcomes.push_back(run.evaluator->Evaluate(scene.lights[l], evalOptions));
+        } catch (const DomainError& e) {
+            throw InputError(SpatialErrorField(e, LightField(l)) + ": " + e.what());
+        }
+    }
+    if (!scene.cameraPath.empty()) run.cameraPath = RunCameraPathStudy(scene, *run.backend);
+    return run;
+}
+
+}  // namespace lexel::cases

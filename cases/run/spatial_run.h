@@ -1,0 +1,33 @@
+// `lexel run` on a 3D case (report §3 for its fixed lights): per light and method the
+// misclassified pixels against exact shadow rays, h and time; the buffers the images need; and the
+// temporal-hysteresis study along the case's camera_path.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lexel/cases/run/camera_path.h"
+#include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/scene.h"
+
+namespace lexel::cases {
+
+struct SpatialRunOptions {
+    std::vector<std::string> methods;  // names from SpatialMethodNames
+    bool mapTruth = true;              // also the report's focused 4000² truth map
+    bool keepBuffers = false;          // keep shades and maps (for images)
+};
+
+struct SpatialRun {
+    std::unique_ptr<spatial::RenderBackend> backend;
+    std::unique_ptr<spatial::Evaluator> evaluator;  // the frame and bounds, for images
+    std::vector<spatial::LightOutcome> outcomes;    // per fixed light
+    std::vector<CameraPathStudy> cameraPath;        // per fixed light; empty without a path
+};
+
+// Everything is computed before anything is reported or written. Throws InputError naming the
+// field (/lights: none; /lights/k, /camera, /geometry) for input the evaluation cannot serve.
+SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& options);
+
+}  // namespace lexel::cases

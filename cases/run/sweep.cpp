@@ -1,0 +1,65 @@
+#include "lexel/cases/run/sweep.h"
+
+#include <tbb/parallel_for.h>
+
+#include <sstream>
+
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/report/text_table.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/solvers/stopwatch.h"
+#include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/generator.h"
+
+namespace lexel::cases {
+
+using spatial::Light;
+
+std::string LightLabel(const Light& light) {
+    std::ostringstream out;
+    const glm::dvec3 v = light.type == Light::Type::kPoint ? light.position : light.direction;
+    out << (light.type == Light::Type::kPoint ? "point (" : "directional (") << Significant(v.x, 4)
+        << ", " << Significant(v.y, 4) << ", " << Significant(v.z, 4) << ")";
+    return out.str();
+}
+
+std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights) {
+    if (!scene.lightSweep)
+        throw InputError("/light_sweep: the case has none; add {\"count\", \"seed\", \"radius\"}");
+    spatial::LightSweep sweep = *scene.lightSweep;
+    if (lights > 0) sweep.count = lights;
+    return spatial::SweepLights(sweep, scene.geometry.ComputeBounds().Center());
+}
+
+SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
+                     const std::vector<Light>& lights, const std::function<void()>& onLightDone) {
+    const Stopwatch timer;
+    const auto backend = spatial::MakeCpuRenderer(scene.geometry);
+    const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
+    SweepResult r;
+    r.caseName = scene.name;
+    r.methods = methods;
+    r.lights = lights;
+    r.cells.assign(lights.size(), std::vector<SweepCell>(methods.size()));
+    r.receiverPixels.assign(lights.size(), 0);
+    spatial::EvaluationOptions options;
+    options.methods = methods;
+    tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
+        spatial::LightOutcome outcome;
+        try {
+            outcome = evaluator->Evaluate(lights[l], options);
+        } catch (const DomainError& e) {
+            const std::string light = "light " + std::to_string(l) + " " + LightLabel(lights[l]);
+            throw InputError(SpatialErrorField(e, light) + ": " + e.what());
+        }
+        for (std::size_t m = 0; m < methods.size(); ++m)
+            r.cells[l][m] = {outcome.methods[m].misclassified, outcome.methods[m].h,
+                             outcome.methods[m].ms};
+        r.receiverPixels[l] = outcome.receiverPixels;
+        if (onLightDone) onLightDone();
+    });
+    r.seconds = timer.Ms() / 1000.0;
+    return r;
+}
+
+}  // namespace lexel::cases

@@ -1,0 +1,44 @@
+// `lexel sweep`: the experiment of Chong & Gortler's report §3 over a case's light sweep — per
+// light and method the misclassified pixels, h and time, the data of the report's Table 1.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lexel/spatial/harness/scene.h"
+
+namespace lexel::cases {
+
+// Per light and method, what a sweep keeps (matrices and buffers are dropped).
+struct SweepCell {
+    std::int64_t misclassified = 0;
+    double h = 0.0;
+    double ms = 0.0;
+};
+
+struct SweepResult {
+    std::string caseName;
+    std::vector<std::string> methods;
+    std::vector<spatial::Light> lights;
+    std::vector<std::vector<SweepCell>> cells;  // [light][method]
+    std::vector<std::int64_t> receiverPixels;   // per light
+    double seconds = 0.0;                       // wall time of the whole sweep
+};
+
+// The lights of the sweep: the case's light_sweep (count overridden by `lights` when > 0).
+// Throws InputError (/light_sweep) when the case has none.
+std::vector<spatial::Light> SweepLightsOf(const spatial::Scene& scene, int lights);
+
+// Evaluates every light, in parallel over lights, deterministically for the case's seed; calls
+// `onLightDone` (from any thread) after each. Throws InputError naming the camera or the light
+// for input the evaluation cannot serve.
+SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
+                     const std::vector<spatial::Light>& lights,
+                     const std::function<void()>& onLightDone = {});
+
+// "point (x, y, z)" or "directional (x, y, z)", 4 significant digits.
+std::string LightLabel(const spatial::Light& light);
+
+}  // namespace lexel::cases
