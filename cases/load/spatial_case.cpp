@@ -184,7 +184,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
                 if (file.empty()) mesh.Fail("must be a file path, got an empty string");
                 try {
                     osMesh = spatial::LoadMesh(file.is_absolute() ? file : baseDir / file);
-                } catch (const InputError& e) {
+                } catch (const DomainError& e) {
                     mesh.Fail(e.what());
                 }
             } else {

@@ -17,7 +17,7 @@
 namespace lexel::spatial {
 namespace {
 
-// Assimp's messages can span lines; InputError messages are one line.
+// Assimp's messages can span lines; error messages are one line.
 std::string OneLine(std::string text) {
     for (char& c : text)
         if (c == '\n' || c == '\r') c = ' ';
@@ -31,7 +31,7 @@ TriangleMesh LoadMesh(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(name + ": mesh file not found");
+        throw DomainError(Subject::kGeometry, name + ": mesh file not found");
 
     Assimp::Importer importer;
     // Points and lines are removed by aiProcess_SortByPType rather than kept as degenerate meshes.
@@ -41,7 +41,8 @@ TriangleMesh LoadMesh(const std::filesystem::path& path) {
         importer.ReadFile(name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                     aiProcess_PreTransformVertices | aiProcess_SortByPType);
     if (scene == nullptr)
-        throw InputError(name + ": cannot read mesh: " + OneLine(importer.GetErrorString()));
+        throw DomainError(Subject::kGeometry,
+                          name + ": cannot read mesh: " + OneLine(importer.GetErrorString()));
 
     TriangleMesh mesh;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
@@ -49,12 +50,13 @@ TriangleMesh LoadMesh(const std::filesystem::path& path) {
         if (!(in->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
         const auto offset = static_cast<unsigned long long>(mesh.positions.size());
         if (offset + in->mNumVertices > std::numeric_limits<unsigned>::max())
-            throw InputError(name + ": too many vertices");
+            throw DomainError(Subject::kGeometry, name + ": too many vertices");
         for (unsigned v = 0; v < in->mNumVertices; ++v) {
             const aiVector3D& p = in->mVertices[v];
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                throw InputError(name + ": vertex " + std::to_string(v) + " of mesh " +
-                                 std::to_string(m) + " has a non-finite coordinate");
+                throw DomainError(Subject::kGeometry, name + ": vertex " + std::to_string(v) +
+                                                          " of mesh " + std::to_string(m) +
+                                                          " has a non-finite coordinate");
             mesh.positions.push_back({p.x, p.y, p.z});
         }
         for (unsigned f = 0; f < in->mNumFaces; ++f) {
@@ -65,7 +67,8 @@ TriangleMesh LoadMesh(const std::filesystem::path& path) {
                 glm::uvec3(static_cast<unsigned>(offset)));
         }
     }
-    if (mesh.triangles.empty()) throw InputError(name + ": the file holds no triangles");
+    if (mesh.triangles.empty())
+        throw DomainError(Subject::kGeometry, name + ": the file holds no triangles");
     return mesh;
 }
 

@@ -28,7 +28,7 @@ bool ModelsInstalled() {
 std::string LoadError(const std::filesystem::path& path) {
     try {
         LoadMesh(path);
-    } catch (const InputError& e) {
+    } catch (const DomainError& e) {
         return e.what();
     }
     return "no error";
