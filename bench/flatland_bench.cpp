@@ -87,7 +87,7 @@ void BM_LinfExact(benchmark::State& state) {
 }
 BENCHMARK(BM_LinfExact)->Unit(benchmark::kMillisecond);
 
-// The sampling pass: the example floor and polyline at 10⁶ pixels.
+// The sampling pass: the example floor and polyline at 10⁶ pixels.
 void BM_SamplingPass(benchmark::State& state) {
     FlatScene scene;
     scene.camera.wsPosition = {0, 2};

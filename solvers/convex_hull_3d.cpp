@@ -1,3 +1,13 @@
+// The 3D hull (convex_hull_3d.h).
+//
+// Before Qhull, Akl–Toussaint's pre-filter in 3D (S. G. Akl & G. T. Toussaint, "A fast convex
+// hull algorithm", Information Processing Letters 7(5), 1978): the points extreme along the 13
+// directions of a 3×3×3 stencil (axes, face and body diagonals) span a polytope E inside the
+// hull, whose facets Qhull gives from those few points; a point whose computed signed distance to
+// every facet plane of E is ≤ 0 is inside E (up to the rounding of those planes) and cannot be a
+// vertex, so only the others go to the full Qhull run, which costs far more per point. Points on
+// E's boundary go too, like the floor points on E's bottom face.
+//
 #include "lexel/solvers/convex_hull_3d.h"
 
 #include <libqhull_r/libqhull_r.h>  // declares its functions extern "C"

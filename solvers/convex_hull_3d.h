@@ -10,13 +10,8 @@
 // the scene-optimized light matrix keeps only them (spatial/optimizer.h) — loses nothing beyond
 // rounding.
 //
-// Before Qhull, Akl–Toussaint's pre-filter in 3D (S. G. Akl & G. T. Toussaint, "A fast convex
-// hull algorithm", Information Processing Letters 7(5), 1978): the points extreme along the 13
-// directions of a 3×3×3 stencil (axes, face and body diagonals) span a polytope E inside the
-// hull, whose facets Qhull gives from those few points; a point whose computed signed distance to
-// every facet plane of E is ≤ 0 is inside E (up to the rounding of those planes) and cannot be a
-// vertex, so only the others go to the full Qhull run, which costs far more per point. Points on
-// E's boundary go too, like the floor points on E's bottom face.
+// Most points never reach Qhull: an Akl–Toussaint pre-filter drops points certainly inside
+// (convex_hull_3d.cpp).
 //
 // Degenerate input is handled here, not by Qhull (which stops with "initial simplex is flat"):
 // fewer than 4 points, or points Qhull cannot build a hull of (coplanar, as for a camera that sees

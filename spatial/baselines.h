@@ -12,14 +12,14 @@
 //   lispsm         M. Wimmer, D. Scherzer, W. Purgathofer, "Light Space Perspective Shadow Maps",
 //                  EGSR 2004: a perspective warp along the view direction projected perpendicular
 //                  to the light, n_opt = (z_n + √(z_f z_n)) / sin γ (their general-γ optimum; the
-//                  paper is not in /work/shared/papers, the γ = 90° case is B. Lloyd et al.,
+//                  paper is not among the project's papers; the γ = 90° case is B. Lloyd et al.,
 //                  "Warping and Partitioning for Low Error Shadow Maps", EGSR 2006, §4.1 and
 //                  Fig. 3: n' = n + √(fn) for an overhead light).
 //   psm            M. Stamminger, G. Drettakis, "Perspective Shadow Maps", SIGGRAPH 2002: the
 //                  shadow map taken in the camera's post-perspective space; with S. Kozlov,
 //                  "Perspective Shadow Maps: Care and Feeding", GPU Gems ch. 14, 2004 (the light
 //                  behind the viewer as an inverted projection, the virtual camera slide back).
-//                  Neither text is in /work/shared/papers; Lloyd 2006 §4.1 (n' = n for PSM) and
+//                  Neither text is among the project's papers; Lloyd 2006 §4.1 (n' = n for PSM) and
 //                  Chong's 2003 thesis (003: "pulling the view plane back") summarize them.
 //   plane-optimal  H. Chong, S. Gortler, "A Lixel for Every Pixel", EGSR 2004: the floor plane
 //                  sampled exactly one lexel per pixel (the light map restricted to the plane is an

@@ -87,6 +87,39 @@ bool InFront(const glm::dvec3& p4, const glm::dvec3& lsX) {
     return glm::dot(p4, lsX) > 1e-9 * glm::length(lsX);
 }
 
+// FitMapToPoints with options.shear: the rectangle becomes a parallelogram. The report (§2.3, Fig.
+// 3) shears heuristically: for each hull edge's rectangle, "check to see if the minimum and maximum
+// extents in the current edge direction can be shifted to better line up with the edge's
+// endpoints"; in Fig. 3 the off-edge points all lie left of the edge's extents and are sheared
+// right until the leftmost one lines up with the edge's left end. Exactly: for hull edge e with
+// unit direction u and inward normal v, in the edge coordinates s = u·y, t = v·y - lo ≥ 0 (the edge
+// on t = 0), the shear s' = s + k t keeps the edge and the height H fixed, and the extent E(k) of
+// the hull in s' is convex and piecewise linear in k. Its minimum lies at a breakpoint where two
+// adjacent hull vertices tie for the max or the min (a flat stretch of minimizers contains k = 0 or
+// ends at such a breakpoint); it is found exactly (solvers/min_area_parallelogram.h, which also
+// shows that the report's rule is the special case where lining up with the edge's endpoint is that
+// breakpoint, and that |k*| ≤ 2 E(0) / H, finite because H > 0 for every edge of a hull of ≥ 3
+// vertices). Of the minimizers the one closest to 0 is taken, so an edge that cannot gain keeps
+// its rectangle. The edge with the least E(k*) H wins, which makes the result the minimum-area
+// enclosing parallelogram. The shear enters the 2D affine map through the map row that reads
+// along the edge: s' = (u + k v)·y, so that row (p1, or p2 after a long-side swap) gains a
+// component along the v direction, while the other still reads v·y.
+//   - Long side: the parallelogram's longer side (side lengths E and H √(1 + k²)) goes on the
+//     map's longer dimension, as the rectangle's does. Of the two assignments this one has the
+//     smaller ||M||_F, M the inverse linear part of the 2D map (columns: the side vectors over
+//     the texel counts W, H_map on their map axes): E²/W² + H²(1 + k²)/H_map² against the swap.
+//   - Margin: both half sides grow by the same fraction, i.e. the parallelogram is scaled about
+//     its centre, exactly as the rectangle is.
+//   - Degenerate hulls (1 or 2 distinct projected points, all collinear): the unsheared fit,
+//     sliver included; the shear is never NaN or infinite.
+// The sheared fit jumps with p4 more often than the rectangle fit does: near a minimum flush with
+// hull edges on both side pairs, the two hull edges next to one of them give parallelograms of
+// nearly equal area but different shear, and which one wins flips as p4 moves (an area tie is a
+// jump for the rectangle too, but its candidates differ more). h differs between such twins by
+// several percent: the area the shear minimizes is not the h it is meant to serve. The report finds
+// the shear of "minimal benefit in practice"; README.md has this toolkit's measurement (method
+// optimal-shear).
+
 namespace {
 
 // The fitted frame in the plane (affine_fit.h). For the rectangle the rows are its orthonormal

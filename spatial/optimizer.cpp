@@ -1,3 +1,38 @@
+// Algorithm 1 (optimizer.h): why one hull per frame and one per light suffice, and how the
+// refinement differentiates the fit.
+//
+// One 3D hull per frame, one 2D hull per light. Let C be the cone of light rays through the
+// relevant points X_i. A linear functional positive on generators of C is positive on their
+// conic combinations, so p4·X > 0 holds for all points iff it holds for the generators; and
+// projecting centrally onto the plane p4·X = 1 sends C to the convex set conv(projected
+// generators) whenever every generator is in front (the central projection between two planes is
+// a homography, which maps a segment to a segment when no point of it crosses the horizon, so
+// convex combinations go to convex combinations and extreme points to extreme points). The
+// extreme rays of C are exactly the vertices of the convex hull of the points projected onto any
+// one valid plane — here the initial axis's (RelevantHull). So that 2D hull is computed once per
+// light, and every candidate transforms only its h vertices: a rectangle around the hull of the
+// projected vertices is the rectangle around all projected points.
+//
+// The generators need not be all N relevant points: the vertices v_j of the 3D convex hull of
+// their world points x_i (Readback::wsRelevantHull, computed once per frame) generate C for every
+// light. Light space is an affine image of world space that keeps the homogeneous part: X = R(x -
+// L) for a point light, X = (e1·(x - o), e2·(x - o), s) for a directional one (light_space.h).
+// Writing x_i = Σ_j λ_j v_j with λ_j ≥ 0, Σ_j λ_j = 1, an affine map gives X_i = Σ_j λ_j X(v_j):
+// every relevant X is a convex, hence conic, combination of the vertices' X, so C is the cone of
+// the vertices (which are relevant points themselves). The in-front test with its margin
+// (InFront: p4·X > ε|X|, ε = 1e-9) also carries over: if every vertex passes, then
+// p4·X_i = Σ_j λ_j p4·X(v_j) > ε Σ_j λ_j |X(v_j)| ≥ ε |Σ_j λ_j X(v_j)| = ε |X_i| (triangle
+// inequality), and conversely the vertices are among the points. So fitting and rejecting from
+// the vertices (LightSamples::lsRelevantHull, a few dozen) gives the decisions and matrices of
+// all N points, up to the rounding of the hull (Qhull's roundoff; solvers/convex_hull_3d.h). The
+// cost is one O(N log N) 3D hull per frame (most points never reach Qhull: samples.h) and
+// O(h log h) per light and candidate, instead of O(k·|θ|·N log N) per light.
+//
+// `optimal-refined`: after the search, Ceres' line-search solver (LBFGS) minimizes h over p4 on
+// the unit sphere (ceres::SphereManifold<3>) with the affine part re-fitted inside the objective.
+// The minimum-area rectangle is piecewise smooth in p4 (its combinatorics — the flush hull edge
+// and the four extreme vertices — are locally constant), so the objective re-derives that
+// structure in double at each evaluation and differentiates the fit through it with Jets.
 #include "lexel/spatial/optimizer.h"
 
 #include <ceres/ceres.h>

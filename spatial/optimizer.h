@@ -1,45 +1,13 @@
-// The scene-optimized light matrix: Chong & Gortler's Algorithm 1 (report §2.3–2.4), the hull-once
-// speed-up, and a Ceres refinement of p4 on the unit sphere.
+// The scene-optimized light matrix: Chong & Gortler's Algorithm 1 (report §2.3–2.4), with one
+// convex hull per light instead of one per candidate, and an optional Ceres refinement of p4 on
+// the unit sphere (`optimal-refined`).
 //
 // Algorithm 1 step 4, k times: the gradient g = ∂h/∂p4 (energy_gradient.h, affine rows fixed);
-// the rotation axis p4 × (-g); for each candidate angle θ ∈ {-10, 3, 5, 9, 16, 23, 30, 40, 50}°
-// the rotated axis, its affine part re-fitted (light_matrix.h: minimum-area rectangle around the
-// convex hull of the relevant points, long side on the long map side, margin for the subsampled
-// readback), rejected when a relevant point is not strictly in front of p4·X = 0; keep the best h
-// (each candidate's h through BoundedEnergy, samples.h, which stops once it reaches the best).
-//
-// One 3D hull per frame, one 2D hull per light. Let C be the cone of light rays through the
-// relevant points X_i. A linear functional positive on generators of C is positive on their
-// conic combinations, so p4·X > 0 holds for all points iff it holds for the generators; and
-// projecting centrally onto the plane p4·X = 1 sends C to the convex set conv(projected
-// generators) whenever every generator is in front (the central projection between two planes is
-// a homography, which maps a segment to a segment when no point of it crosses the horizon, so
-// convex combinations go to convex combinations and extreme points to extreme points). The
-// extreme rays of C are exactly the vertices of the convex hull of the points projected onto any
-// one valid plane — here the initial axis's (RelevantHull). So that 2D hull is computed once per
-// light, and every candidate transforms only its h vertices: a rectangle around the hull of the
-// projected vertices is the rectangle around all projected points.
-//
-// The generators need not be all N relevant points: the vertices v_j of the 3D convex hull of
-// their world points x_i (Readback::wsRelevantHull, computed once per frame) generate C for every
-// light. Light space is an affine image of world space that keeps the homogeneous part: X = R(x -
-// L) for a point light, X = (e1·(x - o), e2·(x - o), s) for a directional one (light_space.h).
-// Writing x_i = Σ_j λ_j v_j with λ_j ≥ 0, Σ_j λ_j = 1, an affine map gives X_i = Σ_j λ_j X(v_j):
-// every relevant X is a convex, hence conic, combination of the vertices' X, so C is the cone of
-// the vertices (which are relevant points themselves). The in-front test with its margin
-// (InFront: p4·X > ε|X|, ε = 1e-9) also carries over: if every vertex passes, then
-// p4·X_i = Σ_j λ_j p4·X(v_j) > ε Σ_j λ_j |X(v_j)| ≥ ε |Σ_j λ_j X(v_j)| = ε |X_i| (triangle
-// inequality), and conversely the vertices are among the points. So fitting and rejecting from
-// the vertices (LightSamples::lsRelevantHull, a few dozen) gives the decisions and matrices of
-// all N points, up to the rounding of the hull (Qhull's roundoff; solvers/convex_hull_3d.h). The
-// cost is one O(N log N) 3D hull per frame (most points never reach Qhull: samples.h) and
-// O(h log h) per light and candidate, instead of O(k·|θ|·N log N) per light.
-//
-// `optimal-refined`: after the search, Ceres' line-search solver (LBFGS) minimizes h over p4 on
-// the unit sphere (ceres::SphereManifold<3>) with the affine part re-fitted inside the objective.
-// The minimum-area rectangle is piecewise smooth in p4 (its combinatorics — the flush hull edge
-// and the four extreme vertices — are locally constant), so the objective re-derives that
-// structure in double at each evaluation and differentiates the fit through it with Jets.
+// the rotation axis p4 × (-g); for each candidate angle θ (OptimizerOptions::anglesDeg) the
+// rotated axis, its affine part re-fitted (FitMapToPoints: the minimum-area rectangle around the
+// visible points, long side on the long map side, with a margin); a candidate is rejected when a
+// visible point is not strictly in front of p4·X = 0; the best h is kept. The fit needs only the
+// vertices of the visible points' convex hull, for every axis (proof in optimizer.cpp).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -74,7 +42,7 @@ struct OptimizerOptions {
 
 struct OptimizerResult {
     LightMatrix matrix;
-    double h = 0.0;
+    double h = 0.0;  // eq. (6) over the samples, (texels per pixel)⁻² summed: dimensionless
     std::vector<double> hAfterIteration;  // [0] the initial axis, then after each iteration
     double hBeforeRefine = 0.0;
     int candidatesTried = 0, candidatesRejected = 0;
@@ -86,8 +54,8 @@ struct OptimizerResult {
     double hullMs = 0.0, searchMs = 0.0, refineMs = 0.0;
 };
 
-// The cone of the relevant points through its extreme rays (see the header comment), from any
-// generators of it: all relevant points, or the light-space 3D hull vertices (lsRelevantHull).
+// The cone of the relevant points through its extreme rays (optimizer.cpp), from any generators
+// of it: all relevant points, or the light-space 3D hull vertices (lsRelevantHull).
 class RelevantHull {
   public:
     // The hull of the points projected on the plane p4Reference·X = 1; nullopt when there are no

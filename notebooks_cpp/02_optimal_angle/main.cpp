@@ -4,7 +4,7 @@
 // (Chong 2003, §3.1; flatland/lexel_remap.h, eq. R2):
 //     f_i(t) = f0_i (1 + t T_i)² / ((1 + t T_hi)(1 + t T_lo)),
 // so Σ f_i is a ratio of two quadratics whose numerator needs only three moments of the samples
-// and whose critical points are the roots of one quadratic. This program takes the issue's
+// and whose critical points are the roots of one quadratic. This program takes an
 // example (a floor and a small polyline), prints the L1 objective at the initial (normal) angle,
 // solves it in closed form, cross-checks with a brute-force sweep, and prints initial → final.
 //

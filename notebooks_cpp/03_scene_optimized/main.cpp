@@ -11,7 +11,7 @@
 // iteration (initial → final), compares the misclassified pixels with the focused map, and writes
 // the report's Fig. 2: the optimized shadow map with the samples in red.
 //
-//   ./build/notebooks_cpp/notebook_03_scene_optimized [out.png]
+//   ./build/notebooks_cpp/notebook_03_scene_optimized [OUT_DIR]    (default out/notebooks/)
 #include <cstdio>
 #include <filesystem>
 
@@ -21,7 +21,9 @@
 
 int main(int argc, char** argv) {
     using namespace lexel::spatial;
-    const std::string outPath = argc > 1 ? argv[1] : "notebook_03_optimal_map.png";
+    const std::filesystem::path outDir = argc > 1 ? argv[1] : "out/notebooks";
+    std::filesystem::create_directories(outDir);
+    const std::string outPath = (outDir / "03_optimal_map.png").string();
     const Scene scene = lexel::cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) /
                                                        "spatial/walkthrough.json");
     const auto backend = MakeCpuRenderer(scene.geometry);

@@ -59,9 +59,9 @@ TEST(Baselines, NormalAxisBisectsTheSweep) {
     EXPECT_NEAR(NormalAxis(pass).wsAxis, 0.5 * (lo + hi), 1e-12);
 }
 
-// Theorem 1's construction by hand for the example floor: the view plane through (0, 2)
-// with normal (1, −0.25) meets y = 0 at q = (−0.5, 0); the light (−3, 10) to q is (2.5, −10), so
-// the lexel plane is atan(2.5/10) = 14.036° from vertical.
+// Theorem 1's construction by hand for the example floor (test_scenes.h): the view plane through
+// (0, 2) with normal (1, −0.25) meets y = 0 at q = (−0.5, 0); the light (−3, 10) to q is (2.5,
+// −10), so the lexel plane is atan(2.5/10) = 14.036° from vertical.
 TEST(Baselines, PlaneOptimalByHand) {
     const FlatScene scene = testing::ExampleScene();
     const double axis = PlaneOptimalAxis(scene).wsAxis;

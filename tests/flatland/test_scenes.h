@@ -1,5 +1,5 @@
-// Scenes for the flatland tests: the example and seeded random ones. Random scenes print
-// their seed and contents through Describe() so a failing sweep can be replayed.
+// Scenes for the flatland tests: an example floor with a polyline and seeded random ones. Random
+// scenes print their seed and contents through Describe() so a failing sweep can be replayed.
 #pragma once
 
 #include <cstdint>

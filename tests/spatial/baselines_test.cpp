@@ -24,7 +24,8 @@
 namespace lexel::spatial {
 namespace {
 
-// How far outside [0, W] × [0, H] a relevant point may map (texels): the brief's tolerance.
+// How far outside [0, W] × [0, H] a relevant point may map (texels): the baselines' contract
+// (baselines.h).
 constexpr double kMapTolTexels = 1e-6;
 
 Bounds FloorBounds() {

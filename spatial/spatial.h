@@ -1,0 +1,22 @@
+// lexel's 3D core in one include, installed as <lexel/spatial.h>: the scene-optimized light
+// matrix of Chong & Gortler (report §2–3) for a renderer's own buffers. The usual path:
+//   1. a camera pass → CameraBuffer (your G-buffer, or CameraBufferFromDepth from a depth buffer)
+//      → MakeReadback (readback.h);
+//   2. per light: LightSpace (light_space.h), InitialLightAxis (baselines.h), a shadow mask of
+//      the readback from a standard map → MakeLightSamples (samples.h);
+//   3. OptimizeLightMatrix (optimizer.h) → LightMatrix → ClipFromWorld (clip_matrix.h), the 4×4
+//      to render the shadow map with.
+// README.md, "Use lexel in your renderer", has a complete program.
+#pragma once
+
+#include "lexel/spatial/baselines.h"
+#include "lexel/spatial/bounds.h"
+#include "lexel/spatial/camera.h"
+#include "lexel/spatial/clip_matrix.h"
+#include "lexel/spatial/energy_gradient.h"
+#include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/light_space.h"
+#include "lexel/spatial/optimizer.h"
+#include "lexel/spatial/readback.h"
+#include "lexel/spatial/samples.h"
+#include "lexel/spatial/temporal.h"
