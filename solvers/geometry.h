@@ -11,8 +11,12 @@
 #include <cmath>
 #include <glm/glm.hpp>
 #include <numbers>
+#include <span>
 
 namespace lexel {
+
+// Throws std::invalid_argument "<what>: no points" or "<what>: point K is not finite".
+void RequireFinitePoints(std::span<const Eigen::Vector2d> points, const char* what);
 
 // Degrees ↔ radians, evaluated as x · π / 180 and x · 180 / π.
 constexpr double Radians(double degrees) { return degrees * std::numbers::pi / 180.0; }

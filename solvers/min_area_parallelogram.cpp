@@ -226,11 +226,7 @@ Parallelogram2 ParallelogramOfValidHull(std::span<const Eigen::Vector2d> hull,
 }  // namespace
 
 Parallelogram2 MinAreaParallelogram(std::span<const Eigen::Vector2d> points) {
-    if (points.empty()) throw std::invalid_argument("minimum-area parallelogram: no points");
-    for (std::size_t k = 0; k < points.size(); ++k)
-        if (!points[k].allFinite())
-            throw std::invalid_argument("minimum-area parallelogram: point " + std::to_string(k) +
-                                        " is not finite");
+    RequireFinitePoints(points, "minimum-area parallelogram");
     const std::vector<Eigen::Vector2d> hull = ConvexHull(points);
     return ParallelogramOfValidHull(hull, nullptr);
 }

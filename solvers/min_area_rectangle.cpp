@@ -119,11 +119,7 @@ Parallelogram2 RectangleOfValidHull(std::span<const Eigen::Vector2d> hull,
 }  // namespace
 
 Parallelogram2 MinAreaRectangle(std::span<const Eigen::Vector2d> points) {
-    if (points.empty()) throw std::invalid_argument("minimum-area rectangle: no points");
-    for (std::size_t k = 0; k < points.size(); ++k)
-        if (!points[k].allFinite())
-            throw std::invalid_argument("minimum-area rectangle: point " + std::to_string(k) +
-                                        " is not finite");
+    RequireFinitePoints(points, "minimum-area rectangle");
     const std::vector<Eigen::Vector2d> hull = ConvexHull(points);
     return RectangleOfValidHull(hull, nullptr);
 }

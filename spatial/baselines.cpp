@@ -45,12 +45,12 @@ LightMatrix FitCovering(const glm::dvec3& p4, std::vector<glm::dvec2> planePoint
         if (m && CoversAll(*m, lsRelevant, map)) return *m;
         Note(diagnostics, std::string(method) + ": refitted over the relevant points too");
     }
-    for (const glm::dvec3& X : lsRelevant) {
-        if (!InFront(p4, X))
-            throw DomainError(Subject::kLight, std::string(method) +
-                                                   ": a visible point is behind the light's plane");
-        planePoints.push_back(ProjectToPlane(p4, X));
-    }
+    const std::optional<std::vector<glm::dvec2>> relevantPlane =
+        ProjectToPlaneInFront(p4, lsRelevant);
+    if (!relevantPlane)
+        throw DomainError(Subject::kLight,
+                          std::string(method) + ": a visible point is behind the light's plane");
+    planePoints.insert(planePoints.end(), relevantPlane->begin(), relevantPlane->end());
     const auto m = FitMapToPlanePoints(p4, planePoints, map);
     if (!m || !CoversAll(*m, lsRelevant, map))
         throw DomainError(Subject::kLight,

@@ -163,9 +163,8 @@ std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
     return m;
 }
 
-std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
-                                          std::span<const glm::dvec3> lsPoints, Resolution map,
-                                          const FitOptions& options) {
+std::optional<std::vector<glm::dvec2>> ProjectToPlaneInFront(const glm::dvec3& p4,
+                                                             std::span<const glm::dvec3> lsPoints) {
     glm::dvec3 b1, b2;
     PlaneBasis(p4, &b1, &b2);
     std::vector<glm::dvec2> planePoints;
@@ -174,7 +173,15 @@ std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
         if (!InFront(p4, X)) return std::nullopt;
         planePoints.push_back(ProjectToAxisPlane(p4, b1, b2, X));
     }
-    return FitMapToPlanePoints(p4, planePoints, map, options);
+    return planePoints;
+}
+
+std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
+                                          std::span<const glm::dvec3> lsPoints, Resolution map,
+                                          const FitOptions& options) {
+    const std::optional<std::vector<glm::dvec2>> planePoints = ProjectToPlaneInFront(p4, lsPoints);
+    if (!planePoints) return std::nullopt;
+    return FitMapToPlanePoints(p4, *planePoints, map, options);
 }
 
 }  // namespace lexel::spatial

@@ -16,6 +16,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "lexel/solvers/geometry.h"
 #include "lexel/spatial/camera.h"
@@ -57,6 +58,11 @@ std::optional<LightMatrix> FromScreenRows(const LightSpace& lightSpace,
 // Whether X is strictly in front of the plane p4·X = 0, with a relative margin: p4·X > ε|X| where
 // ε = 1e-9 (dimensionless; guards against points on the horizon that would map to ±huge texels).
 bool InFront(const glm::dvec3& p4, const glm::dvec3& lsX);
+
+// The central projections y = (b1·X, b2·X) / (p4·X) of the points onto the plane p4·X = 1, in the
+// basis PlaneBasis(p4) FitMapToPlanePoints expects; nullopt when a point is not InFront of p4.
+std::optional<std::vector<glm::dvec2>> ProjectToPlaneInFront(const glm::dvec3& p4,
+                                                             std::span<const glm::dvec3> lsPoints);
 
 struct FitOptions {
     // Fraction added to each half-extent of the fitted rectangle (report §2.4: the subsampled

@@ -196,16 +196,15 @@ std::optional<double> RefinedObjective(std::span<const glm::dvec3> vertices,
 std::optional<RelevantHull> RelevantHull::Of(std::span<const glm::dvec3> lsRelevant,
                                              const glm::dvec3& p4Reference) {
     if (lsRelevant.empty()) return std::nullopt;
+    const std::optional<std::vector<glm::dvec2>> planePoints =
+        ProjectToPlaneInFront(p4Reference, lsRelevant);
+    if (!planePoints) return std::nullopt;
     RelevantHull hull;
     glm::dvec3 b1, b2;
     PlaneBasis(p4Reference, &b1, &b2);
     std::vector<Eigen::Vector2d> y;
-    y.reserve(lsRelevant.size());
-    for (const glm::dvec3& X : lsRelevant) {
-        if (!InFront(p4Reference, X)) return std::nullopt;
-        const glm::dvec2 yX = ProjectToAxisPlane(p4Reference, b1, b2, X);
-        y.emplace_back(yX.x, yX.y);
-    }
+    y.reserve(planePoints->size());
+    for (const glm::dvec2& yX : *planePoints) y.emplace_back(yX.x, yX.y);
     // Akl–Toussaint pre-filter (S. G. Akl & G. T. Toussaint, "A fast convex hull algorithm",
     // Information Processing Letters 7(5), 1978): a point strictly inside the quadrilateral of the
     // four axis extremes cannot be a hull vertex. One O(N) pass leaves only a thin boundary layer

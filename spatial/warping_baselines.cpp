@@ -63,6 +63,26 @@ glm::dvec3 Centroid(const std::vector<glm::dvec3>& points) {
     return sum / static_cast<double>(points.size());
 }
 
+// What both warps start from: the checked context, the normal axis and the focus body, and their
+// fallback to the focused map with the reason noted.
+struct WarpStart {
+    WarpStart(const BaselineContext& context, BaselineDiagnostics* diagnostics, const char* method)
+        : context(context), diagnostics(diagnostics), method(method) {
+        CheckContext(context);
+        axis = ChooseNormalAxis(context);
+        wsBody = FocusBody(context, axis);
+    }
+    LightMatrix FallBack(const std::string& why) const {
+        Note(diagnostics, std::string(method) + ": " + why + "; using focused");
+        return FocusedLightMatrix(context, diagnostics);
+    }
+    const BaselineContext& context;
+    BaselineDiagnostics* diagnostics;
+    const char* method;
+    NormalAxis axis;
+    std::vector<glm::dvec3> wsBody;
+};
+
 // Keeps the warp's p4, refits the affine part over the body and checks the relevant points.
 std::optional<LightMatrix> RefitOverBody(const BaselineContext& context, const glm::dvec3& p4,
                                          const std::vector<glm::dvec3>& wsBody) {
@@ -106,16 +126,13 @@ Camera PsmVirtualCamera(const Camera& camera, double zNear, double zFar, double 
 }
 
 LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
-    CheckContext(context);
-    auto fallBack = [&](const std::string& why) {
-        Note(diagnostics, "lispsm: " + why + "; using focused");
-        return FocusedLightMatrix(context, diagnostics);
-    };
+    const WarpStart start(context, diagnostics, "lispsm");
+    const auto fallBack = [&](const std::string& why) { return start.FallBack(why); };
+    if (start.wsBody.empty()) return fallBack("empty focus body");
     const LightSpace& ls = *context.lightSpace;
     const Camera& camera = context.camera;
-    const NormalAxis axis = ChooseNormalAxis(context);
-    const std::vector<glm::dvec3> wsBody = FocusBody(context, axis);
-    if (wsBody.empty()) return fallBack("empty focus body");
+    const NormalAxis& axis = start.axis;
+    const std::vector<glm::dvec3>& wsBody = start.wsBody;
 
     // H: world → the space where the light travels along +z (rows act on [x; 1]).
     glm::dmat4 dFromWorld;
@@ -217,16 +234,12 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostic
 }
 
 LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
-    CheckContext(context);
-    auto fallBack = [&](const std::string& why) {
-        Note(diagnostics, "psm: " + why + "; using focused");
-        return FocusedLightMatrix(context, diagnostics);
-    };
+    const WarpStart start(context, diagnostics, "psm");
+    const auto fallBack = [&](const std::string& why) { return start.FallBack(why); };
+    if (start.wsBody.empty()) return fallBack("empty focus body");
     const LightSpace& ls = *context.lightSpace;
     const Camera& camera = context.camera;
-    const NormalAxis axis = ChooseNormalAxis(context);
-    const std::vector<glm::dvec3> wsBody = FocusBody(context, axis);
-    if (wsBody.empty()) return fallBack("empty focus body");
+    const std::vector<glm::dvec3>& wsBody = start.wsBody;
 
     const glm::dvec3 wsView = glm::normalize(camera.target - camera.position);
     double zNear, zFar;

@@ -1,5 +1,6 @@
 #include "lexel/cases/app/commands.h"
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 
@@ -52,22 +53,23 @@ std::string KnownList(const std::vector<std::string>& names) {
     return list;
 }
 
-std::vector<std::string> SpatialMethods(std::vector<std::string> methods) {
-    if (methods.empty()) return spatial::SpatialMethodNames();
+// The --method values, checked against `known` (all of them when none are given).
+std::vector<std::string> MethodsOf(std::vector<std::string> methods,
+                                   const std::vector<std::string>& known, const char* world) {
+    if (methods.empty()) return known;
     for (const std::string& m : methods)
-        if (!spatial::IsSpatialMethod(m))
-            throw InputError("--method: unknown 3D method '" + m +
-                             "' (known: " + KnownList(spatial::SpatialMethodNames()) + ")");
+        if (std::find(known.begin(), known.end(), m) == known.end())
+            throw InputError("--method: unknown " + std::string(world) + " method '" + m +
+                             "' (known: " + KnownList(known) + ")");
     return methods;
 }
 
+std::vector<std::string> SpatialMethods(std::vector<std::string> methods) {
+    return MethodsOf(std::move(methods), spatial::SpatialMethodNames(), "3D");
+}
+
 std::vector<std::string> FlatlandMethods(std::vector<std::string> methods) {
-    if (methods.empty()) return flatland::FlatlandMethodNames();
-    for (const std::string& m : methods)
-        if (!flatland::IsFlatlandMethod(m))
-            throw InputError("--method: unknown flatland method '" + m +
-                             "' (known: " + KnownList(flatland::FlatlandMethodNames()) + ")");
-    return methods;
+    return MethodsOf(std::move(methods), flatland::FlatlandMethodNames(), "flatland");
 }
 
 // Errors a runner finds after loading get the case file's name in front, like the loader's own.

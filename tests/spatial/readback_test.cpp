@@ -18,14 +18,6 @@
 namespace lexel::spatial {
 namespace {
 
-Camera ReadbackCamera() {
-    Camera c;
-    c.position = {0.5, 1.7, 9.0};
-    c.target = {0.0, 0.5, 0.0};
-    c.resolution = {180, 180};
-    return c;
-}
-
 // The exact world point under screen point xs on the plane of triangle t.
 glm::dvec3 OnTrianglePlane(const TriangleMesh& mesh, std::int32_t t, const Camera& camera,
                            glm::dvec2 xs) {
@@ -39,7 +31,7 @@ TEST(Readback, DepthDerivativesAreExactOnPlanesAndDiscontinuitiesAreRejected) {
     TriangleMesh scene = testing::FloorQuad(30.0);
     scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
     const auto renderer = MakeCpuRenderer(scene);
-    const Camera camera = ReadbackCamera();
+    const Camera camera = testing::ReadbackCamera();
     const Readback rb = RenderReadback(*renderer, camera, camera.resolution);
     int smooth = 0, covered = 0, rejectedAtEdges = 0;
     const int w = 180;
@@ -162,7 +154,7 @@ TEST(Readback, FromADepthBufferAloneMatchesTheExactPass) {
     TriangleMesh scene = testing::FloorQuad(30.0);
     scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
     const auto renderer = MakeCpuRenderer(scene);
-    const Camera camera = ReadbackCamera();
+    const Camera camera = testing::ReadbackCamera();
     const glm::dmat4 screenFromWorld = camera.ScreenFromWorld(camera.resolution);
     const Readback exact = RenderReadback(*renderer, camera, camera.resolution);
     std::vector<float> depth(exact.buffer.windowDepth.begin(), exact.buffer.windowDepth.end());
@@ -209,7 +201,7 @@ TEST(Readback, FromADepthBufferAloneMatchesTheExactPass) {
 }
 
 TEST(Readback, DepthBufferOfTheWrongSizeIsRefused) {
-    const Camera camera = ReadbackCamera();
+    const Camera camera = testing::ReadbackCamera();
     const std::vector<float> depth(10, 0.5f);
     EXPECT_THROW(
         CameraBufferFromDepth(camera.resolution, depth, camera.ScreenFromWorld(camera.resolution)),

@@ -18,14 +18,6 @@
 namespace lexel::spatial {
 namespace {
 
-Camera ReadbackCamera() {
-    Camera c;
-    c.position = {0.5, 1.7, 9.0};
-    c.target = {0.0, 0.5, 0.0};
-    c.resolution = {180, 180};
-    return c;
-}
-
 TEST(Energy, SampleBadnessIsTheInverseJacobianFrobeniusNorm) {
     // u = (2 X1/X3, 3 X2/X3) with X = (x¹, x², 1) + small depth: J = diag(2, 3) at X3 = 1, so
     // ||J⁻¹||² = 1/4 + 1/9.
@@ -50,7 +42,7 @@ TEST(LightSamples, BoundarySamplesSitOnTheShadowEdge) {
     TriangleMesh scene = testing::FloorQuad(30.0);
     scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
     const auto renderer = MakeCpuRenderer(scene);
-    const Camera camera = ReadbackCamera();
+    const Camera camera = testing::ReadbackCamera();
     const Readback rb = RenderReadback(*renderer, camera, camera.resolution);
     Light light;
     light.position = {-20.0, 30.0, -10.0};
@@ -79,7 +71,7 @@ TEST(BoundedEnergy, EqualsEnergyBitForBitBelowTheBound) {
     TriangleMesh scene = testing::FloorQuad(30.0);
     scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
     const auto renderer = MakeCpuRenderer(scene);
-    const Camera camera = ReadbackCamera();
+    const Camera camera = testing::ReadbackCamera();
     const Readback rb = RenderReadback(*renderer, camera, camera.resolution);
     Light light;
     light.position = {-20.0, 30.0, -10.0};

@@ -7,6 +7,14 @@
 
 namespace lexel::spatial::testing {
 
+Camera ReadbackCamera() {
+    Camera c;
+    c.position = {0.5, 1.7, 9.0};
+    c.target = {0.0, 0.5, 0.0};
+    c.resolution = {180, 180};
+    return c;
+}
+
 TriangleMesh FloorQuad(double h) {
     Transform t;
     t.scale = {2.0 * h, 1.0, 2.0 * h};

@@ -9,6 +9,8 @@
 
 namespace lexel::spatial::testing {
 
+// A 180² camera at (0.5, 1.7, 9) looking at (0, 0.5, 0): the readback of the test scenes.
+Camera ReadbackCamera();
 // The square [-h, h]² at y = 0, normal +y.
 TriangleMesh FloorQuad(double halfSize);
 // The axis-aligned box [lo, hi], outward triangles.
