@@ -19,4 +19,5 @@
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/readback.h"
 #include "lexel/spatial/samples.h"
+#include "lexel/spatial/storage_factor.h"
 #include "lexel/spatial/temporal.h"
