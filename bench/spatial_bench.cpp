@@ -50,6 +50,7 @@
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/ray_caster.h"
 #include "lexel/spatial/harness/render_backend.h"
+#include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/samples.h"
 
@@ -253,7 +254,8 @@ struct Walkthrough {
     std::vector<PerLight> lights;
 
     BaselineContext Context(const LightSpace& lightSpace) const {
-        return MakeBaselineContext(scene, lightSpace, bounds, readback.wsRelevant);
+        return MakeBaselineContext(scene, lightSpace, bounds, readback.wsRelevant,
+                                   readback.wsRelevantHull);
     }
 };
 
@@ -433,6 +435,37 @@ BENCHMARK(BM_WalkthroughLightMatrix)
     ->DenseRange(kFocused, kNaive)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The fair comparison's cost (issue 12): per light, focused-tight alone against `optimal`, which
+// builds every start (focused-tight, lispsm-tight, psm-tight, normal, plane-optimal) and runs
+// Algorithm 1 from each, in one run and on one core; ratio = optimal / focused-tight.
+void BM_WalkthroughMultiStart(benchmark::State& state) {
+    tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
+    const Walkthrough& w = Case();
+    double tightMs = 0.0, optimalMs = 0.0, startsMs = 0.0;
+    for (auto _ : state) {
+        for (const PerLight& l : w.lights) {
+            BaselineContext context = w.Context(l.lightSpace);
+            context.samples = &l.samples;
+            auto start = std::chrono::steady_clock::now();
+            LightMatrix tight = FocusedTightLightMatrix(context);
+            benchmark::DoNotOptimize(tight);
+            tightMs += MsSince(start);
+            start = std::chrono::steady_clock::now();
+            const std::vector<OptimizerStart> starts = StandardStarts(context);
+            startsMs += MsSince(start);
+            MultiStartResult r = OptimizeFromStarts(l.samples, starts, w.scene.shadowMap);
+            benchmark::DoNotOptimize(r);
+            optimalMs += MsSince(start);
+        }
+    }
+    const double calls = static_cast<double>(state.iterations()) * w.lights.size();
+    state.counters["focused_tight_ms_per_light"] = tightMs / calls;
+    state.counters["optimal_ms_per_light"] = optimalMs / calls;
+    state.counters["starts_ms_per_light"] = startsMs / calls;
+    state.counters["ratio_optimal_to_focused_tight"] = optimalMs / tightMs;
+}
+BENCHMARK(BM_WalkthroughMultiStart)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // All four methods light by light in one run (ratios under the same conditions), plus the
 // Table 3-like split on one core.

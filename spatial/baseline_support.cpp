@@ -181,6 +181,42 @@ std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAx
     return out;
 }
 
+namespace {
+
+// The parameter t ≥ 0 where the ray x + t·d leaves the box [lo, hi] that contains x (slab test).
+double ExitDistance(const glm::dvec3& x, const glm::dvec3& d, const Bounds& box) {
+    double exit = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        if (d[k] > 0.0) exit = std::min(exit, (box.hi[k] - x[k]) / d[k]);
+        if (d[k] < 0.0) exit = std::min(exit, (box.lo[k] - x[k]) / d[k]);
+    }
+    return std::max(exit, 0.0);
+}
+
+std::span<const glm::dvec3> RelevantWorld(const BaselineContext& context) {
+    return context.wsRelevantHull.empty() ? context.wsRelevant : context.wsRelevantHull;
+}
+
+}  // namespace
+
+std::vector<glm::dvec3> TightBody(const BaselineContext& context) {
+    const LightSpace& ls = *context.lightSpace;
+    std::vector<glm::dvec3> body;
+    for (const glm::dvec3& x : RelevantWorld(context)) {
+        body.push_back(x);
+        const glm::dvec3 toLight = ls.DirectionToLight(x);
+        // A point light inside the swept range stops the sweep at the light itself.
+        const double reach =
+            std::min(ExitDistance(x, toLight, context.wsBounds), ls.DistanceToLight(x));
+        if (reach > 0.0 && std::isfinite(reach)) body.push_back(x + reach * toLight);
+    }
+    return body;
+}
+
+std::vector<glm::dvec3> RelevantLight(const BaselineContext& context) {
+    return ToLightAll(*context.lightSpace, RelevantWorld(context));
+}
+
 void CheckContext(const BaselineContext& context) {
     if (context.lightSpace == nullptr)
         throw std::invalid_argument("baselines: the context needs a light space");

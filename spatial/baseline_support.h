@@ -55,6 +55,15 @@ NormalAxis ChooseNormalAxis(const BaselineContext& context);
 // the normal axis p4 and δ half the smallest p4·X of the in-front bounds corners and relevant
 // points (so no point the map must see is cut), followed by the relevant points themselves.
 std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAxis& axis);
+// The body of the tight warps: the visible points' hull vertices (context.wsRelevantHull, or every
+// visible point) together with, for each, the point where the ray from it toward the light leaves
+// the scene bounds — a convex set holding every occluder that can shadow a visible point (it lies
+// on a segment from such a point to the light), so the warp built around it clips none.
+std::vector<glm::dvec3> TightBody(const BaselineContext& context);
+// The visible points the tight fits cover, in light space: the hull vertices when known (the same
+// bounds and rectangle as all points: optimizer.cpp), else every visible point.
+std::vector<glm::dvec3> RelevantLight(const BaselineContext& context);
+
 // δ above: the light-space depth along p4 below which nothing relevant lies (> 0).
 double LightPlaneOffset(const BaselineContext& context, const NormalAxis& axis);
 

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "lexel/solvers/convex_hull.h"
@@ -189,6 +190,67 @@ glm::dvec3 Slerp(const glm::dvec3& a, const glm::dvec3& b, double t) {
 
 }  // namespace
 
+namespace {
+
+// A plane-optimal candidate for axis p4: the refit over the relevant points, when it covers them
+// all and keeps them a texel above the horizon.
+std::optional<LightMatrix> PlaneOptimalCandidate(const glm::dvec3& p4,
+                                                 const std::vector<glm::dvec3>& lsRelevant,
+                                                 Resolution map) {
+    const auto m = FitMapToPoints(p4, lsRelevant, map);
+    if (!m || !CoversAll(*m, lsRelevant, map)) return std::nullopt;
+    if (HorizonClearanceTexels(*m, lsRelevant, map) < kHorizonTexels) return std::nullopt;
+    return m;
+}
+
+// The turn toward the focused axis (PlaneOptimalLightMatrix's header comment): t0 by bisection,
+// then the admissible fraction of least h (the smallest without samples).
+std::optional<LightMatrix> TurnTowardFocused(const BaselineContext& context, const glm::dvec3& p4,
+                                             const glm::dvec3& focusedP4,
+                                             const std::vector<glm::dvec3>& lsRelevant,
+                                             double* fraction) {
+    double lo = 0.0, hi = 1.0;  // 40 steps: the fraction to 1e-12
+    for (int step = 0; step < 40; ++step) {
+        const double mid = 0.5 * (lo + hi);
+        (AllInFrontWithMargin(Slerp(p4, focusedP4, mid), lsRelevant) ? hi : lo) = mid;
+    }
+    std::optional<LightMatrix> best;
+    double bestH = std::numeric_limits<double>::infinity();
+    constexpr int kSteps = 16;
+    for (int i = 0; i <= kSteps; ++i) {
+        const double t = hi + (1.0 - hi) * i / kSteps;
+        const auto m = PlaneOptimalCandidate(Slerp(p4, focusedP4, t), lsRelevant, context.map);
+        if (!m) continue;
+        const double h = context.samples ? Energy(*m, *context.samples) : 0.0;
+        if (!best || h < bestH) {
+            best = m;
+            bestH = h;
+            *fraction = t;
+        }
+        if (!context.samples) break;  // the smallest admissible fraction
+    }
+    return best;
+}
+
+}  // namespace
+
+double HorizonClearanceTexels(const LightMatrix& m, std::span<const glm::dvec3> lsPoints,
+                              Resolution map) {
+    const glm::dvec2 center(0.5 * map.width, 0.5 * map.height);
+    const glm::dvec3 x0 = glm::normalize(m.Unmap(center));
+    const double texelAngle =
+        std::min(std::acos(std::clamp(
+                     glm::dot(x0, glm::normalize(m.Unmap(center + glm::dvec2(1, 0)))), -1.0, 1.0)),
+                 std::acos(std::clamp(
+                     glm::dot(x0, glm::normalize(m.Unmap(center + glm::dvec2(0, 1)))), -1.0, 1.0)));
+    const double p4Length = glm::length(m.p4);
+    double least = std::numeric_limits<double>::infinity();
+    for (const glm::dvec3& X : lsPoints)
+        least = std::min(least, std::asin(std::clamp(
+                                    glm::dot(m.p4, X) / (p4Length * glm::length(X)), -1.0, 1.0)));
+    return least / texelAngle;
+}
+
 LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
                                     BaselineDiagnostics* diagnostics) {
     CheckContext(context);
@@ -203,32 +265,40 @@ LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
     std::string failure;  // the light on the floor plane (or rows not annihilating it)
     const std::optional<LightMatrix> projective = PlaneOptimalProjectiveMatrix(context, &failure);
     if (!projective) return fallBack(failure);
-    const std::vector<glm::dvec3> lsRelevant = ToLightAll(*context.lightSpace, context.wsRelevant);
+    // The hull vertices when known: their fit is every visible point's (optimizer.cpp).
+    const std::vector<glm::dvec3> lsRelevant = RelevantLight(context);
     if (lsRelevant.empty()) return fallBack("no relevant points to fit");
 
-    glm::dvec3 p4 = projective->p4;
-    if (!AllInFrontWithMargin(p4, lsRelevant)) {
-        // The report's observation that one map cannot serve every configuration: a relevant
-        // point off the plane whose shadow on the plane falls behind the camera is behind p4.
-        // Turn p4 toward the focused axis (which sees every relevant point) along the great
-        // circle, by the smallest fraction that sees them all with margin (bisection, 40 steps:
-        // the fraction to 1e-12).
-        const glm::dvec3 focusedP4 = ChooseNormalAxis(context).p4;
-        if (glm::dot(p4, focusedP4) < -1.0 + 1e-12 || !AllInFrontWithMargin(focusedP4, lsRelevant))
-            return fallBack("no great-circle turn toward the focused axis sees every point");
-        double lo = 0.0, hi = 1.0;
-        for (int step = 0; step < 40; ++step) {
-            const double mid = 0.5 * (lo + hi);
-            (AllInFrontWithMargin(Slerp(p4, focusedP4, mid), lsRelevant) ? hi : lo) = mid;
-        }
-        p4 = Slerp(p4, focusedP4, hi);
-        if (diagnostics) diagnostics->rotationFraction = hi;
-        Note(diagnostics, "plane-optimal: p4 turned toward focused by fraction " +
-                              std::to_string(hi) + " to see every relevant point");
-    }
-    const auto m = FitMapToPoints(p4, lsRelevant, context.map);
-    if (!m || !CoversAll(*m, lsRelevant, context.map))
-        return fallBack("the refit misses a relevant point");
+    const glm::dvec3 p4 = projective->p4;
+    if (AllInFrontWithMargin(p4, lsRelevant))
+        if (const auto m = PlaneOptimalCandidate(p4, lsRelevant, context.map)) return *m;
+    // The report's observation that one map cannot serve every configuration: a relevant point
+    // off the plane whose shadow on the plane falls behind the camera is behind p4, or so near
+    // its horizon that the map collapses. Turn p4 toward the focused axis, which sees them all.
+    const glm::dvec3 focusedP4 = ChooseNormalAxis(context).p4;
+    if (glm::dot(p4, focusedP4) < -1.0 + 1e-12 || !AllInFrontWithMargin(focusedP4, lsRelevant))
+        return fallBack("no great-circle turn toward the focused axis sees every point");
+    double fraction = 0.0;
+    const auto m = TurnTowardFocused(context, p4, focusedP4, lsRelevant, &fraction);
+    if (!m) return fallBack("no turn toward the focused axis keeps the points off the horizon");
+    if (diagnostics) diagnostics->rotationFraction = fraction;
+    Note(diagnostics, "plane-optimal: p4 turned toward focused by fraction " +
+                          std::to_string(fraction) + " to see every relevant point");
+    return *m;
+}
+
+LightMatrix FocusedTightLightMatrix(const BaselineContext& context,
+                                    BaselineDiagnostics* diagnostics) {
+    CheckContext(context);
+    const NormalAxis axis = ChooseNormalAxis(context);
+    Note(diagnostics, axis.fallback);
+    const std::vector<glm::dvec3> lsRelevant = RelevantLight(context);
+    FitOptions options;
+    options.margin = context.margin;
+    const auto m = FitMapToPoints(axis.p4, lsRelevant, context.map, options);
+    if (!m)
+        throw DomainError(Subject::kLight,
+                          "focused-tight: a visible point is behind the light's plane");
     return *m;
 }
 

@@ -40,6 +40,7 @@
 #include "lexel/spatial/camera.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
+#include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 
@@ -51,6 +52,14 @@ struct BaselineContext {
     Bounds wsBounds;                         // bounds of everything that casts or receives
     std::span<const glm::dvec3> wsRelevant;  // visible receiver points (world)
     std::optional<glm::dvec4> floorPlane;    // plane-optimal's plane n·x + d = 0, |n| = 1
+    // The vertices of the visible points' 3D convex hull (Readback::wsRelevantHull), when known:
+    // the tight baselines fit to them, which is fitting to every visible point (optimizer.cpp).
+    std::span<const glm::dvec3> wsRelevantHull;
+    // The boundary samples h (eq. 6) is summed over, when known: plane-optimal then chooses its
+    // fallback rotation by least h.
+    const LightSamples* samples = nullptr;
+    // The fraction the tight fits add to each half extent: Algorithm 1's (report §2.4).
+    double margin = 0.02;
 };
 
 // What a baseline did, for tests and reports. Fields a method does not use stay at their default.
@@ -87,6 +96,24 @@ LightMatrix NormalLightMatrix(const BaselineContext& context,
 LightMatrix FocusedLightMatrix(const BaselineContext& context,
                                BaselineDiagnostics* diagnostics = nullptr);
 
+// The tight baselines: each gets exactly what Algorithm 1 gets — the visible points (their hull),
+// the same margin — instead of the view frustum ∩ scene bounds the report-faithful ones fit.
+//   focused-tight  focused's axis (InitialLightAxis), the minimum-area rectangle around the
+//                  visible points grown by context.margin (Brabec et al. 2002 fit the light
+//                  frustum to the visible pixels): Algorithm 1's own starting map.
+//   lispsm-tight   LiSPSM's warp (below) for the tight body (the visible points' hull swept
+//                  toward the light to the scene bounds: every possible occluder), with its own
+//                  map axes scaled to the visible points' bounds grown by context.margin.
+//   psm-tight      PSM's post-perspective light frustum for the tight body, likewise.
+// Every point of wsRelevant maps into the map; a warp that fails falls back to focused-tight
+// (reason in diagnostics).
+LightMatrix FocusedTightLightMatrix(const BaselineContext& context,
+                                    BaselineDiagnostics* diagnostics = nullptr);
+LightMatrix LispsmTightLightMatrix(const BaselineContext& context,
+                                   BaselineDiagnostics* diagnostics = nullptr);
+LightMatrix PsmTightLightMatrix(const BaselineContext& context,
+                                BaselineDiagnostics* diagnostics = nullptr);
+
 // LiSPSM (directional lights directly, point lights through the light's perspective first).
 // Fallback to focused (reason in diagnostics): |sin γ| < 1e-3 (view along the light, where LiSPSM
 // itself reverts to the unwarped map), a body point or the eye behind a point light's plane,
@@ -103,13 +130,24 @@ LightMatrix PsmLightMatrix(const BaselineContext& context,
                            BaselineDiagnostics* diagnostics = nullptr);
 
 // Plane-optimal for context.floorPlane (DomainError, Subject::kGeometry, when there is none),
-// refitted over wsRelevant. When a relevant point is behind the plane-optimal p4 (off the plane,
-// its shadow on the plane behind the camera), p4 is turned toward the focused p4 along the great
-// circle by the smallest fraction that sees every relevant point (bisection, 40 steps; diagnostics'
+// refitted over wsRelevant. When a relevant point is not safely in front of the plane-optimal p4
+// (off the plane, its shadow on the plane behind the camera), p4 is turned toward the focused p4
+// along the great circle: of the fractions t = t0 + (1 - t0)·i/16, i = 0..16 (t0 the smallest
+// fraction that sees every point, by bisection), those whose fitted map keeps every visible point
+// at least one texel's angle above the horizon p4·X = 0 are candidates (kHorizonTexels), and the
+// one of least h over context.samples wins (the smallest when there are no samples; diagnostics'
 // rotationFraction). Fallback to focused: the light on the floor plane, no relevant points, or no
-// such fraction.
+// candidate.
 LightMatrix PlaneOptimalLightMatrix(const BaselineContext& context,
                                     BaselineDiagnostics* diagnostics = nullptr);
+
+// How far the points are above the horizon p4·X = 0 in texels: the least angle above it over the
+// points, over the angle one texel subtends at the map's centre. Below 1 a point sits within one
+// texel of the horizon, where the map's texels stretch without bound.
+double HorizonClearanceTexels(const LightMatrix& m, std::span<const glm::dvec3> lsPoints,
+                              Resolution map);
+// plane-optimal's least clearance (dimensionless, in texels).
+inline constexpr double kHorizonTexels = 1.0;
 
 // The plane-optimal matrix before the affine refit: for A = identity, a floor point seen at
 // screen point x (pixels of context.map's size) maps to u = x. nullopt, with the reason in

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "lexel/solvers/min_area_parallelogram.h"
@@ -161,6 +162,30 @@ std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
     detail::AffineRowsFromFrame(&p4[0], &b1[0], &b2[0], frame, map, options.margin, &m.p1[0],
                                 &m.p2[0]);
     return m;
+}
+
+std::optional<LightMatrix> ScaleMapToCover(const LightMatrix& matrix,
+                                           std::span<const glm::dvec3> lsPoints, Resolution map,
+                                           double margin) {
+    if (lsPoints.empty()) return std::nullopt;
+    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const glm::dvec3& X : lsPoints) {
+        if (!InFront(matrix.p4, X)) return std::nullopt;
+        const glm::dvec2 u = matrix.Map(X);
+        lo = glm::min(lo, u);
+        hi = glm::max(hi, u);
+    }
+    const glm::dvec2 center = 0.5 * (lo + hi);
+    const glm::dvec2 half = glm::max(0.5 * (hi - lo) * (1.0 + margin), glm::dvec2(1e-12));
+    // u' = W/2 + (u - c) · W/(2 half): a scale and a shift per axis.
+    const glm::dvec2 scale(0.5 * map.width / half.x, 0.5 * map.height / half.y);
+    glm::dmat3 a(0.0);
+    a[0][0] = scale.x;
+    a[1][1] = scale.y;
+    a[2][0] = 0.5 * map.width - scale.x * center.x;
+    a[2][1] = 0.5 * map.height - scale.y * center.y;
+    a[2][2] = 1.0;
+    return matrix.ThenAffine(a);
 }
 
 std::optional<std::vector<glm::dvec2>> ProjectToPlaneInFront(const glm::dvec3& p4,

@@ -59,6 +59,14 @@ std::optional<LightMatrix> FromScreenRows(const LightSpace& lightSpace,
 // ε = 1e-9 (dimensionless; guards against points on the horizon that would map to ±huge texels).
 bool InFront(const glm::dvec3& p4, const glm::dvec3& lsX);
 
+// The matrix with its map scaled and shifted along its own axes (not rotated) so that the
+// axis-aligned bounds of the points' images, each half extent grown by `margin`, fill
+// [0, W] × [0, H] texels. nullopt when a point is not InFront of p4 or there are none. A zero
+// extent gets a sliver of 1e-12 map units.
+std::optional<LightMatrix> ScaleMapToCover(const LightMatrix& matrix,
+                                           std::span<const glm::dvec3> lsPoints, Resolution map,
+                                           double margin);
+
 // The central projections y = (b1·X, b2·X) / (p4·X) of the points onto the plane p4·X = 1, in the
 // basis PlaneBasis(p4) FitMapToPlanePoints expects; nullopt when a point is not InFront of p4.
 std::optional<std::vector<glm::dvec2>> ProjectToPlaneInFront(const glm::dvec3& p4,

@@ -16,6 +16,7 @@
 #include "lexel/spatial/energy_gradient.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
+#include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/readback.h"
 #include "lexel/spatial/samples.h"

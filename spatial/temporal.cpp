@@ -21,25 +21,8 @@ double MedianBadness(const LightMatrix& matrix, const LightSamples& samples) {
 
 std::optional<LightMatrix> RescaleToCover(const LightMatrix& previous, const LightSamples& samples,
                                           Resolution map, double margin) {
-    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-    for (const glm::dvec3& X : samples.lsRelevant) {
-        if (!InFront(previous.p4, X)) return std::nullopt;
-        const glm::dvec2 u = previous.Map(X);
-        lo = glm::min(lo, u);
-        hi = glm::max(hi, u);
-    }
     if (samples.lsRelevant.empty()) return previous;
-    const glm::dvec2 center = 0.5 * (lo + hi);
-    const glm::dvec2 half = glm::max(0.5 * (hi - lo) * (1.0 + margin), glm::dvec2(1e-12));
-    // u' = W/2 + (u - c) · W/(2 half): a scale and a shift per axis.
-    const glm::dvec2 scale(0.5 * map.width / half.x, 0.5 * map.height / half.y);
-    glm::dmat3 a(0.0);
-    a[0][0] = scale.x;
-    a[1][1] = scale.y;
-    a[2][0] = 0.5 * map.width - scale.x * center.x;
-    a[2][1] = 0.5 * map.height - scale.y * center.y;
-    a[2][2] = 1.0;
-    return previous.ThenAffine(a);
+    return ScaleMapToCover(previous, samples.lsRelevant, map, margin);
 }
 
 HysteresisDecision ApplyHysteresis(const std::optional<LightMatrix>& previous,

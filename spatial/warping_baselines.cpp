@@ -34,6 +34,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "lexel/spatial/baseline_support.h"
@@ -92,8 +93,24 @@ std::optional<LightMatrix> RefitOverBody(const BaselineContext& context, const g
     return m;
 }
 
+// A tight warp's map: the warp's own axes, scaled and shifted so that the visible points' bounds
+// (grown by the context's margin) fill the map; focused-tight where the warp failed.
+LightMatrix FitTight(const BaselineContext& context, const std::optional<LightMatrix>& warped,
+                     const char* method, const std::string& failure,
+                     BaselineDiagnostics* diagnostics) {
+    std::string why = failure;
+    if (warped) {
+        const auto m =
+            ScaleMapToCover(*warped, RelevantLight(context), context.map, context.margin);
+        if (m && CoversAll(*m, RelevantLight(context), context.map)) return *m;
+        why = "the warp leaves a visible point behind its plane";
+    }
+    Note(diagnostics, std::string(method) + ": " + why + "; using focused-tight");
+    return FocusedTightLightMatrix(context, diagnostics);
+}
+
 // Body depths along the unit view direction from the eye: [min, max] over the body.
-void DepthRange(const std::vector<glm::dvec3>& body, const glm::dvec3& eye, const glm::dvec3& view,
+void DepthRange(std::span<const glm::dvec3> body, const glm::dvec3& eye, const glm::dvec3& view,
                 double* zNear, double* zFar) {
     *zNear = std::numeric_limits<double>::infinity();
     *zFar = -std::numeric_limits<double>::infinity();
@@ -104,36 +121,23 @@ void DepthRange(const std::vector<glm::dvec3>& body, const glm::dvec3& eye, cons
     }
 }
 
-}  // namespace
-
-double LispsmOptimalNear(double zNear, double zFar, double sinGamma) {
-    return (zNear + std::sqrt(zFar * zNear)) / sinGamma;
-}
-
-double PsmSlideBack(double zNear, double zFar) {
-    const double rho = kPsmMinNearFarRatio;
-    return std::max(0.0, (rho * zFar - zNear) / (1.0 - rho));
-}
-
-Camera PsmVirtualCamera(const Camera& camera, double zNear, double zFar, double slideBack) {
-    Camera virtualCamera = camera;
-    const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
-    virtualCamera.position -= slideBack * forward;
-    virtualCamera.target -= slideBack * forward;
-    virtualCamera.nearPlane = zNear + slideBack;
-    virtualCamera.farPlane = zFar + slideBack;
-    return virtualCamera;
-}
-
-LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
-    const WarpStart start(context, diagnostics, "lispsm");
-    const auto fallBack = [&](const std::string& why) { return start.FallBack(why); };
-    if (start.wsBody.empty()) return fallBack("empty focus body");
+// LiSPSM's warp for a body (the header comment): the light matrix whose rows are the warp's own
+// map axes (frustum x, frustum depth) and whose p4 is its optical axis; nullopt, with the reason
+// in *failure, where the construction degenerates. The frustum holds wsBody; n_opt comes from
+// the depths z_n, z_f of wsDepthBody along the view direction (the body itself for the report's
+// LiSPSM, the visible points for lispsm-tight, whose body reaches toward the light and may pass
+// behind the eye).
+std::optional<LightMatrix> LispsmWarp(const BaselineContext& context, const NormalAxis& axis,
+                                      const std::vector<glm::dvec3>& wsBody,
+                                      std::span<const glm::dvec3> wsDepthBody,
+                                      BaselineDiagnostics* diagnostics, std::string* failure) {
+    const auto fail = [&](const std::string& why) -> std::optional<LightMatrix> {
+        *failure = why;
+        return std::nullopt;
+    };
+    if (wsBody.empty()) return fail("empty focus body");
     const LightSpace& ls = *context.lightSpace;
     const Camera& camera = context.camera;
-    const NormalAxis& axis = start.axis;
-    const std::vector<glm::dvec3>& wsBody = start.wsBody;
-
     // H: world → the space where the light travels along +z (rows act on [x; 1]).
     glm::dmat4 dFromWorld;
     if (ls.IsPoint()) {
@@ -151,9 +155,9 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostic
         const glm::dvec3 g3 = worldFromLight * axis.p4, wsLight = ls.light().position;
         for (const glm::dvec3& x : wsBody)
             if (!(glm::dot(g3, x - wsLight) > 0.0))
-                return fallBack("the body reaches the light's plane");
+                return fail("the body reaches the light's plane");
         const double w0 = glm::dot(g3, camera.position - wsLight);
-        if (!(w0 > 0.0)) return fallBack("the eye is behind the light's plane");
+        if (!(w0 > 0.0)) return fail("the eye is behind the light's plane");
         dFromWorld =
             FromRows(glm::dvec4(w0 * g1, -w0 * glm::dot(g1, wsLight)),
                      glm::dvec4(w0 * g2, -w0 * glm::dot(g2, wsLight)),
@@ -173,10 +177,10 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostic
     };
     bool ok = true;
     const glm::dvec3 eyeD = toD(camera.position, &ok);
-    if (!ok) return fallBack("the eye is behind the light's plane");
+    if (!ok) return fail("the eye is behind the light's plane");
     std::vector<glm::dvec3> bodyD;
     for (const glm::dvec3& x : wsBody) bodyD.push_back(toD(x, &ok));
-    if (!ok) return fallBack("a body point is behind the light's plane");
+    if (!ok) return fail("a body point is behind the light's plane");
     // The view direction through H's Jacobian at the eye: d/dt of dehom(H [eye + t v; 1]).
     const glm::dvec3 wsView = glm::normalize(camera.target - camera.position);
     const glm::dvec4 hEye = dFromWorld * glm::dvec4(camera.position, 1.0);
@@ -188,12 +192,15 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostic
     const double sinGamma = std::hypot(viewD.x, viewD.y);
     if (diagnostics) diagnostics->sinGamma = sinGamma;
     if (!(sinGamma >= kLispsmMinSinGamma))
-        return fallBack("view direction within ~0.06° of the light direction");
+        return fail("view direction within ~0.06° of the light direction");
     const glm::dvec3 axisF(viewD.x / sinGamma, viewD.y / sinGamma, 0.0);  // projected view dir
 
+    std::vector<glm::dvec3> depthBodyD;
+    for (const glm::dvec3& x : wsDepthBody) depthBodyD.push_back(toD(x, &ok));
+    if (!ok) return fail("a body point is behind the light's plane");
     double zNear, zFar;
-    DepthRange(bodyD, eyeD, viewD, &zNear, &zFar);
-    if (!(zFar > 0.0)) return fallBack("the body is behind the eye");
+    DepthRange(depthBodyD, eyeD, viewD, &zNear, &zFar);
+    if (!(zFar > 0.0)) return fail("the body is behind the eye");
     // The camera's near plane clamped to the body: the body lies inside the view frustum, so for a
     // directional light (rigid H) zNear ≥ camera.nearPlane already; the 1e-6 floor (relative to
     // z_f) only keeps n_opt > 0 where H bends the depths of a point light's body.
@@ -224,29 +231,33 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostic
                  glm::dvec4(depthA * axisF, -depthA * glm::dot(axisF, center) + depthB),
                  glm::dvec4(lightAxis, -glm::dot(lightAxis, center)),
                  glm::dvec4(axisF, -glm::dot(axisF, center)));
-    std::string failure;
+    std::string rowsFailure;
     const std::optional<LightMatrix> warped =
-        FromScreenRows(ls, warp * dFromWorld, Centroid(wsBody), &failure);
-    if (!warped) return fallBack("light matrix: " + failure);
-    const auto m = RefitOverBody(context, warped->p4, wsBody);
-    if (!m) return fallBack("the warp's p4 leaves a body or relevant point behind or outside");
-    return *m;
+        FromScreenRows(ls, warp * dFromWorld, Centroid(wsBody), &rowsFailure);
+    if (!warped) return fail("light matrix: " + rowsFailure);
+    return warped;
 }
 
-LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
-    const WarpStart start(context, diagnostics, "psm");
-    const auto fallBack = [&](const std::string& why) { return start.FallBack(why); };
-    if (start.wsBody.empty()) return fallBack("empty focus body");
+// PSM's light frustum in the camera's post-perspective space for a body (the header comment), as
+// a light matrix whose rows are that frustum's map axes; nullopt, with the reason in *failure.
+std::optional<LightMatrix> PsmWarp(const BaselineContext& context,
+                                   const std::vector<glm::dvec3>& wsBody,
+                                   BaselineDiagnostics* diagnostics, std::string* failure) {
+    const auto fail = [&](const std::string& why) -> std::optional<LightMatrix> {
+        *failure = why;
+        return std::nullopt;
+    };
+    if (wsBody.empty()) return fail("empty focus body");
     const LightSpace& ls = *context.lightSpace;
     const Camera& camera = context.camera;
-    const std::vector<glm::dvec3>& wsBody = start.wsBody;
-
     const glm::dvec3 wsView = glm::normalize(camera.target - camera.position);
     double zNear, zFar;
     DepthRange(wsBody, camera.position, wsView, &zNear, &zFar);
-    if (!(zFar > 0.0)) return fallBack("the body is behind the eye");
-    // The body lies in the view frustum, so zNear ≥ camera.nearPlane up to clipping rounding.
-    zNear = std::max(zNear, 0.5 * camera.nearPlane);
+    if (!(zFar > 0.0)) return fail("the body is behind the eye");
+    // The report's body lies in the view frustum, so zNear ≥ camera.nearPlane up to rounding.
+    // A tight body swept toward a light behind the viewer reaches behind the eye (zNear ≤ 0):
+    // the slide back then moves the virtual camera behind it (Kozlov's virtual camera).
+    if (zNear > 0.0) zNear = std::max(zNear, 0.5 * camera.nearPlane);
     zFar = std::max(zFar, zNear * (1.0 + 1e-9));
     const double slideBack = PsmSlideBack(zNear, zFar);
     const Camera virtualCamera = PsmVirtualCamera(camera, zNear, zFar, slideBack);
@@ -267,7 +278,7 @@ LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* 
     std::vector<glm::dvec3> ppsBody;
     for (const glm::dvec3& x : wsBody) {
         const glm::dvec4 h = clipFromWorld * glm::dvec4(x, 1.0);
-        if (!(h.w > 0.0)) return fallBack("a body point is behind the virtual camera");
+        if (!(h.w > 0.0)) return fail("a body point is behind the virtual camera");
         ppsBody.push_back(glm::dvec3(h) / h.w);
     }
     // The directions ℓw p - ℓ from the light to the NDC body (sign included: for ℓw < 0 they point
@@ -276,11 +287,11 @@ LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* 
     for (const glm::dvec3& p : ppsBody) {
         const glm::dvec3 d = ellW * p - ell;
         const double len = glm::length(d);
-        if (!(len > 0.0)) return fallBack("the light sits on the NDC body");
+        if (!(len > 0.0)) return fail("the light sits on the NDC body");
         directions.push_back(d / len);
     }
     const auto axisA = NarrowestConeAxis(directions);
-    if (!axisA) return fallBack("no light frustum in NDC holds the whole body");
+    if (!axisA) return fail("no light frustum in NDC holds the whole body");
     const glm::dvec3 a = *axisA;
     glm::dvec3 ppsInside(0.0);  // a body point with a·(ℓw p - ℓ) > 0, to orient p4 below
     double best = -1.0;
@@ -297,14 +308,74 @@ LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* 
     // Row 4 is positive at ppsInside; hand FromScreenRows that point's world preimage so that it
     // orients p4 the same way.
     const glm::dvec4 wsInsideH = glm::inverse(clipFromWorld) * glm::dvec4(ppsInside, 1.0);
-    if (!(std::abs(wsInsideH.w) > 0.0)) return fallBack("degenerate NDC body point");
-    std::string failure;
+    if (!(std::abs(wsInsideH.w) > 0.0)) return fail("degenerate NDC body point");
+    std::string rowsFailure;
     const std::optional<LightMatrix> warped = FromScreenRows(
-        ls, lightFromPps * clipFromWorld, glm::dvec3(wsInsideH) / wsInsideH.w, &failure);
-    if (!warped) return fallBack("light matrix: " + failure);
-    const auto m = RefitOverBody(context, warped->p4, wsBody);
-    if (!m) return fallBack("the NDC light frustum leaves a body or relevant point behind");
+        ls, lightFromPps * clipFromWorld, glm::dvec3(wsInsideH) / wsInsideH.w, &rowsFailure);
+    if (!warped) return fail("light matrix: " + rowsFailure);
+    return warped;
+}
+
+}  // namespace
+
+double LispsmOptimalNear(double zNear, double zFar, double sinGamma) {
+    return (zNear + std::sqrt(zFar * zNear)) / sinGamma;
+}
+
+double PsmSlideBack(double zNear, double zFar) {
+    const double rho = kPsmMinNearFarRatio;
+    return std::max(0.0, (rho * zFar - zNear) / (1.0 - rho));
+}
+
+Camera PsmVirtualCamera(const Camera& camera, double zNear, double zFar, double slideBack) {
+    Camera virtualCamera = camera;
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
+    virtualCamera.position -= slideBack * forward;
+    virtualCamera.target -= slideBack * forward;
+    virtualCamera.nearPlane = zNear + slideBack;
+    virtualCamera.farPlane = zFar + slideBack;
+    return virtualCamera;
+}
+
+LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
+    const WarpStart start(context, diagnostics, "lispsm");
+    std::string failure;
+    const std::optional<LightMatrix> warped =
+        LispsmWarp(context, start.axis, start.wsBody, start.wsBody, diagnostics, &failure);
+    if (!warped) return start.FallBack(failure);
+    const auto m = RefitOverBody(context, warped->p4, start.wsBody);
+    if (!m)
+        return start.FallBack("the warp's p4 leaves a body or relevant point behind or outside");
     return *m;
+}
+
+LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
+    const WarpStart start(context, diagnostics, "psm");
+    std::string failure;
+    const std::optional<LightMatrix> warped = PsmWarp(context, start.wsBody, diagnostics, &failure);
+    if (!warped) return start.FallBack(failure);
+    const auto m = RefitOverBody(context, warped->p4, start.wsBody);
+    if (!m) return start.FallBack("the NDC light frustum leaves a body or relevant point behind");
+    return *m;
+}
+
+LightMatrix LispsmTightLightMatrix(const BaselineContext& context,
+                                   BaselineDiagnostics* diagnostics) {
+    CheckContext(context);
+    std::string failure;
+    const std::optional<LightMatrix> warped =
+        LispsmWarp(context, ChooseNormalAxis(context), TightBody(context),
+                   context.wsRelevantHull.empty() ? context.wsRelevant : context.wsRelevantHull,
+                   diagnostics, &failure);
+    return FitTight(context, warped, "lispsm-tight", failure, diagnostics);
+}
+
+LightMatrix PsmTightLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {
+    CheckContext(context);
+    std::string failure;
+    const std::optional<LightMatrix> warped =
+        PsmWarp(context, TightBody(context), diagnostics, &failure);
+    return FitTight(context, warped, "psm-tight", failure, diagnostics);
 }
 
 }  // namespace lexel::spatial

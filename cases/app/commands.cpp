@@ -164,7 +164,11 @@ int SweepCommand(const SweepFlags& flags) {
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     const SweepResult r = WithCaseName(casePath, [&] {
-        const std::vector<spatial::Light> lights = SweepLightsOf(scene, flags.lights);
+        std::optional<spatial::Light::Type> type;
+        if (!flags.lightType.empty())
+            type = flags.lightType == "point" ? spatial::Light::Type::kPoint
+                                              : spatial::Light::Type::kDirectional;
+        const std::vector<spatial::Light> lights = SweepLightsOf(scene, flags.lights, type);
         Progress bar("sweep", lights.size(), "lights");
         return RunSweep(scene, methods, lights, [&] { bar.Step(); });
     });

@@ -27,6 +27,7 @@ int RunCommand(const RunFlags& flags);
 struct SweepFlags {
     std::string casePath;
     int lights = 0;                    // 0: the case's light_sweep count
+    std::string lightType;             // point | directional; empty: the case's
     std::vector<std::string> methods;  // empty: all
     std::string format = "table";      // table | markdown | csv | json
     std::string outDir;

@@ -1,7 +1,8 @@
 // lexel — the command line. Subcommands:
 //   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv]
 //             [--out DIR] [--no-map-truth]          flatland and 3D cases alike
-//   lexel sweep CASE.json [--lights N] [--methods NAME...] [--format table|markdown|csv|json]
+//   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--methods NAME...]
+//             [--format table|markdown|csv|json]
 //             [--out DIR]                           the 3D report's Table 1
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
@@ -41,7 +42,7 @@ int main(int argc, char** argv) {
 
     auto* sweep = app.add_subcommand(
         "sweep", "3D: evaluate every method over the case's light sweep (report Table 1)");
-    std::string sweepCase, sweepFormat = "table", sweepOut;
+    std::string sweepCase, sweepFormat = "table", sweepOut, sweepLightType;
     std::vector<std::string> sweepMethods;
     int sweepLights = 0;
     sweep->add_option("case", sweepCase, "3D case file (JSON) with a light_sweep")
@@ -49,6 +50,10 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingFile);
     sweep->add_option("--lights", sweepLights, "Number of hemisphere lights (default: the case's)")
         ->check(CLI::Range(1, 100000));
+    sweep
+        ->add_option("--light-type", sweepLightType,
+                     "Sweep point or directional lights (default: the case's light_sweep type)")
+        ->check(CLI::IsMember({"point", "directional"}));
     sweep->add_option("--methods,--method", sweepMethods, "Methods to run (default: all)");
     sweep->add_option("--format", sweepFormat, "Output format")
         ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
@@ -83,7 +88,7 @@ int main(int argc, char** argv) {
                                       format, runOut, !noMapTruth});
         if (*sweep)
             return cases::SweepCommand(
-                {sweepCase, sweepLights, sweepMethods, sweepFormat, sweepOut});
+                {sweepCase, sweepLights, sweepLightType, sweepMethods, sweepFormat, sweepOut});
         if (*tables) return cases::TablesCommand(tablesOut, casesDir);
         if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);
     } catch (const InputError& e) {

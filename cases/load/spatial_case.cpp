@@ -146,7 +146,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
 
     if (root.Has("light_sweep")) {
         const JsonField sweep = root["light_sweep"];
-        sweep.ExpectObject({}, {"count", "seed", "radius"});
+        sweep.ExpectObject({}, {"count", "seed", "radius", "type"});
         spatial::LightSweep lightSweep;
         if (sweep.Has("count"))
             lightSweep.count = static_cast<int>(sweep["count"].Integer(1, 100000));
@@ -154,6 +154,13 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
             lightSweep.seed = static_cast<std::uint64_t>(
                 sweep["seed"].Integer(0, std::numeric_limits<long long>::max()));
         if (sweep.Has("radius")) lightSweep.radius = sweep["radius"].Positive();
+        if (sweep.Has("type")) {
+            const std::string type = sweep["type"].String();
+            if (type != "point" && type != "directional")
+                sweep["type"].Fail("must be point or directional, got '" + type + "'");
+            lightSweep.type =
+                type == "point" ? spatial::Light::Type::kPoint : spatial::Light::Type::kDirectional;
+        }
         scene.lightSweep = lightSweep;
     }
     if (root.Has("lights")) {

@@ -8,15 +8,50 @@
 #include <sstream>
 
 #include "lexel/cases/report/text_table.h"
+#include "lexel/spatial/harness/methods.h"
 
 namespace lexel::cases {
 namespace {
 
 using spatial::Light;
 
-std::size_t ReferenceIndex(const SweepResult& r) {
-    const auto it = std::find(r.methods.begin(), r.methods.end(), "optimal");
-    return it == r.methods.end() ? 0 : static_cast<std::size_t>(it - r.methods.begin());
+// A table over some of the sweep's methods: indices into SweepResult::methods in display order,
+// and the reference the percentages are taken against.
+struct View {
+    std::vector<std::size_t> methods;
+    std::size_t reference = 0;
+};
+
+bool Contains(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The methods of `names` the sweep ran, in the order of `names`; the reference is `preferred`
+// when it ran, else the first of them. nullopt when none ran.
+std::optional<View> ViewOf(const SweepResult& r, const std::vector<std::string>& names,
+                           const std::string& preferred) {
+    View view;
+    for (const std::string& name : names)
+        for (std::size_t m = 0; m < r.methods.size(); ++m)
+            if (r.methods[m] == name) view.methods.push_back(m);
+    if (view.methods.empty()) return std::nullopt;
+    view.reference = view.methods.front();
+    for (std::size_t m : view.methods)
+        if (r.methods[m] == preferred) view.reference = m;
+    return view;
+}
+
+// Table 1 as published: the report-faithful methods in its column order, against optimal-report.
+std::optional<View> ReportView(const SweepResult& r) {
+    return ViewOf(r, spatial::ReportMethodNames(), "optimal-report");
+}
+
+// The fair comparison, against optimal: its methods, then any other that is not report-only.
+std::optional<View> FairView(const SweepResult& r) {
+    std::vector<std::string> names = spatial::FairMethodNames();
+    for (const std::string& m : r.methods)
+        if (!Contains(names, m) && !Contains(spatial::ReportMethodNames(), m)) names.push_back(m);
+    return ViewOf(r, names, "optimal");
 }
 
 // The lights in a method's worst 10% (at least one), ties broken by light index.
@@ -33,24 +68,29 @@ std::vector<std::size_t> WorstLights(const SweepResult& r, std::size_t method) {
 
 struct Row {
     std::string set;           // "all" or the ranking method
-    std::vector<double> mean;  // per method: mean misclassified over the set
+    std::vector<double> mean;  // per method of the sweep: mean misclassified over the set
 };
 
-std::vector<Row> Table1Rows(const SweepResult& r) {
-    std::vector<Row> rows;
+std::vector<double> MeanOver(const SweepResult& r, const std::vector<std::size_t>& lights) {
+    std::vector<double> mean(r.methods.size(), 0.0);
+    for (std::size_t m = 0; m < r.methods.size(); ++m) {
+        for (std::size_t l : lights) mean[m] += r.cells[l][m].misclassified;
+        mean[m] /= std::max<std::size_t>(1, lights.size());
+    }
+    return mean;
+}
+
+std::vector<std::size_t> AllLights(const SweepResult& r) {
     std::vector<std::size_t> all(r.lights.size());
     std::iota(all.begin(), all.end(), 0);
-    const auto meanOver = [&](const std::vector<std::size_t>& set) {
-        std::vector<double> mean(r.methods.size(), 0.0);
-        for (std::size_t m = 0; m < r.methods.size(); ++m) {
-            for (std::size_t l : set) mean[m] += r.cells[l][m].misclassified;
-            mean[m] /= std::max<std::size_t>(1, set.size());
-        }
-        return mean;
-    };
-    rows.push_back({"all", meanOver(all)});
-    for (std::size_t m = 0; m < r.methods.size(); ++m)
-        rows.push_back({r.methods[m], meanOver(WorstLights(r, m))});
+    return all;
+}
+
+// Table 1's rows: all lights, then each method's worst 10%.
+std::vector<Row> Table1Rows(const SweepResult& r, const View& view) {
+    std::vector<Row> rows = {{"all", MeanOver(r, AllLights(r))}};
+    for (std::size_t m : view.methods)
+        rows.push_back({r.methods[m], MeanOver(r, WorstLights(r, m))});
     return rows;
 }
 
@@ -65,47 +105,71 @@ std::string Cell(double value, double reference, bool isReference) {
     return Fixed(value, 0) + " (" + (pct >= 0 ? "+" : "") + Fixed(pct, 2) + "%)";
 }
 
+// Our name of a method in the report's Table 1: its optimal is our optimal-report.
+std::string PublishedName(const std::string& ours) {
+    return ours == "optimal-report" ? "optimal" : ours;
+}
+
 // The report's cells for our set and methods, or empty where it has none.
 std::vector<std::string> ReportCells(const ReportTable1& report, const std::string& set,
-                                     const std::vector<std::string>& ours) {
+                                     const SweepResult& r, const View& view) {
     std::vector<std::string> cells;
-    const ReportTable1::Row* row = report.Find(set);
+    const ReportTable1::Row* row = report.Find(PublishedName(set));
     if (!row) return cells;
-    for (const std::string& m : ours) {
-        const std::optional<std::size_t> c = report.Column(m);
+    for (std::size_t m : view.methods) {
+        const std::string name = PublishedName(r.methods[m]);
+        const std::optional<std::size_t> c = report.Column(name);
         if (!c) {
             cells.push_back("");
             continue;
         }
-        cells.push_back(Fixed(row->misclassified[*c], 0) +
-                        (m == "optimal" ? " (0)" : " (+" + Fixed(row->percentMore[*c], 2) + "%)"));
+        cells.push_back(
+            Fixed(row->misclassified[*c], 0) +
+            (name == "optimal" ? " (0)" : " (+" + Fixed(row->percentMore[*c], 2) + "%)"));
     }
     return cells;
 }
 
 struct MethodSummary {
+    double meanMisclassified = 0.0;
     double meanH = 0.0;  // over lights where h is finite
     std::int64_t infiniteH = 0;
     double meanMs = 0.0;
+    double beatingPercent = 0.0;  // % of lights with fewer misclassified pixels than the reference
+    // % of the lights where the two differ in misclassified pixels on which h orders this method
+    // and the reference the same way (is h the right proxy?); NaN for the reference itself.
+    double hAgreesPercent = std::numeric_limits<double>::quiet_NaN();
+    double grazingShare = 0.0;  // mean over lights of the part of h from grazing samples
 };
 
-std::vector<MethodSummary> Summaries(const SweepResult& r) {
-    std::vector<MethodSummary> out(r.methods.size());
-    for (std::size_t m = 0; m < r.methods.size(); ++m) {
-        std::size_t finite = 0;
-        for (const auto& light : r.cells) {
-            const SweepCell& c = light[m];
-            if (std::isfinite(c.h)) {
-                out[m].meanH += c.h;
-                ++finite;
-            } else {
-                ++out[m].infiniteH;
-            }
-            out[m].meanMs += c.ms;
+MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t reference) {
+    MethodSummary out;
+    std::size_t finite = 0, beating = 0, differ = 0, agree = 0;
+    for (const auto& light : r.cells) {
+        const SweepCell& c = light[m];
+        const SweepCell& ref = light[reference];
+        if (m != reference && c.misclassified != ref.misclassified) {
+            ++differ;
+            agree += (c.h < ref.h) == (c.misclassified < ref.misclassified);
         }
-        out[m].meanH = finite ? out[m].meanH / finite : std::numeric_limits<double>::infinity();
-        out[m].meanMs /= std::max<std::size_t>(1, r.cells.size());
+        if (std::isfinite(c.h) && c.h > 0.0) out.grazingShare += c.hGrazing / c.h;
+        out.meanMisclassified += c.misclassified;
+        if (std::isfinite(c.h)) {
+            out.meanH += c.h;
+            ++finite;
+        } else {
+            ++out.infiniteH;
+        }
+        out.meanMs += c.ms;
+        beating += c.misclassified < light[reference].misclassified;
     }
+    const double lights = static_cast<double>(std::max<std::size_t>(1, r.cells.size()));
+    out.meanMisclassified /= lights;
+    out.meanH = finite ? out.meanH / finite : std::numeric_limits<double>::infinity();
+    out.meanMs /= lights;
+    out.beatingPercent = 100.0 * beating / lights;
+    if (differ) out.hAgreesPercent = 100.0 * agree / differ;
+    out.grazingShare = finite ? out.grazingShare / finite : 0.0;
     return out;
 }
 
@@ -113,72 +177,155 @@ std::string SetLabel(const std::string& set) {
     return set == "all" ? "all lights" : "worst 10% by " + set;
 }
 
-TextTable MisclassifiedTable(const SweepResult& r, const ReportTable1* report) {
+TextTable MisclassifiedTable(const SweepResult& r, const View& view, const ReportTable1& report) {
     std::vector<std::string> header = {"lights"};
-    header.insert(header.end(), r.methods.begin(), r.methods.end());
+    for (std::size_t m : view.methods) header.push_back(r.methods[m]);
     TextTable table(header);
-    const std::size_t ref = ReferenceIndex(r);
-    const bool compareToReport = report && r.methods[ref] == "optimal";
-    for (const Row& row : Table1Rows(r)) {
+    const bool compareToReport = r.methods[view.reference] == "optimal-report";
+    for (const Row& row : Table1Rows(r, view)) {
         std::vector<std::string> cells = {SetLabel(row.set)};
-        for (std::size_t m = 0; m < r.methods.size(); ++m)
-            cells.push_back(Cell(row.mean[m], row.mean[ref], m == ref));
+        for (std::size_t m : view.methods)
+            cells.push_back(Cell(row.mean[m], row.mean[view.reference], m == view.reference));
         table.AddRow(cells);
         if (compareToReport) {
-            std::vector<std::string> cells = ReportCells(*report, row.set, r.methods);
-            if (!cells.empty()) {
-                cells.insert(cells.begin(), "  report (Table 1)");
-                table.AddRow(cells);
+            std::vector<std::string> published = ReportCells(report, row.set, r, view);
+            if (!published.empty()) {
+                published.insert(published.begin(), "  report (Table 1)");
+                table.AddRow(published);
             }
         }
     }
     return table;
 }
 
-TextTable MethodTable(const SweepResult& r) {
-    TextTable table({"method", "mean h (eq. 6)", "lights with h = inf", "mean ms per light"});
-    const auto sums = Summaries(r);
-    for (std::size_t m = 0; m < r.methods.size(); ++m)
-        table.AddRow({r.methods[m], Significant(sums[m].meanH, 5),
-                      std::to_string(sums[m].infiniteH), Fixed(sums[m].meanMs, 3)});
+// Mean misclassified, % more than the reference, % of lights beating it, mean h and time.
+TextTable SummaryTable(const SweepResult& r, const View& view) {
+    const std::string ref = r.methods[view.reference];
+    TextTable table({"method", "mean misclassified", "% more than " + ref,
+                     "% of lights beating " + ref, "mean h (eq. 6)", "lights with h = inf",
+                     "h orders as errors (% lights)", "grazing share of h", "mean ms per light"});
+    const MethodSummary reference = Summarize(r, view.reference, view.reference);
+    for (std::size_t m : view.methods) {
+        const MethodSummary s = Summarize(r, m, view.reference);
+        const double pct = PercentMore(s.meanMisclassified, reference.meanMisclassified);
+        table.AddRow({r.methods[m], Fixed(s.meanMisclassified, 1),
+                      m == view.reference ? "0" : (pct >= 0 ? "+" : "") + Fixed(pct, 2) + "%",
+                      m == view.reference ? "–" : Fixed(s.beatingPercent, 0) + "%",
+                      Significant(s.meanH, 5), std::to_string(s.infiniteH),
+                      std::isnan(s.hAgreesPercent) ? "–" : Fixed(s.hAgreesPercent, 0) + "%",
+                      Fixed(100.0 * s.grazingShare, 0) + "%", Fixed(s.meanMs, 3)});
+    }
     return table;
 }
 
-std::string Caption(const SweepResult& r) {
+std::string Lights(const SweepResult& r) {
+    std::size_t point = 0;
+    for (const Light& l : r.lights) point += l.type == Light::Type::kPoint;
+    const std::size_t directional = r.lights.size() - point;
     std::ostringstream out;
-    out << "Misclassified shadow pixels, " << r.caseName << ", " << r.lights.size()
-        << " lights; in parentheses: % more than " << r.methods[ReferenceIndex(r)]
-        << " (Chong & Gortler, Table 1)";
+    if (point) out << point << " point";
+    if (point && directional) out << " and ";
+    if (directional) out << directional << " directional";
+    out << (r.lights.size() == 1 ? " light" : " lights");
     return out.str();
+}
+
+std::string ReportCaption(const SweepResult& r, const View& view) {
+    return "Table 1 as published (report-faithful baselines): misclassified shadow pixels, " +
+           r.caseName + ", " + Lights(r) + "; in parentheses: % more than " +
+           r.methods[view.reference] + " (Chong & Gortler, Table 1)";
+}
+
+std::string FairCaption(const SweepResult& r) {
+    return "The fair comparison (every method on the optimizer's information: the visible "
+           "points, the same margin): " +
+           r.caseName + ", " + Lights(r);
+}
+
+template <class Render>
+std::string Tables(const SweepResult& r, const ReportTable1& report, const std::string& heading,
+                   Render render) {
+    std::string out;
+    if (const auto view = ReportView(r))
+        out += heading + ReportCaption(r, *view) + "\n" +
+               render(MisclassifiedTable(r, *view, report)) + "\n" + render(SummaryTable(r, *view));
+    if (const auto view = FairView(r))
+        out += (out.empty() ? "" : "\n") + heading + FairCaption(r) + "\n" +
+               render(SummaryTable(r, *view));
+    return out;
+}
+
+nlohmann::json FiniteOrNull(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) {
+    nlohmann::json doc;
+    doc["reference"] = r.methods[view.reference];
+    const MethodSummary reference = Summarize(r, view.reference, view.reference);
+    for (std::size_t m : view.methods) {
+        const MethodSummary s = Summarize(r, m, view.reference);
+        doc["methods"].push_back(
+            {{"method", r.methods[m]},
+             {"mean_misclassified", s.meanMisclassified},
+             {"percent_more",
+              FiniteOrNull(PercentMore(s.meanMisclassified, reference.meanMisclassified))},
+             {"percent_lights_beating_reference", s.beatingPercent},
+             {"mean_h", FiniteOrNull(s.meanH)},
+             {"lights_with_infinite_h", s.infiniteH},
+             {"percent_lights_h_ranks_as_misclassified", FiniteOrNull(s.hAgreesPercent)},
+             {"h_share_at_grazing_samples", s.grazingShare},
+             {"mean_ms", s.meanMs}});
+    }
+    if (worstRows) {
+        const std::vector<Row> rows = Table1Rows(r, view);
+        for (std::size_t k = 1; k < rows.size(); ++k) {
+            nlohmann::json means;
+            for (std::size_t m : view.methods) means[r.methods[m]] = rows[k].mean[m];
+            doc["worst_10_percent"].push_back(
+                {{"ranked_by", rows[k].set}, {"mean_misclassified", means}});
+        }
+    }
+    return doc;
 }
 
 }  // namespace
 
 std::string SweepTable(const SweepResult& r, const ReportTable1& report) {
-    return Caption(r) + "\n" + MisclassifiedTable(r, &report).Render() + "\n" +
-           MethodTable(r).Render();
+    return Tables(r, report, "", [](const TextTable& t) { return t.Render(); });
 }
 
 std::string SweepMarkdown(const SweepResult& r, const ReportTable1& report) {
-    return "## " + Caption(r) + "\n\n" + MisclassifiedTable(r, &report).RenderMarkdown() + "\n" +
-           MethodTable(r).RenderMarkdown();
+    return Tables(r, report, "## ", [](const TextTable& t) { return "\n" + t.RenderMarkdown(); });
 }
 
 std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
     std::ostringstream out;
-    out << "set,method,mean_misclassified,percent_more,report_percent_more\n";
-    const std::size_t ref = ReferenceIndex(r);
-    for (const Row& row : Table1Rows(r)) {
-        const ReportTable1::Row* published = report.Find(row.set);
-        for (std::size_t m = 0; m < r.methods.size(); ++m) {
-            out << row.set << ',' << r.methods[m] << ',' << Fixed(row.mean[m], 3) << ','
-                << Fixed(PercentMore(row.mean[m], row.mean[ref]), 4) << ',';
-            const std::optional<std::size_t> col = report.Column(r.methods[m]);
-            if (r.methods[ref] == "optimal" && published && col)
-                out << Fixed(published->percentMore[*col], 2);
-            out << '\n';
+    out << "table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,"
+           "mean_h,mean_ms,report_percent_more\n";
+    const auto write = [&](const char* table, const View& view, const std::vector<Row>& rows) {
+        const bool published = r.methods[view.reference] == "optimal-report";
+        for (const Row& row : rows) {
+            const ReportTable1::Row* reportRow = report.Find(PublishedName(row.set));
+            for (std::size_t m : view.methods) {
+                const MethodSummary s = Summarize(r, m, view.reference);
+                out << table << ',' << row.set << ',' << r.methods[m] << ','
+                    << Fixed(row.mean[m], 3) << ','
+                    << Fixed(PercentMore(row.mean[m], row.mean[view.reference]), 4) << ',';
+                if (row.set == "all")
+                    out << Fixed(s.beatingPercent, 2) << ',' << Significant(s.meanH, 9) << ','
+                        << Fixed(s.meanMs, 4);
+                else
+                    out << ",,";
+                out << ',';
+                const std::optional<std::size_t> col = report.Column(PublishedName(r.methods[m]));
+                if (published && reportRow && col) out << Fixed(reportRow->percentMore[*col], 2);
+                out << '\n';
+            }
         }
-    }
+    };
+    if (const auto view = ReportView(r)) write("report", *view, Table1Rows(r, *view));
+    if (const auto view = FairView(r)) write("fair", *view, {{"all", MeanOver(r, AllLights(r))}});
     return out.str();
 }
 
@@ -186,27 +333,8 @@ nlohmann::json SweepJson(const SweepResult& r) {
     nlohmann::json doc;
     doc["case"] = r.caseName;
     doc["lights"] = r.lights.size();
-    doc["reference"] = r.methods[ReferenceIndex(r)];
-    const auto rows = Table1Rows(r);
-    const auto sums = Summaries(r);
-    const auto finiteOrNull = [](double v) -> nlohmann::json {
-        return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-    };
-    for (std::size_t m = 0; m < r.methods.size(); ++m)
-        doc["methods"].push_back(
-            {{"method", r.methods[m]},
-             {"mean_misclassified", rows[0].mean[m]},
-             {"percent_more",
-              finiteOrNull(PercentMore(rows[0].mean[m], rows[0].mean[ReferenceIndex(r)]))},
-             {"mean_h", finiteOrNull(sums[m].meanH)},
-             {"lights_with_infinite_h", sums[m].infiniteH},
-             {"mean_ms", sums[m].meanMs}});
-    for (std::size_t k = 1; k < rows.size(); ++k) {
-        nlohmann::json means;
-        for (std::size_t m = 0; m < r.methods.size(); ++m) means[r.methods[m]] = rows[k].mean[m];
-        doc["worst_10_percent"].push_back(
-            {{"ranked_by", rows[k].set}, {"mean_misclassified", means}});
-    }
+    if (const auto view = ReportView(r)) doc["report_table"] = ViewJson(r, *view, true);
+    if (const auto view = FairView(r)) doc["fair_table"] = ViewJson(r, *view, false);
     doc["seconds"] = r.seconds;
     return doc;
 }
@@ -214,8 +342,15 @@ nlohmann::json SweepJson(const SweepResult& r) {
 std::string SweepLightsCsv(const SweepResult& r) {
     std::ostringstream perLight;
     perLight << "light,kind,x,y,z,receiver_pixels";
-    for (const auto& m : r.methods)
-        perLight << ',' << m << "_misclassified," << m << "_h," << m << "_ms";
+    // The multi-start methods also say which start won.
+    const auto hasWinner = [&](std::size_t m) {
+        return !r.cells.empty() && !r.cells[0][m].winner.empty();
+    };
+    for (std::size_t m = 0; m < r.methods.size(); ++m) {
+        const std::string& name = r.methods[m];
+        perLight << ',' << name << "_misclassified," << name << "_h," << name << "_ms";
+        if (hasWinner(m)) perLight << ',' << name << "_winner";
+    }
     perLight << '\n';
     for (std::size_t l = 0; l < r.lights.size(); ++l) {
         const Light& light = r.lights[l];
@@ -223,9 +358,12 @@ std::string SweepLightsCsv(const SweepResult& r) {
         perLight << l << ',' << (light.type == Light::Type::kPoint ? "point" : "directional") << ','
                  << Significant(v.x, 9) << ',' << Significant(v.y, 9) << ',' << Significant(v.z, 9)
                  << ',' << r.receiverPixels[l];
-        for (const SweepCell& c : r.cells[l])
+        for (std::size_t m = 0; m < r.methods.size(); ++m) {
+            const SweepCell& c = r.cells[l][m];
             perLight << ',' << c.misclassified << ',' << Significant(c.h, 9) << ','
                      << Fixed(c.ms, 4);
+            if (hasWinner(m)) perLight << ',' << c.winner;
+        }
         perLight << '\n';
     }
     return perLight.str();

@@ -23,11 +23,13 @@ std::string LightLabel(const Light& light) {
     return out.str();
 }
 
-std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights) {
+std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights,
+                                 std::optional<Light::Type> type) {
     if (!scene.lightSweep)
         throw InputError("/light_sweep: the case has none; add {\"count\", \"seed\", \"radius\"}");
     spatial::LightSweep sweep = *scene.lightSweep;
     if (lights > 0) sweep.count = lights;
+    if (type) sweep.type = *type;
     return spatial::SweepLights(sweep, scene.geometry.ComputeBounds().Center());
 }
 
@@ -54,7 +56,8 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
         }
         for (std::size_t m = 0; m < methods.size(); ++m)
             r.cells[l][m] = {outcome.methods[m].misclassified, outcome.methods[m].h,
-                             outcome.methods[m].ms};
+                             outcome.methods[m].ms, outcome.methods[m].hGrazing,
+                             outcome.methods[m].winner};
         r.receiverPixels[l] = outcome.receiverPixels;
         if (onLightDone) onLightDone();
     });

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ struct SweepCell {
     std::int64_t misclassified = 0;
     double h = 0.0;
     double ms = 0.0;
+    double hGrazing = 0.0;  // the part of h from grazing samples (spatial/harness/evaluation.h)
+    std::string winner;     // optimal, optimal-refined: the start that won
 };
 
 struct SweepResult {
@@ -27,9 +30,10 @@ struct SweepResult {
     double seconds = 0.0;                       // wall time of the whole sweep
 };
 
-// The lights of the sweep: the case's light_sweep (count overridden by `lights` when > 0).
-// Throws InputError (/light_sweep) when the case has none.
-std::vector<spatial::Light> SweepLightsOf(const spatial::Scene& scene, int lights);
+// The lights of the sweep: the case's light_sweep, its count overridden by `lights` when > 0 and
+// its light type by `type` when given. Throws InputError (/light_sweep) when the case has none.
+std::vector<spatial::Light> SweepLightsOf(const spatial::Scene& scene, int lights,
+                                          std::optional<spatial::Light::Type> type = {});
 
 // Evaluates every light, in parallel over lights, deterministically for the case's seed; calls
 // `onLightDone` (from any thread) after each. Throws InputError naming the camera or the light

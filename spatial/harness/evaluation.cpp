@@ -81,7 +81,8 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     const LightSpace lightSpace(light, bounds_);
 
     MethodContext context;
-    context.baseline = MakeBaselineContext(scene_, lightSpace, bounds_, readback_.wsRelevant);
+    context.baseline = MakeBaselineContext(scene_, lightSpace, bounds_, readback_.wsRelevant,
+                                           readback_.wsRelevantHull);
 
     // Step 1 of Algorithm 1: boundary samples from a standard (focused) shadow map.
     const LightMatrix focused = FocusedLightMatrix(context.baseline);
@@ -89,6 +90,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     out.samples = MakeLightSamples(readback_, lightSpace,
                                    backend_.ShadePixels(readback_.buffer, lightSpace, standardMap));
     context.samples = &out.samples;
+    context.baseline.samples = &out.samples;
 
     // The counted frame pixels (covered, facing the light) and the truth there.
     std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
@@ -112,6 +114,15 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
             CountWrong(backend_.ShadePixels(frame_, lightSpace, truthMap), truth, nullptr);
     }
 
+    // Which samples the light grazes (projection aliasing, evaluation.h).
+    std::vector<std::uint8_t> grazing(out.samples.lsX.size(), 0);
+    for (std::size_t s = 0; s < grazing.size(); ++s) {
+        const std::size_t pixel = out.samples.pixel[s];
+        const glm::dvec3& wsPoint = readback_.buffer.wsPosition[pixel];
+        grazing[s] = std::abs(glm::dot(readback_.buffer.wsNormal[pixel],
+                                       lightSpace.DirectionToLight(wsPoint))) < kGrazingCos;
+    }
+
     for (const std::string& method : options.methods) {
         MethodOutcome m;
         m.method = method;
@@ -123,10 +134,15 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
             m.hAfterIteration = computed.optimizer->hAfterIteration;
             m.hBeforeRefine = computed.optimizer->hBeforeRefine;
         }
+        m.winner = computed.winner;
         ShadowMap map = backend_.RenderShadowMap(lightSpace, m.matrix, scene_.shadowMap);
         std::vector<Shade> shades = backend_.ShadePixels(frame_, lightSpace, map);
         m.misclassified = CountWrong(shades, truth, &m.falseShadow);
         m.h = Energy(m.matrix, out.samples);
+        for (std::size_t s = 0; s < grazing.size(); ++s)
+            if (grazing[s])
+                m.hGrazing += SampleBadness(m.matrix, out.samples.lsX[s], out.samples.dXdx1[s],
+                                            out.samples.dXdx2[s]);
         if (options.keepBuffers) {
             m.shades = std::move(shades);
             m.map = std::move(map);

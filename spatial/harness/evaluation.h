@@ -27,6 +27,10 @@ namespace lexel::spatial {
 class RayCaster;
 
 inline constexpr double kRayOffset = 1e-5;  // scene radii; Embree works in float
+// A sample where |n · l| < kGrazingCos (the light within ~11.5° of the receiver's plane) is a
+// grazing sample: its footprint is mostly projection aliasing (Lloyd 2006 eq. 1's cosine ratio),
+// which no light matrix removes.
+inline constexpr double kGrazingCos = 0.2;
 
 struct EvaluationOptions {
     std::vector<std::string> methods;  // names from SpatialMethodNames()
@@ -42,8 +46,10 @@ struct MethodOutcome {
     std::int64_t misclassified = 0;       // counted pixels whose decision differs from the truth
     std::int64_t falseShadow = 0;         // ... of which the method shadows a lit pixel
     double h = 0.0;                       // eq. (6) over the boundary samples
+    double hGrazing = 0.0;                // ... of which from grazing samples (kGrazingCos)
     std::vector<double> hAfterIteration;  // optimal*: h after each Algorithm 1 iteration
     double hBeforeRefine = 0.0;           // optimal-refined: h after the rotation search
+    std::string winner;                   // optimal, optimal-refined: the start that won
     std::vector<Shade> shades;            // per frame pixel, when keepBuffers
     ShadowMap map;                        // when keepBuffers
 };

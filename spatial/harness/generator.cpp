@@ -115,8 +115,9 @@ std::vector<Light> SweepLights(const LightSweep& sweep, const glm::dvec3& wsCent
         const double horizontal = std::sqrt(std::max(0.0, 1.0 - y * y));
         const glm::dvec3 unit(horizontal * std::cos(azimuth), y, horizontal * std::sin(azimuth));
         Light light;
-        light.type = Light::Type::kPoint;
+        light.type = sweep.type;
         light.position = wsCenter + sweep.radius * unit;
+        light.direction = -unit;  // directional: from the hemisphere point toward the centre
         lights.push_back(light);
     }
     return lights;

@@ -29,10 +29,11 @@ inline constexpr double kSweepMinElevationDeg = 5.0;
 // (0, 1, 0, 0) to *floorPlane when it is not null. Throws std::invalid_argument for count < 0.
 TriangleMesh FloorObjects(int count, std::uint64_t seed, glm::dvec4* floorPlane);
 
-// `sweep.count` point lights at distance `sweep.radius` from wsCenter, uniform in area over the
-// upper hemisphere (y ≥ wsCenter.y) less the band below kSweepMinElevationDeg: the unit
-// direction's y is uniform in [sin 5°, 1] (Archimedes: equal heights, equal areas) and its azimuth
-// uniform in [0, 2π). Throws std::invalid_argument for a negative count or a radius that is not
+// `sweep.count` lights of `sweep.type` on the upper hemisphere (y ≥ wsCenter.y) less the band
+// below kSweepMinElevationDeg, uniform in area: the unit direction u's y is uniform in [sin 5°, 1]
+// (Archimedes: equal heights, equal areas) and its azimuth uniform in [0, 2π). A point light sits
+// at wsCenter + radius·u, a directional light shines along -u; the same seed gives the same u for
+// both types. Throws std::invalid_argument for a negative count or a radius that is not
 // positive and finite.
 std::vector<Light> SweepLights(const LightSweep& sweep, const glm::dvec3& wsCenter);
 

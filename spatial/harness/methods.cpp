@@ -3,11 +3,25 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "lexel/spatial/multi_start.h"
+
 namespace lexel::spatial {
 
+std::vector<std::string> FairMethodNames() {
+    return {"optimal",   "optimal-refined", "focused-tight", "lispsm-tight",
+            "psm-tight", "plane-optimal",   "normal"};
+}
+
+std::vector<std::string> ReportMethodNames() {
+    return {"optimal-report", "focused", "lispsm", "plane-optimal", "normal", "psm"};
+}
+
 std::vector<std::string> SpatialMethodNames() {
-    return {"optimal", "focused", "lispsm",          "plane-optimal",
-            "normal",  "psm",     "optimal-refined", "optimal-shear"};
+    std::vector<std::string> names = FairMethodNames();
+    for (const std::string& m : ReportMethodNames())
+        if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
+    names.push_back("optimal-shear");
+    return names;
 }
 
 bool IsSpatialMethod(std::string_view name) {
@@ -16,35 +30,65 @@ bool IsSpatialMethod(std::string_view name) {
 }
 
 BaselineContext MakeBaselineContext(const Scene& scene, const LightSpace& lightSpace,
-                                    const Bounds& wsBounds,
-                                    std::span<const glm::dvec3> wsRelevant) {
+                                    const Bounds& wsBounds, std::span<const glm::dvec3> wsRelevant,
+                                    std::span<const glm::dvec3> wsRelevantHull) {
     BaselineContext context;
     context.lightSpace = &lightSpace;
     context.camera = scene.camera;
     context.map = scene.shadowMap;
     context.wsBounds = wsBounds;
     context.wsRelevant = wsRelevant;
+    context.wsRelevantHull = wsRelevantHull;
     context.floorPlane = scene.floorPlane;
     return context;
 }
 
-MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
-    if (name == "normal") return {NormalLightMatrix(context.baseline), std::nullopt};
-    if (name == "focused") return {FocusedLightMatrix(context.baseline), std::nullopt};
-    if (name == "lispsm") return {LispsmLightMatrix(context.baseline), std::nullopt};
-    if (name == "psm") return {PsmLightMatrix(context.baseline), std::nullopt};
-    if (name == "plane-optimal") return {PlaneOptimalLightMatrix(context.baseline), std::nullopt};
-    if (name == "optimal" || name == "optimal-refined" || name == "optimal-shear") {
-        if (!context.samples) throw std::invalid_argument("optimal needs the light's samples");
-        OptimizerOptions options;
+namespace {
+
+using Baseline = LightMatrix (*)(const BaselineContext&, BaselineDiagnostics*);
+
+struct NamedBaseline {
+    std::string_view name;
+    Baseline compute;
+};
+
+constexpr NamedBaseline kBaselines[] = {
+    {"normal", &NormalLightMatrix},
+    {"focused", &FocusedLightMatrix},
+    {"lispsm", &LispsmLightMatrix},
+    {"psm", &PsmLightMatrix},
+    {"plane-optimal", &PlaneOptimalLightMatrix},
+    {"focused-tight", &FocusedTightLightMatrix},
+    {"lispsm-tight", &LispsmTightLightMatrix},
+    {"psm-tight", &PsmTightLightMatrix},
+};
+
+MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
+    if (!context.samples) throw std::invalid_argument(std::string(name) + " needs the samples");
+    const Resolution map = context.baseline.map;
+    OptimizerOptions options;
+    if (name == "optimal" || name == "optimal-refined") {
         options.refine = name == "optimal-refined";
-        options.shear = name == "optimal-shear";
-        const BaselineContext& b = context.baseline;
-        const glm::dvec3 initialP4 = InitialLightAxis(*b.lightSpace, b.wsBounds, b.wsRelevant);
-        OptimizerResult r =
-            OptimizeLightMatrix(*context.samples, initialP4, context.baseline.map, options);
-        return {r.matrix, std::move(r)};
+        const std::vector<OptimizerStart> starts = StandardStarts(context.baseline);
+        MultiStartResult r = OptimizeFromStarts(*context.samples, starts, map, options);
+        return {r.result.matrix, std::move(r.result), std::move(r.winner)};
     }
+    // The report's single start (optimal-report), or with the shear (optimal-shear).
+    options.shear = name == "optimal-shear";
+    const BaselineContext& b = context.baseline;
+    const glm::dvec3 initialP4 = InitialLightAxis(*b.lightSpace, b.wsBounds, b.wsRelevant);
+    OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4, map, options);
+    return {r.matrix, std::move(r), {}};
+}
+
+}  // namespace
+
+MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
+    for (const NamedBaseline& b : kBaselines)
+        if (b.name == name) return {b.compute(context.baseline, nullptr), std::nullopt, {}};
+    if (name == "optimal" || name == "optimal-refined" || name == "optimal-report" ||
+        name == "optimal-shear")
+        return Optimal(name, context);
     throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 

@@ -1,5 +1,13 @@
 // The named light-matrix methods of the 3D harness (report §3): one registry so that `lexel run`,
-// `lexel sweep` and the tests agree on names, order and inputs.
+// `lexel sweep` and the tests agree on names, order and inputs. Two families:
+//   - the report's Table 1 as published: `optimal-report` (Algorithm 1 from focused's axis alone),
+//     `focused`, `lispsm`, `psm` fitted to the view frustum ∩ scene bounds, `plane-optimal`,
+//     `normal`;
+//   - the fair comparison, every method on the optimizer's own information (the visible points,
+//     the same margin): `optimal` (Algorithm 1 from every baseline's start, multi_start.h),
+//     `optimal-refined` (its best start refined by Ceres), `focused-tight`, `lispsm-tight`,
+//     `psm-tight`, `plane-optimal`, `normal`;
+// and `optimal-shear` (Algorithm 1 with the report's Fig. 3 shear, optimized exactly).
 #pragma once
 
 #include <optional>
@@ -15,27 +23,34 @@
 
 namespace lexel::spatial {
 
-// The baselines' context for a scene: its camera, shadow-map resolution and floor plane.
+// The baselines' context for a scene: its camera, shadow-map resolution and floor plane, the
+// visible points and their hull, and Algorithm 1's margin.
 BaselineContext MakeBaselineContext(const Scene& scene, const LightSpace& lightSpace,
-                                    const Bounds& wsBounds, std::span<const glm::dvec3> wsRelevant);
+                                    const Bounds& wsBounds, std::span<const glm::dvec3> wsRelevant,
+                                    std::span<const glm::dvec3> wsRelevantHull = {});
 
 struct MethodContext {
-    BaselineContext baseline;               // light space, camera, map, bounds, visible points
+    BaselineContext baseline;               // its samples are set: plane-optimal uses them
     const LightSamples* samples = nullptr;  // boundary samples and relevant points (light space)
 };
 
-// Every method, in the column order of the report's Table 1 followed by the extra ones.
+// Every method: the fair comparison's first (optimal its reference), then the report's, then
+// optimal-shear.
 std::vector<std::string> SpatialMethodNames();
+// The report's Table 1 as published (reference: optimal-report).
+std::vector<std::string> ReportMethodNames();
+// The fair comparison (reference: optimal).
+std::vector<std::string> FairMethodNames();
 bool IsSpatialMethod(std::string_view name);
-// The matrix, and for `optimal`, `optimal-refined` and `optimal-shear` the optimizer's trace (h
-// per iteration, time profile). `optimal` is Algorithm 1 as published (initial axis: focused's)
-// without the optional affine shear; `optimal-refined` adds the Ceres refinement on the unit
-// sphere; `optimal-shear` is Algorithm 1 with the shear (report Fig. 3, optimized exactly:
-// FitOptions::shear), no refinement.
+
+// The matrix; for the optimal* methods the optimizer's trace (h per iteration, time profile)
+// and, for the multi-start ones, which start won.
 struct MethodMatrix {
     LightMatrix matrix;
     std::optional<OptimizerResult> optimizer;
+    std::string winner;  // optimal, optimal-refined: the start whose map or search won; else empty
 };
+// std::invalid_argument for an unknown name, or an optimal* method without samples.
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context);
 
 }  // namespace lexel::spatial

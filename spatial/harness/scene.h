@@ -28,12 +28,14 @@ struct TriangleMesh {
     glm::dvec3 FaceNormal(std::size_t t) const;
 };
 
-// `light_sweep` of a case: `count` point lights uniformly at random on the upper hemisphere
-// (y ≥ centre.y) of radius `radius` around the centre of the floor, as in report §3.
+// `light_sweep` of a case: `count` lights uniformly at random on the upper hemisphere (y ≥
+// centre.y) of radius `radius` around the centre of the floor, as in report §3: point lights
+// there, or directional lights shining from there toward the centre (the same directions).
 struct LightSweep {
     int count = 500;
     std::uint64_t seed = 7;
     double radius = 100.0;
+    Light::Type type = Light::Type::kPoint;
 };
 
 struct Scene {

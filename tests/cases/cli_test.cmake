@@ -67,7 +67,8 @@ endif()
 
 # ---- 3D cases: lexel run and lexel sweep on a small floor-and-box scene ----
 set(small "${DATA}/spatial_small.json")
-set(methods3d optimal focused lispsm plane-optimal normal psm optimal-refined optimal-shear)
+set(methods3d optimal optimal-refined focused-tight lispsm-tight psm-tight plane-optimal normal
+    optimal-report focused lispsm psm optimal-shear)
 
 # Asserts that a JSON value is a non-negative integer (string(JSON) reads numbers as text).
 function(expect_count json what)
@@ -77,7 +78,7 @@ function(expect_count json what)
 endfunction()
 
 # The table lists every method, in the registry's order.
-expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\nmethod +misclassified[^\n]*\n-+\noptimal [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\npsm [^\n]*\noptimal-refined [^\n]*\noptimal-shear "
+expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\nmethod +misclassified[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear "
            "^$" run "${small}")
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" run "${small}" --format json)
 string(JSON nLights LENGTH "${lastStdout}" lights)
@@ -85,7 +86,7 @@ string(JSON nMethods LENGTH "${lastStdout}" lights 0 methods)
 string(JSON method0 GET "${lastStdout}" lights 0 methods 0 method)
 string(JSON wrong0 GET "${lastStdout}" lights 0 methods 0 misclassified)
 string(JSON receivers GET "${lastStdout}" lights 0 receiver_pixels)
-if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 8 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
+if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 12 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
     message(FATAL_ERROR "unexpected 3D JSON document:\n${lastStdout}")
 endif()
 math(EXPR last "${nMethods} - 1")
@@ -102,7 +103,7 @@ expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms\n0,optim
            "^$" run "${small}" --format csv --method optimal --method normal --no-map-truth)
 
 # --out writes the report and three images per light and method.
-expect_run(0 "^light 0" "^lexel: wrote 24 images and spatial_small.json/.csv to [^\n]*\n$"
+expect_run(0 "^light 0" "^lexel: wrote 36 images and spatial_small.json/.csv to [^\n]*\n$"
            run "${small}" --out "${WORK}/out3d")
 foreach(file spatial_small.json spatial_small.csv)
     if(NOT EXISTS "${WORK}/out3d/${file}")
@@ -126,43 +127,53 @@ if(NOT method0 STREQUAL "optimal")
     message(FATAL_ERROR "unexpected ${WORK}/out3d/spatial_small.json:\n${written}")
 endif()
 
-# lexel sweep: Table 1 as JSON, Markdown and CSV.
+# lexel sweep: Table 1 as published and the fair comparison, as JSON, Markdown, CSV and text.
+set(reportMethods optimal-report focused lispsm plane-optimal normal psm)
+set(fairMethods optimal optimal-refined focused-tight lispsm-tight psm-tight plane-optimal normal
+    optimal-shear)
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" sweep "${small}" --lights 3 --format json)
 string(JSON sweepCase GET "${lastStdout}" case)
 string(JSON sweepLights GET "${lastStdout}" lights)
-string(JSON nMethods LENGTH "${lastStdout}" methods)
-string(JSON nWorst LENGTH "${lastStdout}" worst_10_percent)
-if(NOT sweepCase STREQUAL "spatial_small" OR NOT sweepLights EQUAL 3 OR NOT nMethods EQUAL 8
-   OR NOT nWorst EQUAL 8)
+string(JSON reference GET "${lastStdout}" report_table reference)
+string(JSON nWorst LENGTH "${lastStdout}" report_table worst_10_percent)
+if(NOT sweepCase STREQUAL "spatial_small" OR NOT sweepLights EQUAL 3 OR NOT nWorst EQUAL 6
+   OR NOT reference STREQUAL "optimal-report")
     message(FATAL_ERROR "unexpected sweep JSON document:\n${lastStdout}")
 endif()
-foreach(k RANGE 7)
-    string(JSON m GET "${lastStdout}" methods ${k} method)
-    list(GET methods3d ${k} want)
-    if(NOT m STREQUAL want)
-        message(FATAL_ERROR "sweep JSON: method ${k} is '${m}', expected '${want}'")
-    endif()
-    foreach(key mean_misclassified mean_h mean_ms)
-        string(JSON type TYPE "${lastStdout}" methods ${k} ${key})
-        string(JSON value GET "${lastStdout}" methods ${k} ${key})
-        if(NOT type STREQUAL "NUMBER" OR value LESS 0)
-            message(FATAL_ERROR "sweep JSON: methods/${k}/${key} is ${type} '${value}'")
+foreach(table report fair)
+    string(JSON n LENGTH "${lastStdout}" ${table}_table methods)
+    math(EXPR last "${n} - 1")
+    foreach(k RANGE ${last})
+        string(JSON m GET "${lastStdout}" ${table}_table methods ${k} method)
+        list(GET ${table}Methods ${k} want)
+        if(NOT m STREQUAL want)
+            message(FATAL_ERROR "sweep JSON: ${table} method ${k} is '${m}', expected '${want}'")
         endif()
+        foreach(key mean_misclassified mean_h mean_ms percent_lights_beating_reference)
+            string(JSON type TYPE "${lastStdout}" ${table}_table methods ${k} ${key})
+            string(JSON value GET "${lastStdout}" ${table}_table methods ${k} ${key})
+            if(NOT type STREQUAL "NUMBER" OR value LESS 0)
+                message(FATAL_ERROR "sweep JSON: ${table}_table/methods/${k}/${key} is ${type} '${value}'")
+            endif()
+        endforeach()
     endforeach()
-    string(JSON ranked GET "${lastStdout}" worst_10_percent ${k} ranked_by)
-    if(NOT ranked STREQUAL want)
-        message(FATAL_ERROR "sweep JSON: worst_10_percent/${k} ranked by '${ranked}', expected '${want}'")
-    endif()
 endforeach()
-expect_run(0 "^## Misclassified shadow pixels, spatial_small, 3 lights[^\n]*\n\n\\| lights \\| optimal \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\| optimal-refined \\| optimal-shear \\|\n.*\n\\| worst 10% by optimal-shear \\|"
+string(JSON ranked GET "${lastStdout}" report_table worst_10_percent 0 ranked_by)
+if(NOT ranked STREQUAL "optimal-report")
+    message(FATAL_ERROR "sweep JSON: worst_10_percent/0 ranked by '${ranked}'")
+endif()
+expect_run(0 "^## Table 1 as published [^\n]*spatial_small, 3 point lights[^\n]*\n\n\\| lights \\| optimal-report \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\|\n.*\n\\| worst 10% by psm \\|.*## The fair comparison [^\n]*\n\n\\| method \\|"
            "^$" sweep "${small}" --lights 3 --format markdown)
-expect_run(0 "^set,method,mean_misclassified,percent_more,report_percent_more\nall,optimal,[0-9.]+,0\\.0000,"
+expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more\nreport,all,optimal-report,[0-9.]+,0\\.0000,.*\nfair,all,optimal,[0-9.]+,0\\.0000,"
            "^$" sweep "${small}" --lights 3 --format csv)
-expect_run(0 "^Misclassified shadow pixels, spatial_small, 3 lights.*\nsweep: [0-9.]+ s for 3 lights\n$" "^$"
+expect_run(0 "^Table 1 as published .*\nThe fair comparison .*\nsweep: [0-9.]+ s for 3 lights\n$" "^$"
            sweep "${small}" --lights 3)
+# Directional lights from the same hemisphere directions.
+expect_run(0 "spatial_small, 2 directional lights" "^$"
+           sweep "${small}" --lights 2 --light-type directional --methods optimal --methods focused-tight)
 
 # --out writes four files; --methods restricts the columns; the count defaults to the case's.
-expect_run(0 "^Misclassified shadow pixels, spatial_small, 4 lights; in parentheses: % more than focused"
+expect_run(0 "^Table 1 as published [^\n]*spatial_small, 4 point lights; in parentheses: % more than focused"
            "^lexel: wrote table1.md, table1.csv, sweep.json, lights.csv to [^\n]*\n$"
            sweep "${small}" --methods focused --methods normal --out "${WORK}/sweep")
 foreach(file table1.md table1.csv sweep.json lights.csv)
@@ -172,11 +183,12 @@ foreach(file table1.md table1.csv sweep.json lights.csv)
 endforeach()
 file(READ "${WORK}/sweep/sweep.json" written)
 string(JSON sweepLights GET "${written}" lights)
-string(JSON nMethods LENGTH "${written}" methods)
-string(JSON method0 GET "${written}" methods 0 method)
-string(JSON method1 GET "${written}" methods 1 method)
+string(JSON nMethods LENGTH "${written}" report_table methods)
+string(JSON method0 GET "${written}" report_table methods 0 method)
+string(JSON method1 GET "${written}" report_table methods 1 method)
+string(JSON fair0 GET "${written}" fair_table methods 0 method)
 if(NOT sweepLights EQUAL 4 OR NOT nMethods EQUAL 2 OR NOT method0 STREQUAL "focused"
-   OR NOT method1 STREQUAL "normal")
+   OR NOT method1 STREQUAL "normal" OR NOT fair0 STREQUAL "normal")
     message(FATAL_ERROR "unexpected ${WORK}/sweep/sweep.json:\n${written}")
 endif()
 file(STRINGS "${WORK}/sweep/lights.csv" rows)
@@ -187,7 +199,7 @@ if(NOT nRows EQUAL 5 OR NOT header STREQUAL
     message(FATAL_ERROR "unexpected ${WORK}/sweep/lights.csv:\n${rows}")
 endif()
 file(READ "${WORK}/sweep/table1.csv" written)
-if(NOT written MATCHES "^set,method,[^\n]*\nall,focused,[^\n]*\nall,normal,[^\n]*\nfocused,focused,")
+if(NOT written MATCHES "^table,set,method,[^\n]*\nreport,all,focused,[^\n]*\nreport,all,normal,[^\n]*\nreport,focused,focused,")
     message(FATAL_ERROR "unexpected ${WORK}/sweep/table1.csv:\n${written}")
 endif()
 expect_run(0 "\"method\": \"psm\"" "^$" sweep "${small}" --lights 2 --method psm --format json)
@@ -250,7 +262,7 @@ expect_bad3d(spatial_sweep_only.json
 expect_bad3d(spatial_no_sweep.json
              "${any}spatial_no_sweep.json: /light_sweep: the case has none${any}" sweep)
 # The mirror cases work.
-expect_run(0 "^Misclassified shadow pixels, spatial_sweep_only, 2 lights" "^$"
+expect_run(0 "^The fair comparison [^\n]*spatial_sweep_only, 2 point lights" "^$"
            sweep "${DATA}/spatial_sweep_only.json" --lights 2 --method optimal)
 expect_run(0 "^light 0: point \\(8, 8, 2\\)" "^$" run "${DATA}/spatial_no_sweep.json" --method optimal --no-map-truth)
 

@@ -263,7 +263,7 @@ TEST(SpatialCase, BadFieldsAreNamed) {
               "/light_sweep/radius: must be larger than the geometry's bounding radius "
               "14.456832294801 (the sweep is centred on the bounds), got 14");
     EXPECT_EQ(add("/light_sweep/elevation", "5"),
-              "/light_sweep/elevation: unknown key (allowed here: count, seed, radius)");
+              "/light_sweep/elevation: unknown key (allowed here: count, seed, radius, type)");
     // Camera path.
     EXPECT_EQ(replace("/camera_path", "[]"), "/camera_path: must have at least 1 elements, got 0");
     EXPECT_EQ(replace("/camera_path/1/target", "[1, 1.7, -8]"),

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "lexel/solvers/geometry.h"
 #include "lexel/spatial/harness/primitives.h"
 
 namespace lexel::spatial {
@@ -154,6 +155,26 @@ TEST(SweepLights, CountRadiusElevationAndDeterminism) {
     EXPECT_TRUE(SweepLights(sweep, centre).empty());
     sweep.radius = 0.0;
     EXPECT_THROW(SweepLights(sweep, centre), std::invalid_argument);
+}
+
+// Directional sweeps shine from the same hemisphere points toward the centre: for one seed the
+// direction of light k is exactly minus the unit offset of point light k.
+TEST(SweepLights, DirectionalLightsShineFromThePointSweepsPositions) {
+    LightSweep sweep;
+    sweep.count = 50;
+    sweep.seed = 11;
+    sweep.radius = 80.0;
+    const glm::dvec3 centre(1.0, 0.0, -2.0);
+    const auto points = SweepLights(sweep, centre);
+    sweep.type = Light::Type::kDirectional;
+    const auto suns = SweepLights(sweep, centre);
+    ASSERT_EQ(suns.size(), points.size());
+    for (std::size_t k = 0; k < suns.size(); ++k) {
+        EXPECT_EQ(suns[k].type, Light::Type::kDirectional);
+        const glm::dvec3 unit = (points[k].position - centre) / sweep.radius;
+        EXPECT_NEAR(glm::length(suns[k].direction + unit), 0.0, 1e-12) << "light " << k;
+        EXPECT_LT(suns[k].direction.y, -std::sin(Radians(kSweepMinElevationDeg)) + 1e-12);
+    }
 }
 
 TEST(SweepLights, UniformInAreaOverTheHemisphere) {

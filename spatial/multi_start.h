@@ -1,0 +1,45 @@
+// lexel's `optimal`: Chong & Gortler's Algorithm 1 (report §2.3) from several starts. The search is
+// local — it rotates p4 from wherever it starts — so where it starts matters; here it starts from
+// every baseline's axis, and every start's own map is a candidate too (a warped baseline's affine
+// part is not the rectangle fit). The least h (eq. 6) wins, so on its own energy `optimal` never
+// loses to a baseline it started from.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lexel/spatial/baselines.h"
+#include "lexel/spatial/optimizer.h"
+
+namespace lexel::spatial {
+
+// A candidate map and the axis a search starts from.
+struct OptimizerStart {
+    std::string name;  // the baseline it came from
+    LightMatrix matrix;
+};
+
+// `optimal`'s starts: focused-tight, lispsm-tight, psm-tight, normal, and plane-optimal when the
+// context has a floor plane (all with the context as given; its samples, when set, steer
+// plane-optimal's fallback). Throws DomainError as the baselines do.
+std::vector<OptimizerStart> StandardStarts(const BaselineContext& context);
+
+struct MultiStartResult {
+    OptimizerResult result;       // the winner (h, matrix); times summed over every search
+    std::string winner;           // the start whose map or search won
+    bool startMapWon = false;     // the start's own map, not a search from it, had the least h
+    std::vector<double> startH;   // per start: h of its own map
+    std::vector<double> searchH;  // per start: h after Algorithm 1 from its axis (+inf: skipped,
+                                  // the axis repeats an earlier start's)
+};
+
+// Algorithm 1 (OptimizeLightMatrix, without refinement) from each start's axis; the least h among
+// the starts' maps and the searches wins. With options.refine, the best search's axis is also
+// refined (optimal-refined) and competes too. `starts` must not be empty (std::invalid_argument).
+// Throws DomainError as OptimizeLightMatrix does.
+MultiStartResult OptimizeFromStarts(const LightSamples& samples,
+                                    std::span<const OptimizerStart> starts, Resolution map,
+                                    const OptimizerOptions& options = {});
+
+}  // namespace lexel::spatial
