@@ -1,6 +1,7 @@
 // optimal-l2-ceres: the L2 angle as a Ceres least-squares problem (Chong 2003 §3.1 solved with
 // a general-purpose optimizer, as a cross-check of the exact quartic and of Newton).
-// Kept in its own translation unit: it is the only flatland file that includes Ceres.
+// Kept in its own translation unit: with scene_fit.cpp, the only flatland files that include
+// Ceres.
 #include <ceres/ceres.h>
 
 #include <cmath>

@@ -55,7 +55,7 @@ double SceneScale(const FlatScene& scene) {
 
 }  // namespace
 
-void CheckSceneGeometry(const FlatScene& scene) {
+std::optional<DomainError> FindSceneGeometryDefect(const FlatScene& scene) {
     // Distances below 1e-12 of the scene's size are "on" a segment: at double precision such a
     // point cannot be told apart from one lying on it.
     const double onEps = 1e-12 * SceneScale(scene);
@@ -67,23 +67,28 @@ void CheckSceneGeometry(const FlatScene& scene) {
                 "segment " + std::to_string(j) + " of polyline " + std::to_string(i);
             const std::array<int, 2> at = {poly, static_cast<int>(j)};
             if ((polyline[j + 1] - polyline[j]).norm() <= onEps)
-                throw DomainError(Subject::kSegment,
-                                  "zero-length segment (points " + std::to_string(j) + " and " +
-                                      std::to_string(j + 1) + " coincide)",
-                                  at);
+                return DomainError(Subject::kSegment,
+                                   "zero-length segment (points " + std::to_string(j) + " and " +
+                                       std::to_string(j + 1) + " coincide)",
+                                   at);
             if (DistanceToSegment(scene.wsLight, polyline[j], polyline[j + 1]) <= onEps)
-                throw DomainError(Subject::kLight, "the light lies on " + seg, at);
+                return DomainError(Subject::kLight, "the light lies on " + seg, at);
             if (DistanceToSegment(scene.camera.wsPosition, polyline[j], polyline[j + 1]) <= onEps)
-                throw DomainError(Subject::kCamera, "the camera lies on " + seg, at);
+                return DomainError(Subject::kCamera, "the camera lies on " + seg, at);
         }
         const bool closed =
             polyline.size() >= 4 && (polyline.front() - polyline.back()).norm() <= onEps;
         const std::string where = "the closed polyline " + std::to_string(i);
         if (closed && InsideClosed(scene.wsLight, polyline))
-            throw DomainError(Subject::kLight, "the light is inside " + where, {poly, -1});
+            return DomainError(Subject::kLight, "the light is inside " + where, {poly, -1});
         if (closed && InsideClosed(scene.camera.wsPosition, polyline))
-            throw DomainError(Subject::kCamera, "the camera is inside " + where, {poly, -1});
+            return DomainError(Subject::kCamera, "the camera is inside " + where, {poly, -1});
     }
+    return std::nullopt;
+}
+
+void CheckSceneGeometry(const FlatScene& scene) {
+    if (std::optional<DomainError> defect = FindSceneGeometryDefect(scene)) throw *defect;
 }
 
 double WrapAngle(double radians) {

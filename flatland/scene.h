@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lexel/solvers/errors.h"
 #include "lexel/solvers/footprint_metrics.h"
 
 namespace lexel::flatland {
@@ -55,6 +56,8 @@ std::vector<FlatSegment> Segments(const FlatScene& scene);
 // inside a closed polyline. Throws DomainError: Subject::kSegment (index {polyline, segment}) for
 // a zero-length segment; kLight or kCamera, with the segment's or polyline's index, for the rest.
 void CheckSceneGeometry(const FlatScene& scene);
+// The same without throwing: the error CheckSceneGeometry would throw, or nullopt.
+std::optional<DomainError> FindSceneGeometryDefect(const FlatScene& scene);
 
 // Angle helpers. World angles are radians counterclockwise from +x.
 double WrapAngle(double radians);  // to (-π, π]
