@@ -10,6 +10,7 @@
 #include "lexel/cases/load/published.h"
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/report/figures.h"
+#include "lexel/cases/report/fit_report.h"
 #include "lexel/cases/report/flatland_report.h"
 #include "lexel/cases/report/lowres_report.h"
 #include "lexel/cases/report/output.h"
@@ -245,6 +246,45 @@ int LowresCommand(const std::string& casePath, const std::string& outDir) {
                         LowresMarkdown(scene.name, rows));
     WriteLowresPlot((fs::path(outDir) / ("lowres_" + scene.name + ".png")).string(),
                     "Low-resolution decision: " + scene.name, LowresCurves(rows));
+    return 0;
+}
+
+namespace {
+
+// The thesis tables `fit-thesis --case` selects: all, or the one whose case file has that stem.
+std::vector<ThesisTable> SelectThesisTables(const std::vector<ThesisTable>& tables,
+                                            const std::string& caseName) {
+    std::vector<ThesisTable> selected;
+    std::vector<std::string> known;
+    for (const ThesisTable& thesis : tables) {
+        known.push_back(fs::path(thesis.file).stem().string());
+        if (caseName.empty() || known.back() == caseName) selected.push_back(thesis);
+    }
+    if (selected.empty())
+        throw InputError("--case: unknown thesis case '" + caseName +
+                         "' (known: " + KnownList(known) + ")");
+    return selected;
+}
+
+}  // namespace
+
+int FitThesisCommand(const FitThesisFlags& flags) {
+    const std::vector<ThesisTable> tables =
+        LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
+    const std::vector<ThesisTable> selected = SelectThesisTables(tables, flags.caseName);
+    // Everything is fitted before anything is written.
+    const std::vector<CaseFit> fits =
+        FitThesisCases(selected, DataDirectory() / "flatland", flags.options,
+                       [](const CaseFit& fit) { std::cout << FitText(fit) << std::flush; });
+    const fs::path outDir(flags.outDir);
+    const std::vector<StoredFit> stored = MergeStoredFits(outDir / "parameters.json", fits, tables);
+    fs::create_directories(outDir);
+    for (const CaseFit& fit : fits)
+        WriteFileAtomically((outDir / (fit.family->name + ".json")).string(), FittedCaseJson(fit));
+    WriteFileAtomically((outDir / "parameters.json").string(), StoredFitsJson(stored));
+    std::cout << "lexel: wrote " << fits.size() << " fitted case file"
+              << (fits.size() == 1 ? "" : "s") << " and parameters.json to "
+              << fs::absolute(outDir).string() << '\n';
     return 0;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "lexel/cases/run/fit_thesis.h"
+
 namespace lexel::cases {
 
 // Where the shipped cases and the published tables live: cases/flatland, cases/spatial,
@@ -36,5 +38,12 @@ int SweepCommand(const SweepFlags& flags);
 
 int TablesCommand(const std::string& outDir, const std::string& casesDir);
 int LowresCommand(const std::string& casePath, const std::string& outDir);
+
+struct FitThesisFlags {
+    std::string caseName;               // one case (file stem), or all when empty
+    std::string outDir = "out/fitted";  // where the fitted case files go
+    FitThesisOptions options;
+};
+int FitThesisCommand(const FitThesisFlags& flags);
 
 }  // namespace lexel::cases

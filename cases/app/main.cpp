@@ -6,6 +6,7 @@
 //             [--out DIR]                           the 3D report's Table 1
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
+//   lexel fit-thesis [--case NAME] [--out DIR] [--seed S] [--samples N] [--starts K] [--explain]
 // Exit status: 0 success, 2 bad input (one line on stderr naming the field and the reason),
 // 1 an I/O failure while writing results.
 #include <CLI/CLI.hpp>
@@ -65,7 +66,8 @@ int main(int argc, char** argv) {
     tables->add_option("--out", tablesOut, "Directory for the Markdown, CSV and figures")
         ->capture_default_str();
     tables->add_option("--cases", casesDir,
-                       "Directory holding the four thesis cases (default: the shipped ones)");
+                       "Directory holding the four thesis cases (default: the shipped ones); "
+                       "fitted/<case>.json there replaces a case where it matches better");
 
     auto* lowres =
         app.add_subcommand("lowres", "Low-resolution decision study (thesis 4.1.1, Fig. 4.1)");
@@ -74,6 +76,25 @@ int main(int argc, char** argv) {
         ->required()
         ->check(CLI::ExistingFile);
     lowres->add_option("--out", lowresOut, "Also write the table as CSV/Markdown and a plot here");
+
+    auto* fitThesis = app.add_subcommand(
+        "fit-thesis", "Fit the thesis's scenes to its published tables (Chong 2003, ch. 4.1.3)");
+    lexel::cases::FitThesisFlags fitFlags;
+    fitThesis->add_option("--case", fitFlags.caseName, "One case (file stem); default: all four");
+    fitThesis->add_option("--out", fitFlags.outDir, "Directory for the fitted case files")
+        ->capture_default_str();
+    fitThesis->add_option("--seed", fitFlags.options.seed, "Seed of the random starts")
+        ->capture_default_str();
+    fitThesis->add_option("--samples", fitFlags.options.samples, "Random starts screened per case")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 10000000));
+    fitThesis
+        ->add_option("--starts", fitFlags.options.starts,
+                     "Least-squares runs from the best of them")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 100000));
+    fitThesis->add_flag("--explain", fitFlags.options.explain,
+                        "For a table not met: refit with each published number left out");
 
     try {
         app.parse(argc, argv);
@@ -91,6 +112,7 @@ int main(int argc, char** argv) {
                 {sweepCase, sweepLights, sweepLightType, sweepMethods, sweepFormat, sweepOut});
         if (*tables) return cases::TablesCommand(tablesOut, casesDir);
         if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);
+        if (*fitThesis) return cases::FitThesisCommand(fitFlags);
     } catch (const InputError& e) {
         std::cerr << "lexel: error: " << e.what() << '\n';
         return 2;

@@ -85,24 +85,41 @@ void JsonField::Fail(const std::string& reason) const {
     throw InputError((pointer_.empty() ? std::string("/") : pointer_) + ": " + reason);
 }
 
-void JsonField::ExpectObject(std::initializer_list<std::string_view> required,
-                             std::initializer_list<std::string_view> optional) const {
-    if (!value_->is_object()) Fail("must be an object, got " + TypeName(*value_));
-    for (const auto& [key, _] : value_->items()) {
+namespace {
+
+// ExpectObject's check, for keys given at compile time or at run time.
+template <class Keys>
+void CheckObjectKeys(const JsonField& field, const nlohmann::json& value, const Keys& required,
+                     const Keys& optional) {
+    if (!value.is_object()) field.Fail("must be an object, got " + TypeName(value));
+    for (const auto& [key, _] : value.items()) {
         bool known = false;
-        for (auto k : required) known |= key == k;
-        for (auto k : optional) known |= key == k;
+        for (std::string_view k : required) known |= key == k;
+        for (std::string_view k : optional) known |= key == k;
         if (!known) {
             std::string allowed;
-            for (auto k : required) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
-            for (auto k : optional) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
-            throw InputError(pointer_ + "/" + EscapeKey(key) +
+            for (std::string_view k : required)
+                allowed += (allowed.empty() ? "" : ", ") + std::string(k);
+            for (std::string_view k : optional)
+                allowed += (allowed.empty() ? "" : ", ") + std::string(k);
+            throw InputError(field.Pointer() + "/" + EscapeKey(key) +
                              ": unknown key (allowed here: " + allowed + ")");
         }
     }
-    for (auto k : required)
-        if (!value_->contains(std::string(k)))
-            throw InputError(pointer_ + "/" + EscapeKey(k) + ": required key is missing");
+    for (std::string_view k : required)
+        if (!value.contains(std::string(k)))
+            throw InputError(field.Pointer() + "/" + EscapeKey(k) + ": required key is missing");
+}
+
+}  // namespace
+
+void JsonField::ExpectObject(std::initializer_list<std::string_view> required,
+                             std::initializer_list<std::string_view> optional) const {
+    CheckObjectKeys(*this, *value_, required, optional);
+}
+
+void JsonField::ExpectKeys(const std::vector<std::string>& keys) const {
+    CheckObjectKeys(*this, *value_, keys, std::vector<std::string>{});
 }
 
 bool JsonField::Has(std::string_view key) const {

@@ -30,6 +30,8 @@ class JsonField {
     // Requires an object whose keys are all in required ∪ optional and that has every required key.
     void ExpectObject(std::initializer_list<std::string_view> required,
                       std::initializer_list<std::string_view> optional = {}) const;
+    // The same for keys known only at run time: an object with exactly these keys.
+    void ExpectKeys(const std::vector<std::string>& keys) const;
     bool Has(std::string_view key) const;
     JsonField operator[](std::string_view key) const;
 

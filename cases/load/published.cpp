@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lexel/cases/load/json_reader.h"
+#include "lexel/flatland/methods.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
@@ -21,7 +22,11 @@ ThesisRow ReadThesisRow(const JsonField& row) {
                      {"two_frusta_mean"});
     ThesisRow out;
     out.label = row["label"].String();
-    for (const JsonField& m : row["methods"].Array(1)) out.methods.push_back(m.String());
+    for (const JsonField& m : row["methods"].Array(1)) {
+        out.methods.push_back(m.String());
+        if (!flatland::IsFlatlandMethod(out.methods.back()))
+            m.Fail("unknown method '" + out.methods.back() + "'");
+    }
     out.angle = row["angle"].Number();
     out.worst = row["worst"].Positive();
     out.average = row["average"].Positive();
@@ -37,6 +42,9 @@ std::vector<ThesisTable> ThesisTablesFromJson(const nlohmann::json& document) {
     for (const JsonField& table : root["tables"].Array(1)) {
         table.ExpectObject({"file", "title", "rows"});
         ThesisTable t{table["file"].String(), table["title"].String(), {}};
+        // A name in the cases directory (fitted/<file> may stand in for it: `lexel tables`).
+        if (t.file.empty() || t.file.find('/') != std::string::npos)
+            table["file"].Fail("must be a file name in the cases directory, got '" + t.file + "'");
         for (const JsonField& row : table["rows"].Array(1)) t.rows.push_back(ReadThesisRow(row));
         tables.push_back(std::move(t));
     }

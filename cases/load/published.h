@@ -19,13 +19,14 @@ struct ThesisRow {
 };
 
 struct ThesisTable {
-    std::string file;   // the case file it belongs to (cases/flatland/<file>)
+    std::string file;   // the case file it belongs to (cases/flatland/<file>), a bare file name
     std::string title;  // the thesis's heading
     std::vector<ThesisRow> rows;
     // The row printed for `method`, or null.
     const ThesisRow* RowFor(const std::string& method) const;
 };
 
+// Every row's methods are flatland methods (flatland/methods.h).
 std::vector<ThesisTable> LoadThesisTables(const std::filesystem::path& file);
 
 // Table 1 of the report: per set of lights ("all", or a method's worst 10%), the misclassified

@@ -65,13 +65,23 @@ TextTable ComparisonTable(const TableResult& r) {
     return table;
 }
 
+// Which scene a table ran on, and how far its numbers are from the published ones.
+std::string SceneLine(const TableResult& r) {
+    std::ostringstream out;
+    out << (r.fitted ? "fitted scene " : "reconstructed scene ") << r.caseFile << ", "
+        << r.report.pixelsVisible << " visible pixels, " << r.report.lexels
+        << " lexels; against the published table: worst angle error "
+        << Fixed(r.worstAngleErrorDeg, 2) << "°, worst footprint error "
+        << Fixed(100.0 * r.worstFootprintError, 1) << "%";
+    return out.str();
+}
+
 }  // namespace
 
 std::string TablesText(const std::vector<TableResult>& results) {
     std::ostringstream out;
     for (const auto& r : results)
-        out << r.thesis.title << " (" << r.thesis.file << ", " << r.report.pixelsVisible
-            << " visible pixels, " << r.report.lexels << " lexels)\n"
+        out << r.thesis.title << " (" << SceneLine(r) << ")\n"
             << ComparisonTable(r).Render() << '\n';
     return out.str();
 }
@@ -79,15 +89,14 @@ std::string TablesText(const std::vector<TableResult>& results) {
 std::string TablesMarkdown(const std::vector<TableResult>& results) {
     std::ostringstream out;
     out << "# Chong 2003, ch. 4.1.3, reproduced by lexel\n\n"
-        << "Our numbers on the reconstructed cases beside the thesis's published ones. Angles in "
-           "degrees "
-           "(counterclockwise from vertical), footprints in pixels per lexel. The last two columns "
-           "are each "
-           "row's average over our L1 optimum's average, ours and the thesis's.\n\n";
+        << "Our numbers on the reconstructed cases (or, where they match better, the scenes "
+           "`lexel fit-thesis` recovered from the published numbers) beside the thesis's published "
+           "ones. Angles in degrees (counterclockwise from vertical), footprints in pixels per "
+           "lexel. The last two columns are each row's average over our L1 optimum's average, ours "
+           "and the thesis's.\n\n";
     for (const auto& r : results)
-        out << "## " << r.thesis.title << "\n\n`cases/flatland/" << r.thesis.file
-            << "`: " << r.report.pixelsVisible << " visible pixels, " << r.report.lexels
-            << " lexels.\n\n"
+        out << "## " << r.thesis.title << "\n\n"
+            << SceneLine(r) << ".\n\n"
             << ComparisonTable(r).RenderMarkdown() << "\n![" << r.thesis.title << "]("
             << fs::path(r.thesis.file).stem().string() << ".png)\n\n";
     return out.str();

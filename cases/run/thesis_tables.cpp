@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "lexel/cases/load/flatland_case.h"
+#include "lexel/cases/run/thesis_scene.h"
 
 namespace lexel::cases {
 
@@ -27,13 +28,15 @@ std::vector<TableResult> RunThesisTables(const std::vector<ThesisTable>& tables,
     for (const auto& [label, method] : TableRows()) methods.push_back(method);
     std::vector<TableResult> results;
     for (const ThesisTable& thesis : tables) {
-        const std::filesystem::path path = casesDir / thesis.file;
-        const flatland::FlatScene scene = LoadFlatScene(path);
+        const ThesisSceneChoice choice = ChooseThesisScene(thesis, casesDir);
+        const flatland::FlatScene& scene = choice.scene;
         try {
             results.push_back(
-                {thesis, scene, flatland::RunFlatlandCase(scene, methods, Metric::kL1)});
+                {thesis, scene, flatland::RunFlatlandCase(scene, methods, Metric::kL1),
+                 std::filesystem::relative(choice.path, casesDir).generic_string(), choice.fitted,
+                 choice.agreement.worstAngleDeg, choice.agreement.worstFootprint});
         } catch (const DomainError& e) {
-            throw FlatlandInputError(path.string(), e);
+            throw FlatlandInputError(choice.path.string(), e);
         }
     }
     return results;

@@ -272,6 +272,21 @@ expect_run(0 "^light 0: point \\(12, 25, -8\\)[^\n]*\nmethod +misclassified[^\n]
 
 # lowres on a shipped case.
 expect_run(0 "decision pixels K.*\n *5 .*\n *10 " "" lowres "${good}")
+
+# fit-thesis: refine the committed single-plane fit (no random starts) into a fresh directory.
+expect_run(0 "Single Plane Geometry .*fitted: worst angle error [0-9.]+°, worst footprint error [0-9.]+% \\(tolerances 2°, 10%\\): met"
+           "^$" fit-thesis --case single_plane --samples 0 --starts 0 --out "${WORK}/fitted")
+foreach(f single_plane.json parameters.json)
+    if(NOT EXISTS "${WORK}/fitted/${f}")
+        message(FATAL_ERROR "fit-thesis did not write ${WORK}/fitted/${f}")
+    endif()
+endforeach()
+expect_run(0 "optimal-l1" "^$" run "${WORK}/fitted/single_plane.json" --method optimal-l1)
+expect_run(2 "^$" "^lexel: error: --case: unknown thesis case 'nope' \\(known: single_plane, simple_geometry, light_from_top, projection_aliasing\\)\n$"
+           fit-thesis --case nope --out "${WORK}/fitted_bad")
+# tables: the fitted scenes, and how far each is from its published table.
+expect_run(0 "^Single Plane Geometry \\(fitted scene fitted/single_plane.json, 1000 visible pixels, 1028 lexels; against the published table: worst angle error 0.19°, worst footprint error 1.2%\\)"
+           "^$" tables --out "${WORK}/tables")
 message(STATUS "cli tests passed")
 
 # --metric chooses the flatland objective; a 3D case says so instead of ignoring it.

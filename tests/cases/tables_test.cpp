@@ -1,4 +1,6 @@
-// The thesis's findings (Chong 2003, ch. 4.1.3), asserted on the shipped reconstructions.
+// The thesis's findings (Chong 2003, ch. 4.1.3), asserted on the scenes `lexel tables` runs (the
+// fitted scenes in cases/flatland/fitted/, which match the published tables better than the
+// hand reconstructions).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,8 +30,8 @@ class ThesisTables : public ::testing::Test {
 };
 std::vector<TableResult>* ThesisTables::results_ = nullptr;
 
-// Single plane: the optimal footprint is constant while PSM and Normal are worse, and PSM's lexel
-// plane is near 90°.
+// Single plane: the optimal footprint is constant while Normal is worse and PSM worse still
+// (the thesis: 1.22× and 1.96× the optimal average), and PSM's lexel plane is near 90°.
 TEST_F(ThesisTables, SinglePlaneOptimumIsConstant) {
     const auto& r = Case("Single Plane Geometry");
     for (const char* m : {"optimal-l1", "optimal-l2", "optimal-linf"}) {
@@ -39,7 +41,8 @@ TEST_F(ThesisTables, SinglePlaneOptimumIsConstant) {
     }
     const double optimal = r.Method("optimal-l1").stats.average;
     EXPECT_GT(r.Method("psm-thesis").stats.average, 1.5 * optimal);
-    EXPECT_GT(r.Method("normal").stats.average, 1.5 * optimal);
+    EXPECT_GT(r.Method("normal").stats.average, 1.1 * optimal);
+    EXPECT_GT(r.Method("psm-thesis").stats.average, r.Method("normal").stats.average);
     EXPECT_LT(90.0 - std::abs(r.Method("psm-thesis").lexelPlaneDeg), 5.0);
 }
 
