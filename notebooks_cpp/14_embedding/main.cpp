@@ -1,0 +1,114 @@
+// 14 — Embedding lexel in a renderer: a light matrix from a depth buffer, public API only.
+//
+// What a renderer does each frame for one shadow-casting light (README, "Use lexel in your
+// renderer"; Chong & Gortler Algorithm 1 steps 1–5):
+//   1. render the camera's depth buffer at low resolution and read it back, with the matrix
+//      Q = viewport · projection · view that made it: CameraBufferFromDepth, MakeReadback;
+//   2. shade the readback with the light's current (standard) shadow map: a mask of lit and
+//      shadowed pixels, from which MakeLightSamples keeps the pixels at shadow boundaries;
+//   3. OptimizeLightMatrix from the standard axis (InitialLightAxis) → the light matrix P;
+//   4. ClipFromWorld(P) → the 4×4 the rasterizer renders the shadow map with.
+// The renderer here is a toy (notebooks_cpp/common/toy_renderer.h): a floor and a box traced
+// exactly; lexel needs nothing from it but the depth buffer, Q and the mask. No harness. The
+// checks: h falls from the standard map to the optimized one, and through the 4×4 every visible
+// point lands inside the shadow map (NDC x, y in [−1, 1], w > 0) at a depth in [0, 1].
+//
+// Public API only: lexel::spatial (<lexel/spatial.h>). Toy renderer and figure: the programs' own.
+//
+//   ./build/notebooks_cpp/notebook_14_embedding [OUT_DIR]    (default out/notebooks/)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "lexel/spatial.h"
+#include "notebook.h"
+#include "plot.h"
+#include "toy_renderer.h"
+
+using namespace lexel::spatial;
+
+// Boundary samples (red) and every 5th visible point (grey) in the map's texels under `matrix`.
+lexel::notebooks::Panel MapPanel(const char* title, const LightMatrix& matrix,
+                                 const LightSamples& samples) {
+    using lexel::notebooks::Series;
+    Series visible("visible points", Series::Style::kPoints, lexel::notebooks::Rgb{0.6, 0.6, 0.6},
+                   1);
+    Series boundary("boundary samples", Series::Style::kPoints, lexel::notebooks::PaletteColour(0),
+                    1.6);
+    Series frame("", Series::Style::kPolygon, lexel::notebooks::Rgb{}, 1);
+    const double corners[4][2] = {{0, 0}, {1024, 0}, {1024, 1024}, {0, 1024}};  // the map's frame
+    for (const auto& c : corners) frame.Add(c[0], c[1]);
+    for (std::size_t i = 0; i < samples.lsRelevant.size(); i += 5) {
+        const glm::dvec2 u = matrix.Map(samples.lsRelevant[i]);
+        visible.Add(u.x, u.y);
+    }
+    for (const glm::dvec3& lsX : samples.lsX) {
+        const glm::dvec2 u = matrix.Map(lsX);
+        boundary.Add(u.x, u.y);
+    }
+    return {title, "u1 (texels)", "u2 (texels)", false, true, {frame, visible, boundary}};
+}
+
+int main(int argc, char** argv) {
+    const auto outDir = lexel::notebooks::OutputDirectory(argc, argv);
+    const lexel::notebooks::ToyRenderer renderer({160, 120});
+
+    // 1. The camera pass: window depth per pixel and Q.
+    const Resolution res = renderer.resolution();
+    const glm::dmat4 screenFromWorld = renderer.ScreenFromWorld();
+    const std::vector<float> depth = renderer.DepthBuffer();
+    const Readback readback =
+        MakeReadback(CameraBufferFromDepth(res, depth, screenFromWorld), screenFromWorld);
+
+    // 2. The light's frame over the scene's bounds, and the renderer's shadow mask.
+    const Bounds wsBounds = renderer.SceneBounds();
+    const LightSpace lightSpace(Light{Light::Type::kPoint, renderer.wsLight(), {}}, wsBounds);
+    const LightSamples samples =
+        MakeLightSamples(readback, lightSpace, renderer.ShadowMask(readback));
+
+    // 3. Algorithm 1 from the standard axis.
+    const Resolution map{1024, 1024};
+    const glm::dvec3 p4 = InitialLightAxis(lightSpace, wsBounds, readback.wsRelevant);
+    const OptimizerResult optimal = OptimizeLightMatrix(samples, p4, map);
+    const LightMatrix standard = *FitMapToPoints(p4, samples.lsRelevant, map, {0.02});
+
+    // 4. The 4×4 for the rasterizer, depth in [0, 1] between 1 and 60 world units from the light.
+    const glm::dmat4 clipFromWorld =
+        ClipFromWorld(lightSpace, optimal.matrix, map, {1.0, 60.0}, ClipDepth::kZeroToOne);
+
+    std::printf("%zu of %zu readback pixels see the scene; %zu boundary samples for the light\n",
+                readback.wsRelevant.size(), res.Count(), samples.lsX.size());
+    std::printf("h, standard map → optimized: %.6g → %.6g (%zu iterations)\n",
+                optimal.hAfterIteration.front(), optimal.h, optimal.hAfterIteration.size() - 1);
+    std::printf("optical axis p4 (light space): (%.4f, %.4f, %.4f) → (%.4f, %.4f, %.4f)\n", p4.x,
+                p4.y, p4.z, optimal.matrix.p4.x, optimal.matrix.p4.y, optimal.matrix.p4.z);
+    std::printf("clip from world (rows):\n");
+    for (int r = 0; r < 4; ++r)
+        std::printf("  %10.5f %10.5f %10.5f %10.5f\n", clipFromWorld[0][r], clipFromWorld[1][r],
+                    clipFromWorld[2][r], clipFromWorld[3][r]);
+
+    double worstNdc = 0, lowDepth = INFINITY, highDepth = -INFINITY, leastW = INFINITY;
+    for (const glm::dvec3& wsPoint : readback.wsRelevant) {
+        const glm::dvec4 clip = clipFromWorld * glm::dvec4(wsPoint, 1.0);
+        leastW = std::min(leastW, clip.w);
+        worstNdc = std::max({worstNdc, std::abs(clip.x / clip.w), std::abs(clip.y / clip.w)});
+        lowDepth = std::min(lowDepth, clip.z / clip.w),
+        highDepth = std::max(highDepth, clip.z / clip.w);
+    }
+    lexel::notebooks::Claims claims;
+    claims.Check(
+        optimal.h < optimal.hAfterIteration.front() &&
+            std::abs(Energy(standard, samples) / optimal.hAfterIteration.front() - 1) < 1e-9,
+        "h falls from the standard map's %.6g to %.6g", optimal.hAfterIteration.front(), optimal.h);
+    claims.Check(leastW > 0 && worstNdc <= 1 + 1e-9 && lowDepth >= 0 && highDepth <= 1,
+                 "every visible point in the map: w >= %.3g > 0, |NDC x, y| <= %.9f, depth in "
+                 "[%.4f, %.4f]",
+                 leastW, worstNdc, lowDepth, highDepth);
+    const auto figure = outDir / "14_embedding.png";
+    lexel::notebooks::WritePlot(figure,
+                                {MapPanel("standard map (the start)", standard, samples),
+                                 MapPanel("optimized map (Algorithm 1)", optimal.matrix, samples)});
+    std::printf("wrote %s\n", figure.c_str());
+    return claims.ExitStatus();
+}

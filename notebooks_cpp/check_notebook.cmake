@@ -1,0 +1,16 @@
+# The test of one teaching program: run PROGRAM with the scratch directory OUT (emptied first);
+# pass when it exits 0 (it checks its own claim) and OUT/FIGURE is a PNG file.
+file(REMOVE_RECURSE ${OUT})
+execute_process(COMMAND ${PROGRAM} --out ${OUT} RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${PROGRAM} exited with ${status}")
+endif()
+if(NOT EXISTS ${OUT}/${FIGURE})
+    message(FATAL_ERROR "${PROGRAM} did not write ${OUT}/${FIGURE}")
+endif()
+file(SIZE ${OUT}/${FIGURE} size)
+file(READ ${OUT}/${FIGURE} signature LIMIT 16 HEX)
+if(size LESS 1000 OR NOT signature MATCHES "^89504e470d0a1a0a0000000d49484452")
+    message(FATAL_ERROR "${OUT}/${FIGURE} is not a PNG (signature and IHDR) (${size} bytes, starts ${signature})")
+endif()
+message(STATUS "${FIGURE}: PNG, ${size} bytes")
