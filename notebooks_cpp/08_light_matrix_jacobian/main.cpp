@@ -12,7 +12,8 @@
 // finite differences, and h. The checks: eq. 9 is the derivative of u along the readback's D_j
 // (1e-7); it matches u through the renderer's exact surface to the depth buffer's float precision
 // (1e-3); ||J⁻¹||_F² by hand = SampleBadness; h = Σ SampleBadness; a map with twice the texels
-// per side (J doubles) divides h by 4.
+// per side (J doubles) divides h by 4. The figure: ||J⁻¹||_F² at every readback pixel; it is
+// largest on the near floor, where one texel covers the most pixels (perspective aliasing).
 //
 // Public API: lexel::spatial (MakeReadback, LightSpace, MakeLightSamples, FitMapToPoints,
 // SampleJacobian, SampleBadness, Energy). The toy renderer and the figure are the programs' own.
@@ -129,7 +130,8 @@ int main(int argc, char** argv) {
     for (std::uint32_t pixel : samples.pixel)
         rgb[3 * pixel] = 1, rgb[3 * pixel + 1] = rgb[3 * pixel + 2] = 0;
     char caption[96];
-    std::snprintf(caption, sizeof caption, "log10 ||J^-1||^2 from %.2g to %.2g; red: samples",
+    std::snprintf(caption, sizeof caption,
+                  "||J^-1||^2 from %.2g (purple) to %.2g (yellow), log scale; red: samples",
                   std::pow(10, lo), std::pow(10, hi));
     const auto figure = outDir / "08_light_matrix_jacobian.png";
     lexel::notebooks::WritePictures(figure, {{caption, res.width, res.height, 3, rgb}}, 1, 660);
