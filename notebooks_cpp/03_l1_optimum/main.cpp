@@ -101,12 +101,10 @@ int main(int argc, char** argv) {
     marks.Add(0.0, initial);
     marks.Add(std::atan(exact.t) * 180 / std::numbers::pi, exact.objective);
     const auto figure = outDir / "03_l1_optimum.png";
-    notebooks::WritePlot(figure, {{"L1 objective over the valid lexel planes",
-                                   "film turn x from the normal map (degrees)",
-                                   "Σ f",
-                                   false,
-                                   false,
-                                   {curve, marks}}});
+    notebooks::Panel plot("L1 objective over the valid lexel planes",
+                          "film turn x from the normal map (degrees)", "Σ f");
+    plot.series = {curve, marks};
+    notebooks::WritePlot(figure, {plot});
     std::printf("wrote %s\n", figure.c_str());
     return claims.ExitStatus();
 }

@@ -83,12 +83,10 @@ int main(int argc, char** argv) {
         if (value < 1.25 * initial) curve.Add(std::atan(t) * deg, value);
     }
     const auto figure = outDir / "04_l2_optimum.png";
-    notebooks::WritePlot(figure, {{"L2 over the valid lexel planes (three solvers, one optimum)",
-                                   "film turn x from the normal map (degrees)",
-                                   "Σ f²",
-                                   false,
-                                   false,
-                                   {curve, optima}}});
+    notebooks::Panel plot("L2 over the valid lexel planes (three solvers, one optimum)",
+                          "film turn x from the normal map (degrees)", "Σ f²");
+    plot.series = {curve, optima};
+    notebooks::WritePlot(figure, {plot});
     std::printf("wrote %s\n", figure.c_str());
     return claims.ExitStatus();
 }

@@ -135,14 +135,11 @@ int main(int argc, char** argv) {
         return std::vector<Vector2d>(c.begin(), c.end());
     };
     const auto figure = outDir / "09_hull_rectangle_shear.png";
-    notebooks::WritePlot(figure, {{"visible points on the plane p4·X = 1",
-                                   "y1",
-                                   "y2",
-                                   false,
-                                   true,
-                                   {cloud, Outline("min-area rectangle", corners(rectangle)),
-                                    Outline("min-area parallelogram", corners(parallelogram)),
-                                    Outline("convex hull", hull)}}});
+    notebooks::Panel plot("visible points on the plane p4·X = 1", "y1", "y2", false, true);
+    plot.series = {cloud, Outline("min-area rectangle", corners(rectangle)),
+                   Outline("min-area parallelogram", corners(parallelogram)),
+                   Outline("convex hull", hull)};
+    notebooks::WritePlot(figure, {plot});
     std::printf("wrote %s\n", figure.c_str());
     return claims.ExitStatus();
 }

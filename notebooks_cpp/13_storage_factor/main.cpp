@@ -83,14 +83,12 @@ int main(int argc, char** argv) {
     claims.Check(least > optimal && std::abs(optimal - std::log(ratio) / (2 * tanTheta)) < 1e-12,
                  "no warp beats S_opt = ln(f/n)/(2 tanθ) = %.6f (least %.6f)", optimal, least);
     const auto figure = outDir / "13_storage_factor.png";
-    lexel::notebooks::WritePlot(
-        figure, {{"Fig. 6: maximum errors (normalized)", "η", "M / max", false, false, {mx, mz}},
-                 {"storage factor S against η (n = 1, f = 100)",
-                  "η",
-                  "S (map texels per image pixel)",
-                  true,
-                  false,
-                  {storage, best}}});
+    lexel::notebooks::Panel errors("Fig. 6: maximum errors (normalized)", "η", "M / max");
+    lexel::notebooks::Panel storagePanel("storage factor S against η (n = 1, f = 100)", "η",
+                                         "S (map texels per image pixel)", true);
+    errors.series = {mx, mz};
+    storagePanel.series = {storage, best};
+    lexel::notebooks::WritePlot(figure, {errors, storagePanel});
     std::printf("wrote %s\n", figure.c_str());
     return claims.ExitStatus();
 }
