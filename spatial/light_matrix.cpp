@@ -201,6 +201,48 @@ std::optional<std::vector<glm::dvec2>> ProjectToPlaneInFront(const glm::dvec3& p
     return planePoints;
 }
 
+std::optional<LightMatrix> FitMapBoxToPoints(const glm::dvec3& p4, const glm::dvec2& axisU,
+                                             std::span<const glm::dvec3> lsPoints, Resolution map,
+                                             const FitOptions& options) {
+    const std::optional<std::vector<glm::dvec2>> planePoints = ProjectToPlaneInFront(p4, lsPoints);
+    if (!planePoints || planePoints->empty()) return std::nullopt;
+    const glm::dvec2 axisV = Perp(axisU);
+    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const glm::dvec2& y : *planePoints) {
+        const glm::dvec2 st(glm::dot(axisU, y), glm::dot(axisV, y));
+        lo = glm::min(lo, st);
+        hi = glm::max(hi, st);
+    }
+    glm::dvec2 center = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    double margin = options.margin;
+    if (options.snapUnit > 0.0) {
+        const double unit = options.snapUnit;
+        const int size[2] = {map.width, map.height};
+        for (int a = 0; a < 2; ++a) {
+            const double tight = half[a], grown = std::max(tight * (1.0 + margin), 1e-9 * unit);
+            double snapped = unit * std::exp2(std::ceil(std::log2(grown / unit)));
+            double snappedCenter = center[a];
+            // The centre moves by up to half a texel: grow until the points still fit.
+            for (int doubling = 0; doubling < 64; ++doubling, snapped *= 2.0) {
+                const double texel = 2.0 * snapped / size[a];
+                snappedCenter = texel * std::round(center[a] / texel);
+                if (std::abs(snappedCenter - center[a]) + tight <= snapped) break;
+            }
+            half[a] = snapped;
+            center[a] = snappedCenter;
+        }
+        margin = 0.0;
+    }
+    const detail::PlaneFrame<double> frame{
+        {axisU.x, axisU.y}, {axisV.x, axisV.y}, center.x, center.y, half.x, half.y};
+    glm::dvec3 b1, b2;
+    PlaneBasis(p4, &b1, &b2);
+    LightMatrix m;
+    m.p4 = p4;
+    detail::AffineRowsFromFrame(&p4[0], &b1[0], &b2[0], frame, map, margin, &m.p1[0], &m.p2[0]);
+    return m;
+}
+
 std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
                                           std::span<const glm::dvec3> lsPoints, Resolution map,
                                           const FitOptions& options) {

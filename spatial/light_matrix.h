@@ -80,6 +80,11 @@ struct FitOptions {
     // minimum-area enclosing parallelogram instead of the rectangle (see FitMapToPoints). false
     // keeps the rectangle fit bit for bit.
     bool shear = false;
+    // FitMapBoxToPoints only: when > 0 (in plane units), every half extent, margin included, is
+    // rounded up to snapUnit · 2^m and the centre to a whole texel, so that a camera moving in a
+    // fixed direction shifts the map by whole texels and its shadows do not shimmer (SDSM §5.3;
+    // meaningful for directional lights, whose plane units are world units over the frame's s).
+    double snapUnit = 0.0;
 };
 
 // The affine freedoms for optical axis p4 (report Algorithm 1 step 4b-ii; Brabec et al. 2002):
@@ -92,6 +97,15 @@ struct FitOptions {
 std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
                                           std::span<const glm::dvec3> lsPoints, Resolution map,
                                           const FitOptions& options = {});
+
+// The axis-aligned box instead of the minimum-area rectangle, its first map axis along the unit
+// plane direction `axisU` (in PlaneBasis(p4) coordinates), the second turned +90° from it: the
+// light-space bounding box of SDSM (Lauritzen et al. 2011 §4), grown by options.margin (and
+// snapped with options.snapUnit), with a 1e-9 sliver for a zero extent. options.shear is ignored.
+// nullopt as FitMapToPoints.
+std::optional<LightMatrix> FitMapBoxToPoints(const glm::dvec3& p4, const glm::dvec2& axisU,
+                                             std::span<const glm::dvec3> lsPoints, Resolution map,
+                                             const FitOptions& options = {});
 
 // The same fit from points already on the plane p4·X = 1, in the orthonormal plane basis
 // (b1, b2) returned by PlaneBasis(p4): y = (b1·X, b2·X) / (p4·X).

@@ -24,6 +24,18 @@ namespace lexel::spatial {
 
 namespace {
 
+// Eq. (7): dW/dx^j = ∂W/∂x^j + ∂W/∂x³ · ∂x³/∂x^j at screen point (x¹, x², x³).
+void ChainRule(const glm::dmat4& worldFromScreen, glm::dvec3 xs, double dz1, double dz2,
+               glm::dvec3* dWdx1, glm::dvec3* dWdx2) {
+    const glm::dvec4 hs = worldFromScreen * glm::dvec4(xs, 1.0);
+    const glm::dvec3 ws = glm::dvec3(hs) / hs.w;
+    glm::dvec3 dW[3];
+    for (int k = 0; k < 3; ++k)
+        dW[k] = (glm::dvec3(worldFromScreen[k]) - ws * worldFromScreen[k].w) / hs.w;
+    *dWdx1 = dW[0] + dW[2] * dz1;
+    *dWdx2 = dW[1] + dW[2] * dz2;
+}
+
 // Eq. (7) at covered pixel i = (x, y) whose four neighbours are covered; false where the depth is
 // not smooth there.
 bool PixelDerivatives(const CameraBuffer& buf, const glm::dmat4& worldFromScreen, int x, int y,
@@ -38,13 +50,7 @@ bool PixelDerivatives(const CameraBuffer& buf, const glm::dmat4& worldFromScreen
     if (std::abs(ddz1) > kSmoothness * std::abs(dz1) + kDepthNoise ||
         std::abs(ddz2) > kSmoothness * std::abs(dz2) + kDepthNoise)
         return false;
-    const glm::dvec4 hs = worldFromScreen * glm::dvec4(x + 0.5, y + 0.5, z, 1.0);
-    const glm::dvec3 ws = glm::dvec3(hs) / hs.w;
-    glm::dvec3 dW[3];
-    for (int k = 0; k < 3; ++k)
-        dW[k] = (glm::dvec3(worldFromScreen[k]) - ws * worldFromScreen[k].w) / hs.w;
-    *dWdx1 = dW[0] + dW[2] * dz1;
-    *dWdx2 = dW[1] + dW[2] * dz2;
+    ChainRule(worldFromScreen, {x + 0.5, y + 0.5, z}, dz1, dz2, dWdx1, dWdx2);
     return true;
 }
 
@@ -76,6 +82,32 @@ Readback MakeReadback(CameraBuffer buffer, const glm::dmat4& screenFromWorld) {
     rb.wsRelevantHull = RelevantHullVertices(buf);
     rb.relevantHullMs = hullTime.Ms();
     return rb;
+}
+
+// On the plane ν·(W, 1) = 0, ν = (n, -n·P), the screen point h = Q⁻¹ (x¹, x², x³, 1) satisfies
+// ν·h = 0, which is affine in (x¹, x², x³): x³ = -(ν·q_0 x¹ + ν·q_1 x² + ν·q_3) / ν·q_2, so
+// ∂x³/∂x^j = -ν·q_j / ν·q_2 (q_k the columns of Q⁻¹) and eq. (7) is exact.
+void PlaneDerivatives(const CameraBuffer& buffer, const glm::dmat4& screenFromWorld,
+                      std::vector<glm::dvec3>* dWdx1, std::vector<glm::dvec3>* dWdx2) {
+    const std::size_t n = buffer.resolution.Count();
+    dWdx1->assign(n, glm::dvec3(0.0));
+    dWdx2->assign(n, glm::dvec3(0.0));
+    const glm::dmat4 worldFromScreen = glm::inverse(screenFromWorld);
+    const int w = buffer.resolution.width;
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec3& wsNormal = buffer.wsNormal[i];
+        if (!buffer.Covered(i) || wsNormal == glm::dvec3(0.0)) continue;
+        const glm::dvec4 plane(wsNormal, -glm::dot(wsNormal, buffer.wsPosition[i]));
+        const double along = glm::dot(plane, worldFromScreen[2]);
+        if (!(std::abs(along) > 0.0)) continue;  // the plane contains the eye ray
+        const glm::dvec2 xs(static_cast<double>(i % w) + 0.5, static_cast<double>(i / w) + 0.5);
+        const double x3 =
+            -(glm::dot(plane, worldFromScreen[0]) * xs.x +
+              glm::dot(plane, worldFromScreen[1]) * xs.y + glm::dot(plane, worldFromScreen[3])) /
+            along;
+        ChainRule(worldFromScreen, {xs, x3}, -glm::dot(plane, worldFromScreen[0]) / along,
+                  -glm::dot(plane, worldFromScreen[1]) / along, &(*dWdx1)[i], &(*dWdx2)[i]);
+    }
 }
 
 // The pre-filter. The camera pass gives under each pixel centre the point of its triangle on the

@@ -63,5 +63,12 @@ Readback MakeReadback(CameraBuffer buffer, const glm::dmat4& screenFromWorld);
 // strictly between two row or column neighbours that show the same triangle are dropped before
 // Qhull: they cannot be vertices (proof in readback.cpp).
 std::vector<glm::dvec3> RelevantHullVertices(const CameraBuffer& buffer);
+// ∂W/∂x¹, ∂W/∂x² (world units per pixel) at every covered pixel of a camera pass with normals,
+// exact for the plane through the pixel's point with its normal (eq. 7 with ∂x³/∂x^j from that
+// plane instead of the z-buffer's differences, so no neighbour is needed): the final frame's
+// footprints (evaluation.h). Zero where the pixel is empty, has no normal, or its plane contains
+// the eye ray.
+void PlaneDerivatives(const CameraBuffer& buffer, const glm::dmat4& screenFromWorld,
+                      std::vector<glm::dvec3>* dWdx1, std::vector<glm::dvec3>* dWdx2);
 
 }  // namespace lexel::spatial

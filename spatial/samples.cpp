@@ -40,6 +40,7 @@ LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightS
             s.dXdx1.push_back(lsFromWs * readback.dWdx1[i]);
             s.dXdx2.push_back(lsFromWs * readback.dWdx2[i]);
             s.pixel.push_back(static_cast<std::uint32_t>(i));
+            s.wsX.push_back(buf.wsPosition[i]);
         }
     }
     return s;
@@ -54,13 +55,13 @@ void SampleJacobian(const LightMatrix& matrix, const glm::dvec3& lsX, const glm:
 }
 
 double SampleBadness(const LightMatrix& matrix, const glm::dvec3& lsX, const glm::dvec3& dXdx1,
-                     const glm::dvec3& dXdx2) {
+                     const glm::dvec3& dXdx2, Badness badness) {
     if (!InFront(matrix.p4, lsX)) return std::numeric_limits<double>::infinity();
     glm::dvec2 r1, r2;
     SampleJacobian(matrix, lsX, dXdx1, dXdx2, &r1, &r2);
     Eigen::Matrix2d j;
     j << r1.x, r1.y, r2.x, r2.y;
-    return JacobianBadness(j, Badness::kFrobeniusInverseSquared);
+    return JacobianBadness(j, badness);
 }
 
 double Energy(const LightMatrix& matrix, const LightSamples& samples) {

@@ -14,6 +14,7 @@
 #include <span>
 #include <vector>
 
+#include "lexel/solvers/footprint_metrics.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
 #include "lexel/spatial/readback.h"
@@ -30,6 +31,7 @@ struct LightSamples {
     std::vector<glm::dvec3> lsX;           // boundary samples in light space
     std::vector<glm::dvec3> dXdx1, dXdx2;  // ∂X/∂x¹, ∂X/∂x² at each
     std::vector<std::uint32_t> pixel;      // readback pixel of each
+    std::vector<glm::dvec3> wsX;           // the world point of each
     std::vector<glm::dvec3> lsRelevant;    // every visible point in light space
     // The readback's wsRelevantHull in light space: generators of the cone of lsRelevant, all
     // the optimizer needs of it (optimizer.h). Empty (samples built by hand): it uses lsRelevant.
@@ -46,10 +48,11 @@ LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightS
 void SampleJacobian(const LightMatrix& matrix, const glm::dvec3& lsX, const glm::dvec3& dXdx1,
                     const glm::dvec3& dXdx2, glm::dvec2* row1, glm::dvec2* row2);
 
-// ||J⁻¹||_F² of one sample (eq. 6's summand): +inf where J is singular or the sample is not in
+// ||J⁻¹||_F² of one sample (eq. 6's summand), or another badness of J⁻¹ (footprint_metrics.h:
+// σ₁(J⁻¹) is the most pixels one texel spans): +inf where J is singular or the sample is not in
 // front of p4.
 double SampleBadness(const LightMatrix& matrix, const glm::dvec3& lsX, const glm::dvec3& dXdx1,
-                     const glm::dvec3& dXdx2);
+                     const glm::dvec3& dXdx2, Badness badness = Badness::kFrobeniusInverseSquared);
 
 // h(P) = Σ over the samples (eq. 6); +inf if any sample is not in front.
 double Energy(const LightMatrix& matrix, const LightSamples& samples);
