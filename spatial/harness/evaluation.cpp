@@ -1,5 +1,7 @@
 #include "lexel/spatial/harness/evaluation.h"
 
+#include <algorithm>
+#include <cmath>
 #include <span>
 
 #include "lexel/solvers/errors.h"
@@ -18,6 +20,11 @@ Evaluator::Evaluator(const Scene& scene, const RenderBackend& backend)
         throw DomainError(Subject::kCamera, "no geometry is visible at the readback resolution (" +
                                                 std::to_string(scene.readback.width) + "×" +
                                                 std::to_string(scene.readback.height) + ")");
+    PlaneDerivatives(frame_, scene.camera.ScreenFromWorld(scene.camera.resolution), &frameDWdx1_,
+                     &frameDWdx2_);
+    frameDepth_.assign(frame_.wsPosition.size(), 0.0);
+    for (std::size_t i = 0; i < frameDepth_.size(); ++i)
+        if (frame_.Covered(i)) frameDepth_[i] = PlanarEyeDepth(scene.camera, frame_.wsPosition[i]);
     caster_ = std::make_unique<RayCaster>(scene.geometry);
 }
 
@@ -65,7 +72,93 @@ std::int64_t CountWrong(std::span<const Shade> shades, std::span<const std::uint
     return wrong;
 }
 
+// The frame shaded through one map, or through cascades: per pixel the shade of the cascade
+// CascadeFor picks by its planar eye depth, and that cascade.
+struct FrameShading {
+    std::vector<Shade> shades;
+    std::vector<ShadowMap> maps;        // one per cascade (one for a single map)
+    std::vector<std::uint8_t> cascade;  // per pixel: the serving map's index
+    std::vector<std::uint8_t> outside;  // per pixel: 1 where no cascade's depth interval holds it
+};
+
+FrameShading ShadeThroughCascades(const RenderBackend& backend, const CameraBuffer& frame,
+                                  const LightSpace& lightSpace, std::span<const Cascade> cascades,
+                                  std::span<const double> frameDepth) {
+    FrameShading out;
+    std::vector<std::vector<Shade>> perCascade;
+    for (const Cascade& c : cascades) {
+        out.maps.push_back(backend.RenderShadowMap(lightSpace, c.matrix, c.map));
+        perCascade.push_back(backend.ShadePixels(frame, lightSpace, out.maps.back()));
+    }
+    const std::size_t n = frame.triangle.size();
+    out.shades.assign(n, Shade::kEmpty);
+    out.cascade.assign(n, 0);
+    out.outside.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!frame.Covered(i)) continue;
+        bool covered = true;
+        const std::size_t c = CascadeFor(cascades, frameDepth[i], frame.wsPosition[i], &covered);
+        out.shades[i] = perCascade[c][i];
+        out.cascade[i] = static_cast<std::uint8_t>(c);
+        out.outside[i] = !covered;
+    }
+    return out;
+}
+
+FrameShading ShadeThroughMap(const RenderBackend& backend, const CameraBuffer& frame,
+                             const LightSpace& lightSpace, const LightMatrix& matrix,
+                             Resolution resolution) {
+    FrameShading out;
+    out.maps.push_back(backend.RenderShadowMap(lightSpace, matrix, resolution));
+    out.shades = backend.ShadePixels(frame, lightSpace, out.maps.back());
+    out.cascade.assign(out.shades.size(), 0);
+    out.outside.assign(out.shades.size(), 0);
+    return out;
+}
+
+struct Footprints {
+    double mean = 0.0, max = 0.0;
+    std::int64_t uncovered = 0;
+};
+
+// σ₁(J⁻¹) over the counted pixels of a shading (evaluation.h); a counted pixel outside its
+// cascade's depth interval, behind its map's plane or outside its texels is uncovered instead.
+Footprints MeasureFootprints(const LightSpace& lightSpace, const CameraBuffer& frame,
+                             std::span<const glm::dvec3> dWdx1, std::span<const glm::dvec3> dWdx2,
+                             const FrameShading& shading) {
+    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+    Footprints f;
+    double sum = 0.0;
+    std::int64_t measured = 0;
+    for (std::size_t i = 0; i < shading.shades.size(); ++i) {
+        if (shading.shades[i] != Shade::kLit && shading.shades[i] != Shade::kShadowed) continue;
+        const ShadowMap& map = shading.maps[shading.cascade[i]];
+        const glm::dvec3 lsX = lightSpace.ToLight(frame.wsPosition[i]);
+        const bool inFront = InFront(map.matrix.p4, lsX);
+        const glm::dvec2 u = inFront ? map.matrix.Map(lsX) : glm::dvec2(-1.0);
+        if (shading.outside[i] || !(u.x >= 0.0 && u.y >= 0.0 && u.x < map.resolution.width &&
+                                    u.y < map.resolution.height)) {
+            ++f.uncovered;
+            continue;
+        }
+        const double sigma = SampleBadness(map.matrix, lsX, lsFromWs * dWdx1[i],
+                                           lsFromWs * dWdx2[i], Badness::kLargestSingularValue);
+        if (!std::isfinite(sigma)) continue;  // J singular: the pixel's plane contains its ray
+        sum += sigma;
+        f.max = std::max(f.max, sigma);
+        ++measured;
+    }
+    f.mean = measured > 0 ? sum / static_cast<double>(measured) : 0.0;
+    return f;
+}
+
 }  // namespace
+
+std::vector<Shade> Evaluator::ShadeFrame(const Light& light, const LightMatrix& matrix) const {
+    const LightSpace lightSpace(light, bounds_);
+    return backend_.ShadePixels(frame_, lightSpace,
+                                backend_.RenderShadowMap(lightSpace, matrix, scene_.shadowMap));
+}
 
 std::int64_t Evaluator::Misclassified(const Light& light, const LightMatrix& matrix) const {
     const LightSpace lightSpace(light, bounds_);
@@ -81,6 +174,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     const LightSpace lightSpace(light, bounds_);
 
     MethodContext context;
+    context.partitions = scene_.partitions;
     context.baseline = MakeBaselineContext(scene_, lightSpace, bounds_, readback_.wsRelevant,
                                            readback_.wsRelevantHull);
 
@@ -129,28 +223,76 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
         const Stopwatch timer;
         const MethodMatrix computed = ComputeLightMatrix(method, context);
         m.ms = timer.Ms();
-        m.matrix = computed.matrix;
         if (computed.optimizer) {
             m.hAfterIteration = computed.optimizer->hAfterIteration;
             m.hBeforeRefine = computed.optimizer->hBeforeRefine;
         }
         m.winner = computed.winner;
-        ShadowMap map = backend_.RenderShadowMap(lightSpace, m.matrix, scene_.shadowMap);
-        std::vector<Shade> shades = backend_.ShadePixels(frame_, lightSpace, map);
-        m.misclassified = CountWrong(shades, truth, &m.falseShadow);
-        m.h = Energy(m.matrix, out.samples);
-        for (std::size_t s = 0; s < grazing.size(); ++s)
-            if (grazing[s])
-                m.hGrazing += SampleBadness(m.matrix, out.samples.lsX[s], out.samples.dXdx1[s],
-                                            out.samples.dXdx2[s]);
-        if (options.keepBuffers) {
-            m.shades = std::move(shades);
-            m.map = std::move(map);
-        }
+        Measure(lightSpace, computed, out, grazing, truth, options.keepBuffers, &m);
         out.methods.push_back(std::move(m));
     }
     if (options.keepBuffers) out.truth = std::move(truth);
     return out;
+}
+
+namespace {
+
+// h of a partitioned method: each sample's badness under the cascade that serves it, summed in
+// sample order (per cascade, and the grazing part).
+void MeasureCascadeEnergy(const Camera& camera, std::span<const Cascade> cascades,
+                          const LightSamples& samples, std::span<const std::uint8_t> grazing,
+                          MethodOutcome* m) {
+    for (std::size_t s = 0; s < samples.lsX.size(); ++s) {
+        const glm::dvec3& ws = samples.wsX[s];
+        const std::size_t c = CascadeFor(cascades, PlanarEyeDepth(camera, ws), ws);
+        const double badness =
+            SampleBadness(cascades[c].matrix, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s]);
+        m->h += badness;
+        m->cascades[c].h += badness;
+        if (grazing[s]) m->hGrazing += badness;
+    }
+}
+
+}  // namespace
+
+void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& computed,
+                        const LightOutcome& light, std::span<const std::uint8_t> grazing,
+                        std::span<const std::uint8_t> truth, bool keepBuffers,
+                        MethodOutcome* m) const {
+    const LightSamples& samples = light.samples;
+    const std::vector<Cascade>& cascades = computed.cascades;
+    m->matrix = computed.matrix;
+    FrameShading shading =
+        cascades.empty()
+            ? ShadeThroughMap(backend_, frame_, lightSpace, computed.matrix, scene_.shadowMap)
+            : ShadeThroughCascades(backend_, frame_, lightSpace, cascades, frameDepth_);
+    m->misclassified = CountWrong(shading.shades, truth, &m->falseShadow);
+    const Footprints footprints =
+        MeasureFootprints(lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
+    m->footprintMean = footprints.mean;
+    m->footprintMax = footprints.max;
+    m->uncovered = footprints.uncovered;
+    if (cascades.empty()) {
+        m->h = Energy(m->matrix, samples);
+        for (std::size_t s = 0; s < grazing.size(); ++s)
+            if (grazing[s])
+                m->hGrazing +=
+                    SampleBadness(m->matrix, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s]);
+    } else {
+        for (const Cascade& c : cascades) {
+            m->cascades.push_back({c, 0, 0.0});
+            m->emptyPartitions += c.visiblePoints == 0;
+        }
+        for (std::size_t i = 0; i < shading.shades.size(); ++i)
+            if (shading.shades[i] == Shade::kLit || shading.shades[i] == Shade::kShadowed)
+                ++m->cascades[shading.cascade[i]].pixels;
+        MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
+    }
+    if (keepBuffers) {
+        m->shades = std::move(shading.shades);
+        m->map = shading.maps.front();
+        if (!cascades.empty()) m->cascadeMaps = std::move(shading.maps);
+    }
 }
 
 }  // namespace lexel::spatial

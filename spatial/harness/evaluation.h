@@ -10,13 +10,22 @@
 //
 // Counted pixels: visible, facing the light (n·l > 0). Pixels facing away are in attached shadow
 // for every method and for the truth alike, so they can never be misclassified.
+//
+// A partitioned method (partitions.h) renders one map per cascade and shades each pixel through
+// the cascade CascadeFor picks by the pixel's planar eye depth; its h sums each sample's badness
+// under the cascade that serves it. Every method's footprint is measured per counted pixel as
+// σ₁(J⁻¹), J = ∂u/∂x in texels of the serving map per frame pixel, with ∂W/∂x exact on the
+// pixel's plane (PlaneDerivatives): the most frame pixels one texel spans, > 1 where the map
+// undersamples the view.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "lexel/spatial/cascades.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
@@ -39,6 +48,14 @@ struct EvaluationOptions {
     bool keepBuffers = false;          // keep shades and maps (for images)
 };
 
+// One cascade of a partitioned method: its matrix, map, depth interval and readback points
+// (cascade.visiblePoints = 0: an empty partition), and what it serves in the frame.
+struct CascadeOutcome {
+    Cascade cascade;
+    std::int64_t pixels = 0;  // counted frame pixels it shades
+    double h = 0.0;           // eq. (6) over the samples it serves
+};
+
 struct MethodOutcome {
     std::string method;
     LightMatrix matrix;
@@ -50,8 +67,16 @@ struct MethodOutcome {
     std::vector<double> hAfterIteration;  // optimal*: h after each Algorithm 1 iteration
     double hBeforeRefine = 0.0;           // optimal-refined: h after the rotation search
     std::string winner;                   // optimal, optimal-refined: the start that won
-    std::vector<Shade> shades;            // per frame pixel, when keepBuffers
-    ShadowMap map;                        // when keepBuffers
+    // Counted pixels no map covers: outside every cascade's depth interval, behind the serving
+    // map's plane or outside its texels (shaded lit, as ShadePoint does).
+    std::int64_t uncovered = 0;
+    double footprintMean = 0.0;  // σ₁(J⁻¹) over the covered counted pixels (frame pixels/texel)
+    double footprintMax = 0.0;             // ... its maximum
+    std::vector<CascadeOutcome> cascades;  // partitioned methods: per cascade
+    int emptyPartitions = 0;               // ... those serving no readback point
+    std::vector<Shade> shades;             // per frame pixel, when keepBuffers
+    ShadowMap map;                         // when keepBuffers (a partitioned method's first)
+    std::vector<ShadowMap> cascadeMaps;    // when keepBuffers, partitioned methods
 };
 
 struct LightOutcome {
@@ -78,6 +103,8 @@ class Evaluator {
 
     // Misclassified counted pixels of any matrix for `light` (renders its map, traces the truth).
     std::int64_t Misclassified(const Light& light, const LightMatrix& matrix) const;
+    // The frame's shades through one matrix, at the scene's shadow-map resolution.
+    std::vector<Shade> ShadeFrame(const Light& light, const LightMatrix& matrix) const;
 
     const Scene& scene() const { return scene_; }
     const CameraBuffer& frame() const { return frame_; }
@@ -87,12 +114,17 @@ class Evaluator {
 
   private:
     std::vector<std::uint8_t> TraceTruth(const class LightSpace& lightSpace) const;
+    void Measure(const LightSpace& lightSpace, const struct MethodMatrix& computed,
+                 const LightOutcome& light, std::span<const std::uint8_t> grazing,
+                 std::span<const std::uint8_t> truth, bool keepBuffers, MethodOutcome* m) const;
 
     const Scene& scene_;
     const RenderBackend& backend_;
     Bounds bounds_;
     CameraBuffer frame_;
     Readback readback_;
+    std::vector<glm::dvec3> frameDWdx1_, frameDWdx2_;  // per frame pixel (PlaneDerivatives)
+    std::vector<double> frameDepth_;                   // per frame pixel: planar eye depth
     std::unique_ptr<RayCaster> caster_;
 };
 

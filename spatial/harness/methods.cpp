@@ -16,17 +16,50 @@ std::vector<std::string> ReportMethodNames() {
     return {"optimal-report", "focused", "lispsm", "plane-optimal", "normal", "psm"};
 }
 
+namespace {
+
+struct NamedPartition {
+    std::string_view name;
+    PartitionScheme scheme;
+    bool snap;
+};
+
+constexpr NamedPartition kPartitions[] = {
+    {"pssm", PartitionScheme::kPssm, false},
+    {"sdsm", PartitionScheme::kSdsm, false},
+    {"sdsm-snap", PartitionScheme::kSdsm, true},
+    {"sdsm-rect", PartitionScheme::kSdsmRect, false},
+    {"zp-lispsm", PartitionScheme::kZpLispsm, false},
+    {"fp-lispsm", PartitionScheme::kFpLispsm, false},
+    {"sdsm-optimal", PartitionScheme::kSdsmOptimal, false},
+};
+
+}  // namespace
+
+std::vector<std::string> PartitionedMethodNames() {
+    std::vector<std::string> names;
+    for (const NamedPartition& p : kPartitions) names.emplace_back(p.name);
+    return names;
+}
+
 std::vector<std::string> SpatialMethodNames() {
     std::vector<std::string> names = FairMethodNames();
     for (const std::string& m : ReportMethodNames())
         if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
     names.push_back("optimal-shear");
+    for (const std::string& m : PartitionedMethodNames()) names.push_back(m);
     return names;
 }
 
 bool IsSpatialMethod(std::string_view name) {
     const std::vector<std::string> names = SpatialMethodNames();
     return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool IsPartitionedMethod(std::string_view name) {
+    for (const NamedPartition& p : kPartitions)
+        if (p.name == name) return true;
+    return false;
 }
 
 BaselineContext MakeBaselineContext(const Scene& scene, const LightSpace& lightSpace,
@@ -71,24 +104,38 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
         options.refine = name == "optimal-refined";
         const std::vector<OptimizerStart> starts = StandardStarts(context.baseline);
         MultiStartResult r = OptimizeFromStarts(*context.samples, starts, map, options);
-        return {r.result.matrix, std::move(r.result), std::move(r.winner)};
+        return {r.result.matrix, std::move(r.result), std::move(r.winner), {}};
     }
     // The report's single start (optimal-report), or with the shear (optimal-shear).
     options.shear = name == "optimal-shear";
     const BaselineContext& b = context.baseline;
     const glm::dvec3 initialP4 = InitialLightAxis(*b.lightSpace, b.wsBounds, b.wsRelevant);
     OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4, map, options);
-    return {r.matrix, std::move(r), {}};
+    return {r.matrix, std::move(r), {}, {}};
+}
+
+MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& context) {
+    if (!context.samples)
+        throw std::invalid_argument(std::string(partition.name) + " needs the samples");
+    PartitionOptions options = context.partitions;
+    options.snap = partition.snap;
+    MethodMatrix m;
+    m.cascades =
+        PartitionedLightMatrices(partition.scheme, context.baseline, *context.samples, options);
+    m.matrix = m.cascades.front().matrix;
+    return m;
 }
 
 }  // namespace
 
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
     for (const NamedBaseline& b : kBaselines)
-        if (b.name == name) return {b.compute(context.baseline, nullptr), std::nullopt, {}};
+        if (b.name == name) return {b.compute(context.baseline, nullptr), std::nullopt, {}, {}};
     if (name == "optimal" || name == "optimal-refined" || name == "optimal-report" ||
         name == "optimal-shear")
         return Optimal(name, context);
+    for (const NamedPartition& p : kPartitions)
+        if (p.name == name) return Partitioned(p, context);
     throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 

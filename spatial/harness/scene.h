@@ -13,6 +13,7 @@
 #include "lexel/spatial/bounds.h"
 #include "lexel/spatial/camera.h"
 #include "lexel/spatial/light_space.h"
+#include "lexel/spatial/partitions.h"
 
 namespace lexel::spatial {
 
@@ -50,6 +51,7 @@ struct Scene {
     std::optional<glm::dvec4> floorPlane;
     std::optional<LightSweep> lightSweep;
     std::vector<Camera> cameraPath;  // optional sequence of poses (temporal hysteresis)
+    PartitionOptions partitions;     // the partitioned methods' k, λ and texel allocation
 };
 
 }  // namespace lexel::spatial
