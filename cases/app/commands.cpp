@@ -18,6 +18,7 @@
 #include "lexel/cases/report/sweep_report.h"
 #include "lexel/cases/report/tables_report.h"
 #include "lexel/cases/report/text_table.h"
+#include "lexel/cases/run/cascade_study.h"
 #include "lexel/cases/run/lowres.h"
 #include "lexel/cases/run/spatial_run.h"
 #include "lexel/cases/run/sweep.h"
@@ -83,6 +84,13 @@ auto WithCaseName(const fs::path& casePath, Body body) {
     }
 }
 
+// The case's scene with --cascades applied.
+spatial::Scene LoadSceneWithCascades(const fs::path& casePath, int cascades) {
+    spatial::Scene scene = LoadSpatialScene(casePath);
+    if (cascades > 0) scene.partitions.count = cascades;
+    return scene;
+}
+
 int RunSpatial(const RunFlags& flags) {
     if (flags.cases.size() != 1)
         throw InputError("run: give one 3D case at a time (got " +
@@ -92,7 +100,7 @@ int RunSpatial(const RunFlags& flags) {
             "--metric: 3D cases are measured by the report's h (eq. 6) and misclassified pixels; "
             "--metric applies to flatland cases");
     const fs::path casePath = flags.cases.front();
-    const spatial::Scene scene = LoadSpatialScene(casePath);
+    const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     SpatialRunOptions options;
     options.methods = SpatialMethods(flags.methods);
     options.mapTruth = flags.mapTruth;
@@ -158,21 +166,50 @@ int RunCommand(const RunFlags& flags) {
     return RunFlatland(flags);
 }
 
+namespace {
+
+// For `lexel sweep --out`: the frame, errors and per-cascade maps of the partitioned methods for
+// the sweep's first light; the number of images.
+int WriteFirstLightCascades(const fs::path& dir, const spatial::Scene& scene,
+                            const SweepResult& r) {
+    SpatialRunOptions options;
+    for (const std::string& m : r.methods)
+        if (spatial::IsPartitionedMethod(m)) options.methods.push_back(m);
+    if (options.methods.empty() || r.lights.empty()) return 0;
+    options.mapTruth = false;
+    options.keepBuffers = true;
+    spatial::Scene first = scene;
+    first.lights = {r.lights.front()};
+    first.cameraPath.clear();
+    const SpatialRun run = RunSpatialCase(first, options);
+    return WriteSpatialImages(dir, first, run);
+}
+
+}  // namespace
+
 int SweepCommand(const SweepFlags& flags) {
     const fs::path casePath = flags.casePath;
-    const spatial::Scene scene = LoadSpatialScene(casePath);
+    const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
+    std::optional<spatial::Light::Type> type;
+    if (!flags.lightType.empty())
+        type = flags.lightType == "point" ? spatial::Light::Type::kPoint
+                                          : spatial::Light::Type::kDirectional;
     const SweepResult r = WithCaseName(casePath, [&] {
-        std::optional<spatial::Light::Type> type;
-        if (!flags.lightType.empty())
-            type = flags.lightType == "point" ? spatial::Light::Type::kPoint
-                                              : spatial::Light::Type::kDirectional;
         const std::vector<spatial::Light> lights = SweepLightsOf(scene, flags.lights, type);
         Progress bar("sweep", lights.size(), "lights");
         return RunSweep(scene, methods, lights, [&] { bar.Step(); });
     });
+    // With --out, the cascade-count study and the first light's cascades are computed before
+    // anything is written.
+    std::optional<CascadeCountStudy> study;
+    if (!flags.outDir.empty() && !CascadeStudyMethods(r.methods).empty())
+        study = WithCaseName(casePath, [&] {
+            Progress bar("partitions k = 1, 2, 4, 8", 3 * r.lights.size(), "lights");
+            return RunCascadeCountStudy(scene, r, [&] { bar.Step(); });
+        });
     if (flags.format == "json")
         std::cout << SweepJson(r).dump(2) << '\n';
     else if (flags.format == "csv")
@@ -189,8 +226,17 @@ int SweepCommand(const SweepFlags& flags) {
     WriteFileAtomically((dir / "table1.csv").string(), SweepCsv(r, report));
     WriteFileAtomically((dir / "sweep.json").string(), SweepJson(r).dump(2) + "\n");
     WriteFileAtomically((dir / "lights.csv").string(), SweepLightsCsv(r));
-    std::cerr << "lexel: wrote table1.md, table1.csv, sweep.json, lights.csv to " << flags.outDir
-              << '\n';
+    std::string also;
+    if (study) {
+        WriteFileAtomically((dir / "cascades.csv").string(), CascadeStudyCsv(*study));
+        WriteCascadeStudyPlot((dir / "cascades.png").string(), *study, r);
+        const int images =
+            WithCaseName(casePath, [&] { return WriteFirstLightCascades(dir, scene, r); });
+        also = ", cascades.csv, cascades.png and " + std::to_string(images) +
+               " images of the first light";
+    }
+    std::cerr << "lexel: wrote table1.md, table1.csv, sweep.json, lights.csv" << also << " to "
+              << flags.outDir << '\n';
     return 0;
 }
 

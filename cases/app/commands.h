@@ -23,6 +23,7 @@ struct RunFlags {
     std::string format = "table";  // table | json | csv
     std::string outDir;            // empty: print only
     bool mapTruth = true;          // 3D: also the report's 4000² truth map
+    int cascades = 0;              // 3D: partitions of the partitioned methods; 0: the case's
 };
 int RunCommand(const RunFlags& flags);
 
@@ -33,6 +34,7 @@ struct SweepFlags {
     std::vector<std::string> methods;  // empty: all
     std::string format = "table";      // table | markdown | csv | json
     std::string outDir;
+    int cascades = 0;  // partitions of the partitioned methods; 0: the case's
 };
 int SweepCommand(const SweepFlags& flags);
 

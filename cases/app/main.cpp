@@ -1,9 +1,9 @@
 // lexel — the command line. Subcommands:
 //   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv]
-//             [--out DIR] [--no-map-truth]          flatland and 3D cases alike
+//             [--out DIR] [--no-map-truth] [--cascades K]   flatland and 3D cases alike
 //   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--methods NAME...]
-//             [--format table|markdown|csv|json]
-//             [--out DIR]                           the 3D report's Table 1
+//             [--cascades K] [--format table|markdown|csv|json]
+//             [--out DIR]          the 3D report's Table 1, the fair and equal-texel tables
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
 //   lexel fit-thesis [--case NAME] [--out DIR] [--seed S] [--samples N] [--starts K] [--explain]
@@ -15,6 +15,7 @@
 
 #include "lexel/cases/app/commands.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/partitions.h"
 
 #ifndef LEXEL_VERSION
 #define LEXEL_VERSION "unknown"
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"table", "json", "csv"}));
     run->add_option("--out", runOut,
                     "Also write <case>.json/.csv/.md (and for 3D cases the images) here");
+    int runCascades = 0;
+    run->add_option("--cascades", runCascades,
+                    "3D: partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
+        ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
     bool noMapTruth = false;
     run->add_flag("--no-map-truth", noMapTruth,
                   "3D cases: skip the report's focused 4000² truth map (rays are the truth)");
@@ -58,7 +63,15 @@ int main(int argc, char** argv) {
     sweep->add_option("--methods,--method", sweepMethods, "Methods to run (default: all)");
     sweep->add_option("--format", sweepFormat, "Output format")
         ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
-    sweep->add_option("--out", sweepOut, "Also write table1.md/.csv, sweep.json, lights.csv here");
+    sweep->add_option(
+        "--out", sweepOut,
+        "Also write table1.md/.csv, sweep.json, lights.csv here (and with partitioned "
+        "methods the k = 1, 2, 4, 8 study and the first light's cascades)");
+    int sweepCascades = 0;
+    sweep
+        ->add_option("--cascades", sweepCascades,
+                     "Partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
+        ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
 
     auto* tables =
         app.add_subcommand("tables", "Reproduce the thesis tables (Chong 2003, ch. 4.1.3)");
@@ -106,10 +119,10 @@ int main(int argc, char** argv) {
     try {
         if (*run)
             return cases::RunCommand({casePaths, methods, metric, run->count("--metric") > 0,
-                                      format, runOut, !noMapTruth});
+                                      format, runOut, !noMapTruth, runCascades});
         if (*sweep)
-            return cases::SweepCommand(
-                {sweepCase, sweepLights, sweepLightType, sweepMethods, sweepFormat, sweepOut});
+            return cases::SweepCommand({sweepCase, sweepLights, sweepLightType, sweepMethods,
+                                        sweepFormat, sweepOut, sweepCascades});
         if (*tables) return cases::TablesCommand(tablesOut, casesDir);
         if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);
         if (*fitThesis) return cases::FitThesisCommand(fitFlags);

@@ -131,13 +131,31 @@ spatial::Light ReadLight(const JsonField& field) {
     return light;
 }
 
+// The partitioned methods' defaults: {"count", "lambda", "allocation"}.
+spatial::PartitionOptions ReadPartitions(const JsonField& field) {
+    field.ExpectObject({}, {"count", "lambda", "allocation"});
+    spatial::PartitionOptions options;
+    if (field.Has("count"))
+        options.count = static_cast<int>(field["count"].Integer(1, spatial::kMaxCascades));
+    if (field.Has("lambda")) options.lambda = field["lambda"].NumberIn(0.0, 1.0, false, false);
+    if (field.Has("allocation")) {
+        const std::string allocation = field["allocation"].String();
+        if (allocation != "equal" && allocation != "lagrange")
+            field["allocation"].Fail("must be equal or lagrange, got '" + allocation + "'");
+        options.allocation = allocation == "equal" ? spatial::CascadeAllocation::kEqual
+                                                   : spatial::CascadeAllocation::kLagrange;
+    }
+    return options;
+}
+
 }  // namespace
 
 spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
                                     const std::filesystem::path& baseDir) {
     const JsonField root(document, "");
-    root.ExpectObject({"camera"}, {"name", "description", "lights", "shadow_map", "readback",
-                                   "geometry", "generator", "light_sweep", "camera_path"});
+    root.ExpectObject({"camera"},
+                      {"name", "description", "lights", "shadow_map", "readback", "geometry",
+                       "generator", "light_sweep", "camera_path", "cascades"});
     spatial::Scene scene;
     scene.name = root.Has("name") ? root["name"].String() : fallbackName;
     if (root.Has("description")) root["description"].String();
@@ -163,6 +181,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
         }
         scene.lightSweep = lightSweep;
     }
+    if (root.Has("cascades")) scene.partitions = ReadPartitions(root["cascades"]);
     if (root.Has("lights")) {
         const JsonField lights = root["lights"];
         const auto items = lights.Array();

@@ -550,31 +550,104 @@ void WriteCaseFigure(const std::string& pngPath, const flatland::FlatScene& scen
     });
 }
 
-void WriteLowresPlot(const std::string& pngPath, const std::string& title,
-                     const std::vector<LowresCurve>& curves) {
+namespace {
+
+// The x pixel of a value on the log axis [lo, hi] (decimal logs).
+struct LogAxis {
+    double lo = 0.0, hi = 1.0;
+    double Px(const PxRect& plot, double x) const {
+        return plot.x + (std::log10(x) - lo) / (hi - lo) * plot.width;
+    }
+};
+
+void DrawXTicks(cairo_t* cr, const PxRect& plot, const LogAxis& axis,
+                const std::vector<double>& xTicks) {
+    if (!xTicks.empty()) {
+        for (double x : xTicks) {
+            GridLine(cr, axis.Px(plot, x), plot.y, axis.Px(plot, x), plot.Bottom());
+            TickMark(cr, axis.Px(plot, x), plot.Bottom(), axis.Px(plot, x), plot.Bottom() + 6);
+            ShowText(cr, axis.Px(plot, x), plot.Bottom() + 10, FormatTick(x), 0.5, 0);
+        }
+        return;
+    }
+    const int decadeLo = static_cast<int>(axis.lo), decadeHi = static_cast<int>(axis.hi);
+    for (int d = decadeLo; d <= decadeHi; ++d) {
+        const double x = std::pow(10.0, d);
+        if (d > decadeLo && d < decadeHi)
+            GridLine(cr, axis.Px(plot, x), plot.y, axis.Px(plot, x), plot.Bottom());
+        TickMark(cr, axis.Px(plot, x), plot.Bottom(), axis.Px(plot, x), plot.Bottom() + 6);
+        ShowText(cr, axis.Px(plot, x), plot.Bottom() + 10, FormatTick(x), 0.5, 0);
+        if (d == decadeHi) break;
+        for (int m = 2; m <= 9; ++m)
+            TickMark(cr, axis.Px(plot, m * x), plot.Bottom(), axis.Px(plot, m * x),
+                     plot.Bottom() + 3);
+    }
+}
+
+void DrawGuide(cairo_t* cr, const PxRect& plot, double pxY, const std::string& label) {
+    const double dashes[] = {6.0, 4.0};
+    cairo_set_dash(cr, dashes, 2, 0);
+    cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+    cairo_set_line_width(cr, 1.2);
+    cairo_move_to(cr, plot.x, pxY);
+    cairo_line_to(cr, plot.Right(), pxY);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    SetFont(cr, 13);
+    ShowText(cr, plot.x + 8, pxY - 4, label, 0, 1);
+}
+
+// One curve as a polyline with dots, skipping points that cannot be drawn.
+template <class PxX, class PxY>
+void DrawCurve(cairo_t* cr, const PlotCurve& curve, Rgb colour, PxX pxX, PxY pxY) {
+    SetColour(cr, colour);
+    cairo_set_line_width(cr, 2);
+    std::vector<Vec2> pxPoints;
+    for (std::size_t i = 0; i < std::min(curve.x.size(), curve.y.size()); ++i)
+        if (curve.x[i] > 0 && std::isfinite(curve.x[i]) && std::isfinite(curve.y[i]))
+            pxPoints.emplace_back(pxX(curve.x[i]), pxY(curve.y[i]));
+    for (std::size_t i = 0; i < pxPoints.size(); ++i) {
+        if (i == 0)
+            cairo_move_to(cr, pxPoints[i].x(), pxPoints[i].y());
+        else
+            cairo_line_to(cr, pxPoints[i].x(), pxPoints[i].y());
+    }
+    cairo_stroke(cr);
+    for (const Vec2& px : pxPoints) {
+        cairo_arc(cr, px.x(), px.y(), 3.5, 0, 2 * std::numbers::pi);
+        cairo_fill(cr);
+    }
+}
+
+}  // namespace
+
+void WriteCurvePlot(const std::string& pngPath, const CurvePlot& figure) {
     constexpr int kPxWidth = 900, kPxHeight = 600;
     const PxRect plot{95, 55, 775, 460};
-    double kMin = std::numeric_limits<double>::infinity(), kMax = 0.0, yMax = 0.0;
-    for (const auto& curve : curves) {
-        const std::size_t count = std::min(curve.pixels.size(), curve.extraPercent.size());
-        for (std::size_t i = 0; i < count; ++i) {
-            const double k = curve.pixels[i], y = curve.extraPercent[i];
-            if (!(k > 0) || !std::isfinite(k) || !std::isfinite(y)) continue;
-            kMin = std::min(kMin, k), kMax = std::max(kMax, k), yMax = std::max(yMax, y);
+    double xMin = std::numeric_limits<double>::infinity(), xMax = 0.0, yMax = 0.0;
+    for (const PlotCurve& curve : figure.curves)
+        for (std::size_t i = 0; i < std::min(curve.x.size(), curve.y.size()); ++i) {
+            const double x = curve.x[i], y = curve.y[i];
+            if (!(x > 0) || !std::isfinite(x) || !std::isfinite(y)) continue;
+            xMin = std::min(xMin, x), xMax = std::max(xMax, x), yMax = std::max(yMax, y);
         }
+    LogAxis axis;
+    if (!figure.xTicks.empty()) {
+        const auto [lo, hi] = std::minmax_element(figure.xTicks.begin(), figure.xTicks.end());
+        axis = {std::log10(*lo) - 0.05, std::log10(*hi) + 0.05};
+    } else {
+        const auto [decadeLo, decadeHi] = DecadeRange(xMin, xMax).value_or(std::make_pair(1, 3));
+        axis = {static_cast<double>(decadeLo), static_cast<double>(decadeHi)};
     }
-    const auto [decadeLo, decadeHi] = DecadeRange(kMin, kMax).value_or(std::make_pair(1, 3));
+    if (figure.guideY) yMax = std::max(yMax, *figure.guideY);
     yMax = std::max(1.0, yMax * 1.1);
-    const auto pxX = [&](double k) {
-        return plot.x + (std::log10(k) - decadeLo) / (decadeHi - decadeLo) * plot.width;
-    };
+    const auto pxX = [&](double x) { return axis.Px(plot, x); };
     const auto pxY = [&](double y) { return plot.Bottom() - y / yMax * plot.height; };
 
     RenderPng(pngPath, kPxWidth, kPxHeight, [&](cairo_t* cr) {
         SetFont(cr, 18, true);
         cairo_set_source_rgb(cr, 0, 0, 0);
-        ShowText(cr, kPxWidth / 2.0, 16, title, 0.5, 0);
-
+        ShowText(cr, kPxWidth / 2.0, 16, figure.title, 0.5, 0);
         SetFont(cr, 13);
         const double yStep = NiceStep(yMax / 6);
         for (double y = 0; y <= yMax + 1e-9; y += yStep) {
@@ -582,68 +655,44 @@ void WriteLowresPlot(const std::string& pngPath, const std::string& title,
             TickMark(cr, plot.x - 6, pxY(y), plot.x, pxY(y));
             ShowText(cr, plot.x - 10, pxY(y), FormatTick(y), 1, 0.5);
         }
-        for (int d = decadeLo; d <= decadeHi; ++d) {
-            if (d > decadeLo && d < decadeHi)
-                GridLine(cr, pxX(std::pow(10.0, d)), plot.y, pxX(std::pow(10.0, d)), plot.Bottom());
-            TickMark(cr, pxX(std::pow(10.0, d)), plot.Bottom(), pxX(std::pow(10.0, d)),
-                     plot.Bottom() + 6);
-            ShowText(cr, pxX(std::pow(10.0, d)), plot.Bottom() + 10, FormatTick(std::pow(10.0, d)),
-                     0.5, 0);
-            if (d == decadeHi) break;
-            for (int m = 2; m <= 9; ++m)
-                TickMark(cr, pxX(m * std::pow(10.0, d)), plot.Bottom(), pxX(m * std::pow(10.0, d)),
-                         plot.Bottom() + 3);
-        }
-
+        DrawXTicks(cr, plot, axis, figure.xTicks);
         cairo_save(cr);
         cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
         cairo_clip(cr);
-        // The thesis's threshold for "low resolution is good enough"; off-scale when every curve
-        // stays well below it.
-        if (5.0 <= yMax) {
-            const double dashes[] = {6.0, 4.0};
-            cairo_set_dash(cr, dashes, 2, 0);
-            cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
-            cairo_set_line_width(cr, 1.2);
-            cairo_move_to(cr, plot.x, pxY(5.0));
-            cairo_line_to(cr, plot.Right(), pxY(5.0));
-            cairo_stroke(cr);
-            cairo_set_dash(cr, nullptr, 0, 0);
-            SetFont(cr, 13);
-            ShowText(cr, plot.x + 8, pxY(5.0) - 4, "5%", 0, 1);
-        }
+        if (figure.guideY) DrawGuide(cr, plot, pxY(*figure.guideY), figure.guideLabel);
         std::vector<std::string> labels;
         std::vector<Rgb> colours;
         cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-        for (std::size_t c = 0; c < curves.size(); ++c) {
-            const auto& curve = curves[c];
-            labels.push_back(curve.label);
+        for (std::size_t c = 0; c < figure.curves.size(); ++c) {
+            labels.push_back(figure.curves[c].label);
             colours.push_back(MethodColour(c));
-            SetColour(cr, colours.back());
-            cairo_set_line_width(cr, 2);
-            std::vector<Vec2> pxPoints;
-            const std::size_t count = std::min(curve.pixels.size(), curve.extraPercent.size());
-            for (std::size_t i = 0; i < count; ++i) {
-                const double k = curve.pixels[i], y = curve.extraPercent[i];
-                if (k > 0 && std::isfinite(k) && std::isfinite(y))
-                    pxPoints.emplace_back(pxX(k), pxY(y));
-            }
-            for (std::size_t i = 0; i < pxPoints.size(); ++i) {
-                if (i == 0)
-                    cairo_move_to(cr, pxPoints[i].x(), pxPoints[i].y());
-                else
-                    cairo_line_to(cr, pxPoints[i].x(), pxPoints[i].y());
-            }
-            cairo_stroke(cr);
-            for (const Vec2& px : pxPoints) {
-                cairo_arc(cr, px.x(), px.y(), 3.5, 0, 2 * std::numbers::pi);
-                cairo_fill(cr);
-            }
+            DrawCurve(cr, figure.curves[c], colours.back(), pxX, pxY);
         }
         cairo_restore(cr);
-        DrawAxesFrame(cr, plot, "decision pixels K", "additional error (%)");
+        DrawAxesFrame(cr, plot, figure.xLabel, figure.yLabel);
         DrawLegend(cr, plot, labels, colours, true);
     });
+}
+
+void WriteLowresPlot(const std::string& pngPath, const std::string& title,
+                     const std::vector<LowresCurve>& curves) {
+    CurvePlot figure;
+    figure.title = title;
+    figure.xLabel = "decision pixels K";
+    figure.yLabel = "additional error (%)";
+    for (const LowresCurve& c : curves)
+        figure.curves.push_back({c.label, c.pixels, c.extraPercent});
+    // The thesis's threshold for "low resolution is good enough"; off-scale when every curve
+    // stays well below it.
+    double yMax = 0.0;
+    for (const LowresCurve& c : curves)
+        for (double y : c.extraPercent)
+            if (std::isfinite(y)) yMax = std::max(yMax, y);
+    if (std::max(1.0, yMax * 1.1) >= 5.0) {
+        figure.guideY = 5.0;
+        figure.guideLabel = "5%";
+    }
+    WriteCurvePlot(pngPath, figure);
 }
 
 }  // namespace lexel::cases

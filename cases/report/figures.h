@@ -4,9 +4,11 @@
 //    own colour;
 //  - the footprint plot: f across the visible pixels for every method, log-scale y, labelled
 //    axes and a legend;
-//  - the low-resolution decision plot (thesis Fig. 4.1): extra error against decision pixels.
+//  - the low-resolution decision plot (thesis Fig. 4.1): extra error against decision pixels;
+//  - any such curve plot (the partitioned methods' misclassified pixels against k).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,21 @@ namespace lexel::cases {
 // std::runtime_error when the file cannot be written.
 void WriteCaseFigure(const std::string& pngPath, const flatland::FlatScene& scene,
                      const flatland::CaseReport& report);
+
+// A line plot with a log-scale x axis: curves with dots, a legend, an optional dashed guide.
+struct PlotCurve {
+    std::string label;
+    std::vector<double> x, y;  // x > 0
+};
+struct CurvePlot {
+    std::string title, xLabel, yLabel;
+    std::vector<PlotCurve> curves;
+    std::vector<double> xTicks;    // ticks at these x (and the axis spans them); empty: decades
+    std::optional<double> guideY;  // a dashed horizontal line at this y, labelled guideLabel
+    std::string guideLabel;
+};
+// Throws std::runtime_error when the file cannot be written.
+void WriteCurvePlot(const std::string& pngPath, const CurvePlot& plot);
 
 struct LowresCurve {
     std::string label;                 // e.g. "L1 (average)"

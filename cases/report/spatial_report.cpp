@@ -1,5 +1,6 @@
 #include "lexel/cases/report/spatial_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -40,6 +41,35 @@ std::string IterationLines(const spatial::LightOutcome& o) {
     return text.str();
 }
 
+// Per partitioned method, its cascades: depth interval, map, readback points, pixels, h.
+std::string CascadeLines(const spatial::LightOutcome& o) {
+    std::ostringstream text;
+    for (const auto& m : o.methods) {
+        if (m.cascades.empty()) continue;
+        text << m.method << ": " << m.cascades.size() << " cascades";
+        if (m.emptyPartitions) text << " (" << m.emptyPartitions << " empty)";
+        for (const spatial::CascadeOutcome& c : m.cascades)
+            text << "; [" << Significant(c.cascade.zNear, 4) << ", "
+                 << Significant(c.cascade.zFar, 4) << ") " << c.cascade.map.width << "×"
+                 << c.cascade.map.height << " " << c.cascade.visiblePoints << " points " << c.pixels
+                 << " px h " << Significant(c.h, 4);
+        text << '\n';
+    }
+    return text.str();
+}
+
+std::string ShimmerText(const CameraPathStudy& study, std::size_t light) {
+    TextTable table({"method", "shimmer (% of stable pixels per step)"});
+    for (std::size_t m = 0; m < study.methods.size(); ++m)
+        table.AddRow({study.methods[m], Fixed(study.shimmerPercent[m], 3)});
+    std::ostringstream text;
+    text << "\ncamera path, light " << light
+         << ": pixels whose shadow decision changes between consecutive poses where the rays' "
+            "does not\n"
+         << table.Render();
+    return text.str();
+}
+
 std::string CameraPathText(const CameraPathStudy& study, std::size_t light) {
     TextTable table({"pose", "P changed", "median badness kept", "median badness new",
                      "misclassified (hysteresis)", "misclassified (fresh)"});
@@ -53,7 +83,7 @@ std::string CameraPathText(const CameraPathStudy& study, std::size_t light) {
     text << "\ncamera path, light " << light << ": P changed in " << study.Changes() << " of "
          << study.poses.size() << " poses (hysteresis: keep P unless the new median "
          << "badness is below 80% of the kept one)\n"
-         << table.Render();
+         << table.Render() << ShimmerText(study, light);
     return text.str();
 }
 
@@ -63,13 +93,15 @@ std::string SpatialRunText(const spatial::Scene&, const SpatialRun& run) {
     std::ostringstream text;
     for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
         const auto& o = run.outcomes[l];
-        TextTable table(
-            {"method", "misclassified", "false shadow", "false light", "h (eq. 6)", "ms"});
+        TextTable table({"method", "misclassified", "false shadow", "false light", "uncovered",
+                         "mean σ1(J⁻¹)", "max σ1(J⁻¹)", "h (eq. 6)", "ms"});
         for (const auto& m : o.methods)
             table.AddRow({m.method, std::to_string(m.misclassified), std::to_string(m.falseShadow),
-                          std::to_string(m.misclassified - m.falseShadow), Significant(m.h, 6),
-                          Fixed(m.ms, 3)});
-        text << (l ? "\n" : "") << LightHeader(l, o) << table.Render() << IterationLines(o);
+                          std::to_string(m.misclassified - m.falseShadow),
+                          std::to_string(m.uncovered), Significant(m.footprintMean, 4),
+                          Significant(m.footprintMax, 4), Significant(m.h, 6), Fixed(m.ms, 3)});
+        text << (l ? "\n" : "") << LightHeader(l, o) << table.Render() << IterationLines(o)
+             << CascadeLines(o);
     }
     for (std::size_t l = 0; l < run.cameraPath.size(); ++l)
         text << CameraPathText(run.cameraPath[l], l);
@@ -92,9 +124,20 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                                      {"misclassified", m.misclassified},
                                      {"false_shadow", m.falseShadow},
                                      {"false_light", m.misclassified - m.falseShadow},
+                                     {"uncovered", m.uncovered},
+                                     {"mean_footprint", m.footprintMean},
+                                     {"max_footprint", FiniteOrNull(m.footprintMax)},
                                      {"h", FiniteOrNull(m.h)},
                                      {"ms", m.ms}};
             if (!m.hAfterIteration.empty()) method["h_after_iteration"] = m.hAfterIteration;
+            for (const spatial::CascadeOutcome& c : m.cascades)
+                method["cascades"].push_back({{"z_near", c.cascade.zNear},
+                                              {"z_far", FiniteOrNull(c.cascade.zFar)},
+                                              {"width", c.cascade.map.width},
+                                              {"height", c.cascade.map.height},
+                                              {"visible_points", c.cascade.visiblePoints},
+                                              {"pixels", c.pixels},
+                                              {"h", FiniteOrNull(c.h)}});
             light["methods"].push_back(method);
         }
         doc["lights"].push_back(light);
@@ -111,22 +154,29 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                              {"misclassified_hysteresis", p.misclassifiedHysteresis},
                              {"misclassified_fresh", p.misclassifiedFresh}});
         }
+        nlohmann::json shimmer;
+        for (std::size_t m = 0; m < study.methods.size(); ++m)
+            shimmer[study.methods[m]] = study.shimmerPercent[m];
         doc["camera_path"].push_back({{"light", l},
                                       {"poses", poses.size()},
                                       {"changes", study.Changes()},
-                                      {"frames", poses}});
+                                      {"frames", poses},
+                                      {"shimmer_percent", shimmer}});
     }
     return doc;
 }
 
 std::string SpatialRunCsv(const SpatialRun& run) {
     std::ostringstream csv;
-    csv << "light,method,misclassified,false_shadow,false_light,h,ms\n";
+    csv << "light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,"
+           "max_footprint,maps\n";
     for (std::size_t l = 0; l < run.outcomes.size(); ++l)
         for (const auto& m : run.outcomes[l].methods)
             csv << l << ',' << m.method << ',' << m.misclassified << ',' << m.falseShadow << ','
                 << m.misclassified - m.falseShadow << ',' << Significant(m.h, 9) << ','
-                << Fixed(m.ms, 4) << '\n';
+                << Fixed(m.ms, 4) << ',' << m.uncovered << ',' << Significant(m.footprintMean, 9)
+                << ',' << Significant(m.footprintMax, 9) << ','
+                << std::max<std::size_t>(1, m.cascades.size()) << '\n';
     return csv.str();
 }
 
@@ -145,8 +195,22 @@ int WriteSpatialImages(const std::filesystem::path& dir, const spatial::Scene& s
             spatial::WriteImage(
                 base + "_errors.png",
                 spatial::MisclassificationImage(evaluator.frame(), lightSpace, m.shades, o.truth));
-            spatial::WriteImage(base + "_map.png", spatial::ShadowMapImage(m.map, o.samples));
-            images += 3;
+            images += 2;
+            if (m.cascades.empty()) {
+                spatial::WriteImage(base + "_map.png", spatial::ShadowMapImage(m.map, o.samples));
+                ++images;
+                continue;
+            }
+            // One image per cascade, with the samples it serves.
+            std::vector<spatial::Cascade> cascades;
+            for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
+            for (std::size_t c = 0; c < m.cascadeMaps.size(); ++c) {
+                const spatial::LightSamples served = spatial::SamplesOfCascade(
+                    o.samples, evaluator.readback().wsRelevant, scene.camera, cascades, c);
+                spatial::WriteImage(base + "_map" + std::to_string(c) + ".png",
+                                    spatial::ShadowMapImage(m.cascadeMaps[c], served));
+                ++images;
+            }
         }
     }
     return images;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/spatial/harness/methods.h"
 
@@ -46,11 +47,25 @@ std::optional<View> ReportView(const SweepResult& r) {
     return ViewOf(r, spatial::ReportMethodNames(), "optimal-report");
 }
 
-// The fair comparison, against optimal: its methods, then any other that is not report-only.
+// The fair comparison, against optimal: its methods, then any other single map that is not
+// report-only.
 std::optional<View> FairView(const SweepResult& r) {
     std::vector<std::string> names = spatial::FairMethodNames();
     for (const std::string& m : r.methods)
-        if (!Contains(names, m) && !Contains(spatial::ReportMethodNames(), m)) names.push_back(m);
+        if (!Contains(names, m) && !Contains(spatial::ReportMethodNames(), m) &&
+            !spatial::IsPartitionedMethod(m))
+            names.push_back(m);
+    return ViewOf(r, names, "optimal");
+}
+
+// The equal-texel table: optimal (one map) against the partitioned methods, when any ran.
+std::optional<View> EqualTexelView(const SweepResult& r) {
+    const std::vector<std::string> partitioned = spatial::PartitionedMethodNames();
+    if (std::none_of(r.methods.begin(), r.methods.end(),
+                     [&](const std::string& m) { return Contains(partitioned, m); }))
+        return std::nullopt;
+    std::vector<std::string> names = {"optimal"};
+    names.insert(names.end(), partitioned.begin(), partitioned.end());
     return ViewOf(r, names, "optimal");
 }
 
@@ -139,7 +154,12 @@ struct MethodSummary {
     // % of the lights where the two differ in misclassified pixels on which h orders this method
     // and the reference the same way (is h the right proxy?); NaN for the reference itself.
     double hAgreesPercent = std::numeric_limits<double>::quiet_NaN();
-    double grazingShare = 0.0;  // mean over lights of the part of h from grazing samples
+    double grazingShare = 0.0;         // mean over lights of the part of h from grazing samples
+    double meanFootprint = 0.0;        // mean over lights of the per-pixel mean σ₁(J⁻¹)
+    double maxFootprint = 0.0;         // max over lights and pixels
+    double meanUncovered = 0.0;        // counted pixels no map covers, mean per light
+    std::int64_t emptyPartitions = 0;  // over all lights
+    int cascades = 1;                  // maps per light (the most over lights)
 };
 
 MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t reference) {
@@ -162,11 +182,18 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
         }
         out.meanMs += c.ms;
         beating += c.misclassified < light[reference].misclassified;
+        out.meanFootprint += c.footprintMean;
+        out.maxFootprint = std::max(out.maxFootprint, c.footprintMax);
+        out.meanUncovered += static_cast<double>(c.uncovered);
+        out.emptyPartitions += c.emptyPartitions;
+        out.cascades = std::max(out.cascades, c.cascades);
     }
     const double lights = static_cast<double>(std::max<std::size_t>(1, r.cells.size()));
     out.meanMisclassified /= lights;
     out.meanH = finite ? out.meanH / finite : std::numeric_limits<double>::infinity();
     out.meanMs /= lights;
+    out.meanFootprint /= lights;
+    out.meanUncovered /= lights;
     out.beatingPercent = 100.0 * beating / lights;
     if (differ) out.hAgreesPercent = 100.0 * agree / differ;
     out.grazingShare = finite ? out.grazingShare / finite : 0.0;
@@ -218,6 +245,28 @@ TextTable SummaryTable(const SweepResult& r, const View& view) {
     return table;
 }
 
+// At equal texels: mean misclassified, % more than optimal, % of lights beating it, the
+// footprints σ₁(J⁻¹), uncovered pixels, empty partitions, time.
+TextTable EqualTexelTable(const SweepResult& r, const View& view) {
+    const std::string ref = r.methods[view.reference];
+    TextTable table({"method", "maps", "mean misclassified", "% more than " + ref,
+                     "% of lights beating " + ref, "mean σ1(J⁻¹)", "max σ1(J⁻¹)",
+                     "uncovered pixels (mean)", "empty partitions", "mean h (eq. 6)",
+                     "mean ms per light"});
+    const MethodSummary reference = Summarize(r, view.reference, view.reference);
+    for (std::size_t m : view.methods) {
+        const MethodSummary s = Summarize(r, m, view.reference);
+        const double pct = PercentMore(s.meanMisclassified, reference.meanMisclassified);
+        table.AddRow({r.methods[m], std::to_string(s.cascades), Fixed(s.meanMisclassified, 1),
+                      m == view.reference ? "0" : (pct >= 0 ? "+" : "") + Fixed(pct, 2) + "%",
+                      m == view.reference ? "–" : Fixed(s.beatingPercent, 0) + "%",
+                      Significant(s.meanFootprint, 4), Significant(s.maxFootprint, 4),
+                      Fixed(s.meanUncovered, 1), std::to_string(s.emptyPartitions),
+                      Significant(s.meanH, 5), Fixed(s.meanMs, 3)});
+    }
+    return table;
+}
+
 std::string Lights(const SweepResult& r) {
     std::size_t point = 0;
     for (const Light& l : r.lights) point += l.type == Light::Type::kPoint;
@@ -242,6 +291,12 @@ std::string FairCaption(const SweepResult& r) {
            r.caseName + ", " + Lights(r);
 }
 
+std::string EqualTexelCaption(const SweepResult& r) {
+    return "Equal texels (every partitioned method's maps add up to the single map's texels; "
+           "σ1(J⁻¹): frame pixels per texel): " +
+           r.caseName + ", " + Lights(r);
+}
+
 template <class Render>
 std::string Tables(const SweepResult& r, const ReportTable1& report, const std::string& heading,
                    Render render) {
@@ -252,6 +307,9 @@ std::string Tables(const SweepResult& r, const ReportTable1& report, const std::
     if (const auto view = FairView(r))
         out += (out.empty() ? "" : "\n") + heading + FairCaption(r) + "\n" +
                render(SummaryTable(r, *view));
+    if (const auto view = EqualTexelView(r))
+        out += (out.empty() ? "" : "\n") + heading + EqualTexelCaption(r) + "\n" +
+               render(EqualTexelTable(r, *view));
     return out;
 }
 
@@ -275,6 +333,11 @@ nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) 
              {"lights_with_infinite_h", s.infiniteH},
              {"percent_lights_h_ranks_as_misclassified", FiniteOrNull(s.hAgreesPercent)},
              {"h_share_at_grazing_samples", s.grazingShare},
+             {"maps", s.cascades},
+             {"mean_footprint", s.meanFootprint},
+             {"max_footprint", FiniteOrNull(s.maxFootprint)},
+             {"mean_uncovered_pixels", s.meanUncovered},
+             {"empty_partitions", s.emptyPartitions},
              {"mean_ms", s.meanMs}});
     }
     if (worstRows) {
@@ -302,7 +365,8 @@ std::string SweepMarkdown(const SweepResult& r, const ReportTable1& report) {
 std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
     std::ostringstream out;
     out << "table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,"
-           "mean_h,mean_ms,report_percent_more\n";
+           "mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,"
+           "mean_uncovered_pixels,empty_partitions\n";
     const auto write = [&](const char* table, const View& view, const std::vector<Row>& rows) {
         const bool published = r.methods[view.reference] == "optimal-report";
         for (const Row& row : rows) {
@@ -320,12 +384,20 @@ std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
                 out << ',';
                 const std::optional<std::size_t> col = report.Column(PublishedName(r.methods[m]));
                 if (published && reportRow && col) out << Fixed(reportRow->percentMore[*col], 2);
+                if (row.set == "all")
+                    out << ',' << Significant(s.meanFootprint, 9) << ','
+                        << Significant(s.maxFootprint, 9) << ',' << Fixed(s.meanUncovered, 3) << ','
+                        << s.emptyPartitions;
+                else
+                    out << ",,,,";
                 out << '\n';
             }
         }
     };
     if (const auto view = ReportView(r)) write("report", *view, Table1Rows(r, *view));
     if (const auto view = FairView(r)) write("fair", *view, {{"all", MeanOver(r, AllLights(r))}});
+    if (const auto view = EqualTexelView(r))
+        write("equal-texel", *view, {{"all", MeanOver(r, AllLights(r))}});
     return out.str();
 }
 
@@ -335,6 +407,7 @@ nlohmann::json SweepJson(const SweepResult& r) {
     doc["lights"] = r.lights.size();
     if (const auto view = ReportView(r)) doc["report_table"] = ViewJson(r, *view, true);
     if (const auto view = FairView(r)) doc["fair_table"] = ViewJson(r, *view, false);
+    if (const auto view = EqualTexelView(r)) doc["equal_texel_table"] = ViewJson(r, *view, false);
     doc["seconds"] = r.seconds;
     return doc;
 }
@@ -367,6 +440,37 @@ std::string SweepLightsCsv(const SweepResult& r) {
         perLight << '\n';
     }
     return perLight.str();
+}
+
+std::string CascadeStudyCsv(const CascadeCountStudy& study) {
+    std::ostringstream out;
+    out << "method,k,mean_misclassified\n";
+    if (study.optimalMean) out << "optimal,1," << Fixed(*study.optimalMean, 3) << '\n';
+    for (std::size_t m = 0; m < study.methods.size(); ++m)
+        for (std::size_t k = 0; k < study.counts.size(); ++k)
+            out << study.methods[m] << ',' << study.counts[k] << ','
+                << Fixed(study.meanMisclassified[m][k], 3) << '\n';
+    return out.str();
+}
+
+void WriteCascadeStudyPlot(const std::string& pngPath, const CascadeCountStudy& study,
+                           const SweepResult& sweep) {
+    CurvePlot figure;
+    figure.title = "Misclassified pixels against partitions at equal texels: " + sweep.caseName +
+                   ", " + Lights(sweep);
+    figure.xLabel = "partitions k (maps of (W/√k) × (H/√k))";
+    figure.yLabel = "mean misclassified pixels";
+    for (int k : study.counts) figure.xTicks.push_back(k);
+    for (std::size_t m = 0; m < study.methods.size(); ++m) {
+        PlotCurve curve{study.methods[m], {}, study.meanMisclassified[m]};
+        for (int k : study.counts) curve.x.push_back(k);
+        figure.curves.push_back(std::move(curve));
+    }
+    if (study.optimalMean) {
+        figure.guideY = *study.optimalMean;
+        figure.guideLabel = "optimal (one map): " + Fixed(*study.optimalMean, 0);
+    }
+    WriteCurvePlot(pngPath, figure);
 }
 
 }  // namespace lexel::cases

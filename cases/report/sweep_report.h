@@ -9,6 +9,7 @@
 #include <string>
 
 #include "lexel/cases/load/published.h"
+#include "lexel/cases/run/cascade_study.h"
 #include "lexel/cases/run/sweep.h"
 
 namespace lexel::cases {
@@ -19,5 +20,11 @@ std::string SweepCsv(const SweepResult& result, const ReportTable1& report);
 nlohmann::json SweepJson(const SweepResult& result);
 // One row per light: position or direction, receiver pixels, and per method misclassified, h, ms.
 std::string SweepLightsCsv(const SweepResult& result);
+
+// The cascade-count study: "method,k,mean_misclassified" rows (optimal's with k = 1), and its
+// plot (misclassified pixels against k, optimal's single map as a dashed line).
+std::string CascadeStudyCsv(const CascadeCountStudy& study);
+void WriteCascadeStudyPlot(const std::string& pngPath, const CascadeCountStudy& study,
+                           const SweepResult& sweep);
 
 }  // namespace lexel::cases

@@ -1,6 +1,8 @@
 #include "lexel/cases/run/camera_path.h"
 
+#include <algorithm>
 #include <optional>
+#include <span>
 
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/spatial/harness/evaluation.h"
@@ -9,6 +11,103 @@
 
 namespace lexel::cases {
 
+namespace {
+
+bool Counted(spatial::Shade s) {
+    return s == spatial::Shade::kLit || s == spatial::Shade::kShadowed;
+}
+
+// Shimmering pixels between two poses: counted at both with the same truth, a different decision;
+// the share of those with the same truth, in percent.
+double ShimmerPercent(std::span<const spatial::Shade> before,
+                      std::span<const std::uint8_t> truthBefore,
+                      std::span<const spatial::Shade> after,
+                      std::span<const std::uint8_t> truthAfter) {
+    std::int64_t stable = 0, flipped = 0;
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        if (!Counted(before[i]) || !Counted(after[i]) || truthBefore[i] != truthAfter[i]) continue;
+        ++stable;
+        flipped += before[i] != after[i];
+    }
+    return stable ? 100.0 * static_cast<double>(flipped) / static_cast<double>(stable) : 0.0;
+}
+
+// What one pose leaves for the next: the truth and every method's shades.
+struct PoseBuffers {
+    std::vector<std::uint8_t> truth;
+    std::vector<std::vector<spatial::Shade>> shades;  // per study method
+};
+
+spatial::LightOutcome EvaluatePose(const spatial::Scene& scene,
+                                   const spatial::RenderBackend& backend, std::size_t light,
+                                   std::size_t pose, const spatial::EvaluationOptions& options,
+                                   std::unique_ptr<spatial::Evaluator>* evaluator) {
+    spatial::Scene poseScene = scene;
+    poseScene.camera = scene.cameraPath[pose];
+    *evaluator = MakeEvaluator(poseScene, backend, CameraPathField(pose));
+    try {
+        return (*evaluator)->Evaluate(scene.lights[light], options);
+    } catch (const DomainError& e) {
+        throw InputError(SpatialErrorField(e, LightField(light), CameraPathField(pose)) + ": " +
+                         e.what());
+    }
+}
+
+CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBackend& backend,
+                           std::size_t l, const std::vector<std::string>& methods) {
+    spatial::EvaluationOptions options;
+    options.methods = methods;
+    if (std::find(methods.begin(), methods.end(), "optimal") == methods.end())
+        options.methods.push_back("optimal");
+    options.keepBuffers = true;
+    const std::size_t optimal =
+        std::find(options.methods.begin(), options.methods.end(), "optimal") -
+        options.methods.begin();
+    const double margin = spatial::OptimizerOptions{}.margin;
+    CameraPathStudy study;
+    study.methods = methods;
+    study.methods.push_back(kOptimalWithHysteresis);
+    study.shimmerPercent.assign(study.methods.size(), 0.0);
+    std::optional<spatial::LightMatrix> previous;
+    std::optional<PoseBuffers> before;
+    for (std::size_t k = 0; k < scene.cameraPath.size(); ++k) {
+        std::unique_ptr<spatial::Evaluator> evaluator;
+        spatial::LightOutcome o = EvaluatePose(scene, backend, l, k, options, &evaluator);
+        const spatial::HysteresisDecision d = spatial::ApplyHysteresis(
+            previous, o.methods[optimal].matrix, o.samples, scene.shadowMap, margin);
+        PoseOutcome pose;
+        pose.changed = d.changed;
+        pose.medianKept = d.medianPrevious;
+        pose.medianNew = d.medianCandidate;
+        pose.misclassifiedFresh = o.methods[optimal].misclassified;
+        pose.misclassifiedHysteresis = d.changed
+                                           ? pose.misclassifiedFresh
+                                           : evaluator->Misclassified(scene.lights[l], d.matrix);
+        study.poses.push_back(pose);
+        previous = d.matrix;
+
+        std::vector<spatial::Shade> withHysteresis =
+            d.changed ? o.methods[optimal].shades
+                      : evaluator->ShadeFrame(scene.lights[l], d.matrix);
+        PoseBuffers now;
+        now.truth = std::move(o.truth);
+        for (std::size_t m = 0; m < methods.size(); ++m)
+            now.shades.push_back(std::move(o.methods[m].shades));
+        now.shades.push_back(std::move(withHysteresis));
+        if (before)
+            for (std::size_t m = 0; m < study.methods.size(); ++m)
+                study.shimmerPercent[m] +=
+                    ShimmerPercent(before->shades[m], before->truth, now.shades[m], now.truth);
+        before = std::move(now);
+    }
+    if (scene.cameraPath.size() > 1)
+        for (double& s : study.shimmerPercent)
+            s /= static_cast<double>(scene.cameraPath.size() - 1);
+    return study;
+}
+
+}  // namespace
+
 int CameraPathStudy::Changes() const {
     int changes = 0;
     for (const PoseOutcome& p : poses) changes += p.changed;
@@ -16,38 +115,11 @@ int CameraPathStudy::Changes() const {
 }
 
 std::vector<CameraPathStudy> RunCameraPathStudy(const spatial::Scene& scene,
-                                                const spatial::RenderBackend& backend) {
-    spatial::EvaluationOptions evalOptions;
-    evalOptions.methods = {"optimal"};
-    const double margin = spatial::OptimizerOptions{}.margin;
-    std::vector<CameraPathStudy> studies(scene.lights.size());
-    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-        const spatial::Light& light = scene.lights[l];
-        std::optional<spatial::LightMatrix> previous;
-        for (std::size_t k = 0; k < scene.cameraPath.size(); ++k) {
-            spatial::Scene poseScene = scene;
-            poseScene.camera = scene.cameraPath[k];
-            const auto evaluator = MakeEvaluator(poseScene, backend, CameraPathField(k));
-            spatial::LightOutcome o;
-            try {
-                o = evaluator->Evaluate(light, evalOptions);
-            } catch (const DomainError& e) {
-                throw InputError(SpatialErrorField(e, LightField(l), CameraPathField(k)) + ": " +
-                                 e.what());
-            }
-            const spatial::HysteresisDecision d = spatial::ApplyHysteresis(
-                previous, o.methods[0].matrix, o.samples, scene.shadowMap, margin);
-            PoseOutcome pose;
-            pose.changed = d.changed;
-            pose.medianKept = d.medianPrevious;
-            pose.medianNew = d.medianCandidate;
-            pose.misclassifiedFresh = o.methods[0].misclassified;
-            pose.misclassifiedHysteresis =
-                d.changed ? pose.misclassifiedFresh : evaluator->Misclassified(light, d.matrix);
-            studies[l].poses.push_back(pose);
-            previous = d.matrix;
-        }
-    }
+                                                const spatial::RenderBackend& backend,
+                                                const std::vector<std::string>& methods) {
+    std::vector<CameraPathStudy> studies;
+    for (std::size_t l = 0; l < scene.lights.size(); ++l)
+        studies.push_back(StudyLight(scene, backend, l, methods));
     return studies;
 }
 

@@ -23,7 +23,8 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
             throw InputError(SpatialErrorField(e, LightField(l)) + ": " + e.what());
         }
     }
-    if (!scene.cameraPath.empty()) run.cameraPath = RunCameraPathStudy(scene, *run.backend);
+    if (!scene.cameraPath.empty())
+        run.cameraPath = RunCameraPathStudy(scene, *run.backend, options.methods);
     return run;
 }
 

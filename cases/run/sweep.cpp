@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "lexel/cases/load/spatial_case.h"
@@ -54,10 +55,14 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
             const std::string light = "light " + std::to_string(l) + " " + LightLabel(lights[l]);
             throw InputError(SpatialErrorField(e, light) + ": " + e.what());
         }
-        for (std::size_t m = 0; m < methods.size(); ++m)
-            r.cells[l][m] = {outcome.methods[m].misclassified, outcome.methods[m].h,
-                             outcome.methods[m].ms, outcome.methods[m].hGrazing,
-                             outcome.methods[m].winner};
+        for (std::size_t m = 0; m < methods.size(); ++m) {
+            const spatial::MethodOutcome& o = outcome.methods[m];
+            r.cells[l][m] = {
+                o.misclassified,  o.h,         o.ms,
+                o.hGrazing,       o.winner,    o.footprintMean,
+                o.footprintMax,   o.uncovered, std::max(1, static_cast<int>(o.cascades.size())),
+                o.emptyPartitions};
+        }
         r.receiverPixels[l] = outcome.receiverPixels;
         if (onLightDone) onLightDone();
     });

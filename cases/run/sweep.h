@@ -19,6 +19,10 @@ struct SweepCell {
     double ms = 0.0;
     double hGrazing = 0.0;  // the part of h from grazing samples (spatial/harness/evaluation.h)
     std::string winner;     // optimal, optimal-refined: the start that won
+    double footprintMean = 0.0, footprintMax = 0.0;  // σ₁(J⁻¹) over counted pixels
+    std::int64_t uncovered = 0;                      // counted pixels no map covers
+    int cascades = 1;                                // maps (partitioned methods: k)
+    int emptyPartitions = 0;
 };
 
 struct SweepResult {

@@ -2,6 +2,7 @@
 # Invoked by ctest with -DLEXEL=... -DCASES=... -DDATA=... -DWORK=...
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
+cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...)
 
 function(expect_run expectedCode stdoutRegex stderrRegex)
     execute_process(COMMAND "${LEXEL}" ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -68,7 +69,9 @@ endif()
 # ---- 3D cases: lexel run and lexel sweep on a small floor-and-box scene ----
 set(small "${DATA}/spatial_small.json")
 set(methods3d optimal optimal-refined focused-tight lispsm-tight psm-tight plane-optimal normal
-    optimal-report focused lispsm psm optimal-shear)
+    optimal-report focused lispsm psm optimal-shear pssm sdsm sdsm-snap sdsm-rect zp-lispsm fp-lispsm
+    sdsm-optimal)
+set(partitioned3d pssm sdsm sdsm-snap sdsm-rect zp-lispsm fp-lispsm sdsm-optimal)
 
 # Asserts that a JSON value is a non-negative integer (string(JSON) reads numbers as text).
 function(expect_count json what)
@@ -78,7 +81,7 @@ function(expect_count json what)
 endfunction()
 
 # The table lists every method, in the registry's order.
-expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\nmethod +misclassified[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear "
+expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\nmethod +misclassified[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal "
            "^$" run "${small}")
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" run "${small}" --format json)
 string(JSON nLights LENGTH "${lastStdout}" lights)
@@ -86,7 +89,7 @@ string(JSON nMethods LENGTH "${lastStdout}" lights 0 methods)
 string(JSON method0 GET "${lastStdout}" lights 0 methods 0 method)
 string(JSON wrong0 GET "${lastStdout}" lights 0 methods 0 misclassified)
 string(JSON receivers GET "${lastStdout}" lights 0 receiver_pixels)
-if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 12 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
+if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 19 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
     message(FATAL_ERROR "unexpected 3D JSON document:\n${lastStdout}")
 endif()
 math(EXPR last "${nMethods} - 1")
@@ -99,11 +102,12 @@ foreach(k RANGE ${last})
     endif()
     expect_count("${wrong}" "lights/0/methods/${k}/misclassified")
 endforeach()
-expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*\n0,normal,[^\n]*\n$"
+expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1\n0,normal,[^\n]*,1\n$"
            "^$" run "${small}" --format csv --method optimal --method normal --no-map-truth)
 
-# --out writes the report and three images per light and method.
-expect_run(0 "^light 0" "^lexel: wrote 36 images and spatial_small.json/.csv to [^\n]*\n$"
+# --out writes the report and three images per light and method (a partitioned method: a map
+# image per cascade; fp-lispsm has 3 face wedges here).
+expect_run(0 "^light 0" "^lexel: wrote 77 images and spatial_small.json/.csv to [^\n]*\n$"
            run "${small}" --out "${WORK}/out3d")
 foreach(file spatial_small.json spatial_small.csv)
     if(NOT EXISTS "${WORK}/out3d/${file}")
@@ -111,7 +115,11 @@ foreach(file spatial_small.json spatial_small.csv)
     endif()
 endforeach()
 foreach(method ${methods3d})
-    foreach(kind frame errors map)
+    set(kinds frame errors map)
+    if(method IN_LIST partitioned3d)
+        set(kinds frame errors map0 map1 map2)
+    endif()
+    foreach(kind ${kinds})
         if(NOT EXISTS "${WORK}/out3d/spatial_small_light0_${method}_${kind}.png")
             message(FATAL_ERROR "missing ${WORK}/out3d/spatial_small_light0_${method}_${kind}.png")
         endif()
@@ -164,7 +172,7 @@ if(NOT ranked STREQUAL "optimal-report")
 endif()
 expect_run(0 "^## Table 1 as published [^\n]*spatial_small, 3 point lights[^\n]*\n\n\\| lights \\| optimal-report \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\|\n.*\n\\| worst 10% by psm \\|.*## The fair comparison [^\n]*\n\n\\| method \\|"
            "^$" sweep "${small}" --lights 3 --format markdown)
-expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more\nreport,all,optimal-report,[0-9.]+,0\\.0000,.*\nfair,all,optimal,[0-9.]+,0\\.0000,"
+expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,mean_uncovered_pixels,empty_partitions\nreport,all,optimal-report,[0-9.]+,0\\.0000,.*\nfair,all,optimal,[0-9.]+,0\\.0000,"
            "^$" sweep "${small}" --lights 3 --format csv)
 expect_run(0 "^Table 1 as published .*\nThe fair comparison .*\nsweep: [0-9.]+ s for 3 lights\n$" "^$"
            sweep "${small}" --lights 3)
@@ -203,6 +211,31 @@ if(NOT written MATCHES "^table,set,method,[^\n]*\nreport,all,focused,[^\n]*\nrep
     message(FATAL_ERROR "unexpected ${WORK}/sweep/table1.csv:\n${written}")
 endif()
 expect_run(0 "\"method\": \"psm\"" "^$" sweep "${small}" --lights 2 --method psm --format json)
+
+# Partitioned methods: the equal-texel table; --out adds the cascade-count study (k = 1, 2, 4, 8)
+# as CSV and a plot, and the first light's images with one map per cascade.
+expect_run(0 "\nEqual texels [^\n]*spatial_small, 3 point lights\nmethod +maps +mean misclassified[^\n]*\n-+\noptimal +1 [^\n]*\nsdsm +2 [^\n]*\nsdsm-optimal +2 "
+           "^lexel: wrote table1.md, table1.csv, sweep.json, lights.csv, cascades.csv, cascades.png and 8 images of the first light to [^\n]*\n$"
+           sweep "${small}" --lights 3 --methods optimal --methods sdsm --methods sdsm-optimal
+           --cascades 2 --out "${WORK}/cascades")
+foreach(file cascades.csv cascades.png spatial_small_light0_sdsm_map1.png)
+    if(NOT EXISTS "${WORK}/cascades/${file}")
+        message(FATAL_ERROR "missing ${WORK}/cascades/${file}")
+    endif()
+endforeach()
+file(STRINGS "${WORK}/cascades/cascades.csv" rows)
+list(LENGTH rows nRows)
+list(GET rows 0 header)
+if(NOT nRows EQUAL 10 OR NOT header STREQUAL "method,k,mean_misclassified")
+    message(FATAL_ERROR "unexpected ${WORK}/cascades/cascades.csv:\n${rows}")
+endif()
+file(READ "${WORK}/cascades/sweep.json" written)
+string(JSON maps GET "${written}" equal_texel_table methods 1 maps)
+string(JSON empty GET "${written}" equal_texel_table methods 1 empty_partitions)
+if(NOT maps EQUAL 2 OR NOT empty EQUAL 0)
+    message(FATAL_ERROR "unexpected equal_texel_table in ${WORK}/cascades/sweep.json:\n${written}")
+endif()
+expect_run(2 "^$" "--cascades" sweep "${small}" --cascades 17 --out "${WORK}/bad3d")
 
 # Unknown methods, for run and sweep: exit 2 naming the method, nothing written.
 expect_run(2 "^$" "^lexel: error: [^\n]*unknown 3D method 'nope'[^\n]*\n$"

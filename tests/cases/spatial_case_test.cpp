@@ -170,7 +170,7 @@ TEST(SpatialCase, BadFieldsAreNamed) {
     EXPECT_EQ(ErrorForText("[]"), "/: must be an object, got an array");
     EXPECT_EQ(add("/colour", "1"),
               "/colour: unknown key (allowed here: camera, name, description, lights, shadow_map, "
-              "readback, geometry, generator, light_sweep, camera_path)");
+              "readback, geometry, generator, light_sweep, camera_path, cascades)");
     EXPECT_EQ(
         add("/camera/zoom", "2"),
         "/camera/zoom: unknown key (allowed here: position, target, fov_y_deg, width, height, "
@@ -280,6 +280,30 @@ TEST(SpatialCase, BadFieldsAreNamed) {
     EXPECT_EQ(replace("/camera_path/1/up", "[0, -1.4, 20]"),
               "/camera_path/1/up: must not be parallel to the view direction (target - position "
               "= [0, -0.7, 10])");
+}
+
+TEST(SpatialCase, CascadesBlockSetsThePartitionDefaults) {
+    const spatial::Scene defaults = FromPatch("[]");
+    EXPECT_EQ(defaults.partitions.count, 4);
+    EXPECT_EQ(defaults.partitions.lambda, 0.5);
+    EXPECT_EQ(defaults.partitions.allocation, spatial::CascadeAllocation::kEqual);
+    const spatial::Scene scene =
+        FromPatch(R"([{"op": "add", "path": "/cascades", "value": )"
+                  R"({"count": 8, "lambda": 0.75, "allocation": "lagrange"}}])");
+    EXPECT_EQ(scene.partitions.count, 8);
+    EXPECT_EQ(scene.partitions.lambda, 0.75);
+    EXPECT_EQ(scene.partitions.allocation, spatial::CascadeAllocation::kLagrange);
+    auto add = [](const std::string& value) {
+        return ErrorFor(R"([{"op": "add", "path": "/cascades", "value": )" + value + "}]");
+    };
+    EXPECT_EQ(add(R"({"count": 0})"), "/cascades/count: must be in [1, 16], got 0");
+    EXPECT_EQ(add(R"({"count": 17})"), "/cascades/count: must be in [1, 16], got 17");
+    EXPECT_EQ(add(R"({"lambda": 1.5})"), "/cascades/lambda: must be in [0, 1], got 1.5");
+    EXPECT_EQ(add(R"({"allocation": "greedy"})"),
+              "/cascades/allocation: must be equal or lagrange, got 'greedy'");
+    EXPECT_EQ(add(R"({"splits": 2})"),
+              "/cascades/splits: unknown key (allowed here: count, lambda, allocation)");
+    EXPECT_EQ(add("4"), "/cascades: must be an object, got an integer");
 }
 
 TEST(SpatialCase, FilesResolveMeshesAndPrefixErrors) {

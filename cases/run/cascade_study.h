@@ -1,0 +1,31 @@
+// The partitioned methods against their number of partitions k at the same total texels (issue
+// 14's study): mean misclassified pixels over a sweep's lights for k ∈ {1, 2, 4, 8}, with the
+// single optimized map (`optimal`) as the reference line.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lexel/cases/run/sweep.h"
+
+namespace lexel::cases {
+
+struct CascadeCountStudy {
+    std::vector<int> counts;                             // k, increasing
+    std::vector<std::string> methods;                    // pssm, sdsm, sdsm-optimal (those run)
+    std::vector<std::vector<double>> meanMisclassified;  // [method][count]
+    std::optional<double> optimalMean;                   // optimal's, when the sweep ran it
+};
+
+// The methods the study covers among `methods`: pssm, sdsm and sdsm-optimal, in that order.
+std::vector<std::string> CascadeStudyMethods(const std::vector<std::string>& methods);
+
+// Reuses `sweep` (run at scene.partitions.count) and sweeps the study's methods at the other
+// counts over the same lights; `onLightDone` after each light of each extra sweep. Throws as
+// RunSweep.
+CascadeCountStudy RunCascadeCountStudy(const spatial::Scene& scene, const SweepResult& sweep,
+                                       const std::function<void()>& onLightDone = {});
+
+}  // namespace lexel::cases
