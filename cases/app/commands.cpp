@@ -18,10 +18,12 @@
 #include "lexel/cases/report/sweep_report.h"
 #include "lexel/cases/report/tables_report.h"
 #include "lexel/cases/report/text_table.h"
+#include "lexel/cases/report/timing_report.h"
 #include "lexel/cases/run/lowres.h"
 #include "lexel/cases/run/spatial_run.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/cases/run/thesis_tables.h"
+#include "lexel/cases/run/timing.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/methods.h"
@@ -73,6 +75,21 @@ std::vector<std::string> FlatlandMethods(std::vector<std::string> methods) {
     return MethodsOf(std::move(methods), flatland::FlatlandMethodNames(), "flatland");
 }
 
+// The --backend value (main.cpp checks it is cpu or gl). For gl, says on stderr which renderer
+// runs, and turns "no context" into the one-line error of --backend.
+BackendKind BackendOf(const std::string& name) {
+    const std::optional<BackendKind> kind = ParseBackend(name);
+    if (!kind) throw InputError("--backend: must be cpu or gl, got '" + name + "'");
+    if (*kind == BackendKind::kGl) {
+        try {
+            std::cerr << "lexel: backend " << DescribeBackend(*kind) << '\n';
+        } catch (const BackendUnavailable& e) {
+            throw InputError("--backend gl: " + std::string(e.what()));
+        }
+    }
+    return *kind;
+}
+
 // Errors a runner finds after loading get the case file's name in front, like the loader's own.
 template <class Body>
 auto WithCaseName(const fs::path& casePath, Body body) {
@@ -97,6 +114,7 @@ int RunSpatial(const RunFlags& flags) {
     options.methods = SpatialMethods(flags.methods);
     options.mapTruth = flags.mapTruth;
     options.keepBuffers = !flags.outDir.empty();
+    options.backend = BackendOf(flags.backend);
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
     if (flags.format == "json")
         std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
@@ -117,6 +135,9 @@ int RunSpatial(const RunFlags& flags) {
 }
 
 int RunFlatland(const RunFlags& flags) {
+    if (flags.backend != "cpu")
+        throw InputError(
+            "--backend: flatland cases have no renderer; --backend applies to 3D cases");
     const std::optional<Metric> metric = ParseMetric(flags.metric);
     if (!metric)
         throw InputError("--metric: must be one of l1, l2, linf, got '" + flags.metric + "'");
@@ -162,6 +183,7 @@ int SweepCommand(const SweepFlags& flags) {
     const fs::path casePath = flags.casePath;
     const spatial::Scene scene = LoadSpatialScene(casePath);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
+    const BackendKind backend = BackendOf(flags.backend);
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     const SweepResult r = WithCaseName(casePath, [&] {
@@ -171,7 +193,8 @@ int SweepCommand(const SweepFlags& flags) {
                                               : spatial::Light::Type::kDirectional;
         const std::vector<spatial::Light> lights = SweepLightsOf(scene, flags.lights, type);
         Progress bar("sweep", lights.size(), "lights");
-        return RunSweep(scene, methods, lights, [&] { bar.Step(); });
+        return RunSweep(
+            scene, methods, lights, [&] { bar.Step(); }, backend);
     });
     if (flags.format == "json")
         std::cout << SweepJson(r).dump(2) << '\n';
@@ -191,6 +214,37 @@ int SweepCommand(const SweepFlags& flags) {
     WriteFileAtomically((dir / "lights.csv").string(), SweepLightsCsv(r));
     std::cerr << "lexel: wrote table1.md, table1.csv, sweep.json, lights.csv to " << flags.outDir
               << '\n';
+    return 0;
+}
+
+int TimingCommand(const TimingFlags& flags) {
+    const fs::path casePath = flags.casePath;
+    const spatial::Scene scene = LoadSpatialScene(casePath);
+    TimingOptions options;
+    options.backend = BackendOf(flags.backend);
+    options.lights = flags.lights;
+    options.frames = flags.frames;
+    options.updateEvery = flags.updateEvery;
+    options.standardEvery = flags.standardEvery;
+    const ReportTiming report =
+        LoadReportTiming(DataDirectory() / "published" / "report_timing.json");
+    const TimingRun run = WithCaseName(casePath, [&] { return RunTiming(scene, options); });
+    if (flags.format == "json")
+        std::cout << TimingJson(scene, run, report).dump(2) << '\n';
+    else if (flags.format == "csv")
+        std::cout << TimingCsv(run);
+    else
+        std::cout << TimingText(scene, run, report);
+    return 0;
+}
+
+int InfoCommand(const std::string& version) {
+    std::cout << version << '\n' << DescribeBackend(BackendKind::kCpu) << '\n';
+    try {
+        std::cout << DescribeBackend(BackendKind::kGl) << '\n';
+    } catch (const BackendUnavailable& e) {
+        std::cout << "gl: unavailable: " << e.what() << '\n';
+    }
     return 0;
 }
 

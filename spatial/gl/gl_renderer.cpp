@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/clip_matrix.h"
 #include "lexel/spatial/gl/program.h"
 #include "lexel/spatial/gl/shaders.h"
@@ -82,7 +83,9 @@ GlRenderer::GlRenderer(const TriangleMesh& geometry) : context_(Context::Shared(
                                    {GL_FRAGMENT_SHADER, shaders::kCameraFragment}});
     shadowProgram_ = BuildProgram({{GL_VERTEX_SHADER, shaders::kGeometryVertex},
                                    {GL_FRAGMENT_SHADER, shaders::kShadowFragment}});
-    shadeProgram_ = BuildProgram({{GL_COMPUTE_SHADER, shaders::kShadeCompute}});
+    shadeProgram_ = BuildProgram({{GL_VERTEX_SHADER, shaders::kFullScreenVertex},
+                                  {GL_FRAGMENT_SHADER, shaders::kShadeFragment}});
+    glCreateVertexArrays(1, &emptyVertexArray_);
     boundaryProgram_ = BuildProgram({{GL_COMPUTE_SHADER, shaders::kBoundaryCompute}});
     CheckGlError("uploading the mesh");
 }
@@ -98,10 +101,12 @@ GlRenderer::~GlRenderer() {
     const GLuint buffers[] = {vertexBuffer_, indexBuffer_, normalBuffer_, boundaryBuffer_};
     glDeleteBuffers(4, buffers);
     glDeleteVertexArrays(1, &vertexArray_);
+    glDeleteVertexArrays(1, &emptyVertexArray_);
 }
 
 void GlRenderer::Release(CameraTarget& t) {
     glDeleteFramebuffers(1, &t.framebuffer);
+    glDeleteFramebuffers(1, &t.shadeFramebuffer);
     glDeleteTextures(3, t.color.data());
     glDeleteTextures(1, &t.depth);
     glDeleteTextures(1, &t.shade);
@@ -122,8 +127,12 @@ GlRenderer::CameraTarget& GlRenderer::EnsureCamera(CameraSlot slot, Resolution r
     Release(t);
     t.resolution = r;
     glCreateTextures(GL_TEXTURE_2D, 3, t.color.data());
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
         glTextureStorage2D(t.color[i], 1, kCameraFormats[i], r.width, r.height);
+        // Integer textures are incomplete under linear filtering; texelFetch reads them anyway.
+        glTextureParameteri(t.color[i], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(t.color[i], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
     glCreateTextures(GL_TEXTURE_2D, 1, &t.depth);
     glTextureStorage2D(t.depth, 1, GL_DEPTH_COMPONENT32F, r.width, r.height);
     glCreateTextures(GL_TEXTURE_2D, 1, &t.shade);
@@ -135,14 +144,21 @@ GlRenderer::CameraTarget& GlRenderer::EnsureCamera(CameraSlot slot, Resolution r
     const GLenum drawBuffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
                                    GL_COLOR_ATTACHMENT2};
     glNamedFramebufferDrawBuffers(t.framebuffer, 3, drawBuffers);
-    if (glCheckNamedFramebufferStatus(t.framebuffer, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    glCreateFramebuffers(1, &t.shadeFramebuffer);
+    glNamedFramebufferTexture(t.shadeFramebuffer, GL_COLOR_ATTACHMENT0, t.shade, 0);
+    glNamedFramebufferDrawBuffer(t.shadeFramebuffer, GL_COLOR_ATTACHMENT0);
+    if (glCheckNamedFramebufferStatus(t.framebuffer, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+        glCheckNamedFramebufferStatus(t.shadeFramebuffer, GL_FRAMEBUFFER) !=
+            GL_FRAMEBUFFER_COMPLETE)
         throw GlUnavailable("the camera framebuffer is incomplete");
     return t;
 }
 
 GlRenderer::MapTarget& GlRenderer::EnsureMap(int map, Resolution r) {
-    if (map < 0 || map >= kMapSlots) throw std::invalid_argument("GlRenderer: no such map slot");
-    MapTarget& t = maps_[map];
+    if (map < 0) throw std::invalid_argument("GlRenderer: no such map slot");
+    if (static_cast<std::size_t>(map) >= maps_.size())
+        maps_.resize(static_cast<std::size_t>(map) + 1);
+    MapTarget& t = maps_[static_cast<std::size_t>(map)];
     if (t.framebuffer != 0 && t.resolution.width == r.width && t.resolution.height == r.height)
         return t;
     CheckSize(context_, r, "a shadow map");
@@ -164,13 +180,13 @@ GlRenderer::MapTarget& GlRenderer::EnsureMap(int map, Resolution r) {
 
 void GlRenderer::RenderCamera(CameraSlot slot, const Camera& camera, Resolution resolution) {
     CameraTarget& t = EnsureCamera(slot, resolution);
-    BeginPass(PassKind::kCamera);
     const GLint noTriangle = -1;
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, farDepth = 0.0f;
     glClearNamedFramebufferiv(t.framebuffer, GL_COLOR, 0, &noTriangle);
     glClearNamedFramebufferfv(t.framebuffer, GL_COLOR, 1, zero);
     glClearNamedFramebufferfv(t.framebuffer, GL_COLOR, 2, zero);
     glClearNamedFramebufferfv(t.framebuffer, GL_DEPTH, 0, &farDepth);
+    BeginPass(PassKind::kCamera);
     glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
     glViewport(0, 0, resolution.width, resolution.height);
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -322,14 +338,15 @@ void GlRenderer::ShadePass(CameraSlot slot, int map, const LightSpace& lightSpac
     glProgramUniform1f(p, 9, m.depthScale);
     glProgramUniform1i(p, 10, point ? 1 : 0);
     glProgramUniform2i(p, 11, m.resolution.width, m.resolution.height);
-    glBindImageTexture(0, c.color[0], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
-    glBindImageTexture(1, c.color[1], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(2, c.color[2], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(3, c.shade, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
     glBindTextureUnit(0, m.depth);
+    for (int i = 0; i < 3; ++i) glBindTextureUnit(1 + i, c.color[i]);
+    glBindFramebuffer(GL_FRAMEBUFFER, c.shadeFramebuffer);
+    glViewport(0, 0, c.resolution.width, c.resolution.height);
+    glDisable(GL_DEPTH_TEST);
     glUseProgram(p);
-    glDispatchCompute((c.resolution.width + 7) / 8, (c.resolution.height + 7) / 8, 1);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glBindVertexArray(emptyVertexArray_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     EndPass();
 }
 
@@ -344,6 +361,11 @@ std::vector<Shade> GlRenderer::ReadShades(CameraSlot slot) const {
 }
 
 std::vector<std::uint32_t> GlRenderer::BoundaryPixels(CameraSlot slot) {
+    FindBoundary(slot);
+    return ReadBoundary();
+}
+
+void GlRenderer::FindBoundary(CameraSlot slot) {
     const CameraTarget& c = cameras_[static_cast<int>(slot)];
     const auto pixels = static_cast<GLsizeiptr>(c.resolution.Count());
     if (boundaryCapacity_ < pixels) {
@@ -353,6 +375,7 @@ std::vector<std::uint32_t> GlRenderer::BoundaryPixels(CameraSlot slot) {
                              GL_DYNAMIC_STORAGE_BIT);
         boundaryCapacity_ = pixels;
     }
+    boundaryPixels_ = pixels;
     BeginPass(PassKind::kExtraction);
     const GLuint zero = 0;
     glNamedBufferSubData(boundaryBuffer_, 0, sizeof(GLuint), &zero);
@@ -362,9 +385,13 @@ std::vector<std::uint32_t> GlRenderer::BoundaryPixels(CameraSlot slot) {
     glDispatchCompute((c.resolution.width + 7) / 8, (c.resolution.height + 7) / 8, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     EndPass();
+}
+
+std::vector<std::uint32_t> GlRenderer::ReadBoundary() {
+    if (boundaryBuffer_ == 0) throw std::invalid_argument("GlRenderer::ReadBoundary: none found");
     GLuint count = 0;
     glGetNamedBufferSubData(boundaryBuffer_, 0, sizeof(GLuint), &count);
-    std::vector<std::uint32_t> out(std::min<GLsizeiptr>(count, pixels));
+    std::vector<std::uint32_t> out(std::min<GLsizeiptr>(count, boundaryPixels_));
     if (!out.empty())
         glGetNamedBufferSubData(boundaryBuffer_, sizeof(GLuint),
                                 static_cast<GLsizeiptr>(out.size() * sizeof(GLuint)), out.data());
@@ -373,7 +400,14 @@ std::vector<std::uint32_t> GlRenderer::BoundaryPixels(CameraSlot slot) {
 }
 
 void GlRenderer::BeginPass(PassKind kind) {
-    if (!timersOn_) return;
+    if (timer_ == PassTimer::kOff) return;
+    passKind_ = kind;
+    inPass_ = true;
+    if (timer_ == PassTimer::kFinish) {
+        glFinish();
+        passClock_.Restart();
+        return;
+    }
     GLuint query = 0;
     if (freeQueries_.empty()) {
         glCreateQueries(GL_TIME_ELAPSED, 1, &query);
@@ -383,34 +417,41 @@ void GlRenderer::BeginPass(PassKind kind) {
     }
     glBeginQuery(GL_TIME_ELAPSED, query);
     pending_.push_back({query, kind});
-    inPass_ = true;
 }
 
 void GlRenderer::EndPass() {
     if (!inPass_) return;
-    glEndQuery(GL_TIME_ELAPSED);
     inPass_ = false;
+    if (timer_ == PassTimer::kFinish) {
+        glFinish();
+        Add(passKind_, passClock_.Ms());
+        return;
+    }
+    glEndQuery(GL_TIME_ELAPSED);
+}
+
+void GlRenderer::Add(PassKind kind, double ms) {
+    switch (kind) {
+        case PassKind::kCamera:
+            times_.cameraPass += ms;
+            break;
+        case PassKind::kShadow:
+            times_.shadowMap += ms;
+            break;
+        case PassKind::kShading:
+            times_.shading += ms;
+            break;
+        case PassKind::kExtraction:
+            times_.extraction += ms;
+            break;
+    }
 }
 
 void GlRenderer::CollectTimes(bool wait) {
     for (const PendingQuery& q : pending_) {
         GLuint64 ns = 0;
         if (wait) glGetQueryObjectui64v(q.query, GL_QUERY_RESULT, &ns);
-        const double ms = static_cast<double>(ns) * 1e-6;
-        switch (q.kind) {
-            case PassKind::kCamera:
-                times_.cameraPass += ms;
-                break;
-            case PassKind::kShadow:
-                times_.shadowMap += ms;
-                break;
-            case PassKind::kShading:
-                times_.shading += ms;
-                break;
-            case PassKind::kExtraction:
-                times_.extraction += ms;
-                break;
-        }
+        Add(q.kind, static_cast<double>(ns) * 1e-6);
         freeQueries_.push_back(q.query);
     }
     pending_.clear();

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/camera.h"
 #include "lexel/spatial/gl/context.h"
 #include "lexel/spatial/harness/render_backend.h"
@@ -31,9 +32,16 @@ namespace lexel::spatial::gl {
 
 // Where a camera pass goes: the final frame, or the low-resolution readback of Algorithm 1.
 enum class CameraSlot { kFrame = 0, kReadback = 1 };
-inline constexpr int kMapSlots = 2;
 
-// GPU milliseconds per kind of pass since the last TakeTimes (GL_TIME_ELAPSED).
+// How passes are timed:
+//   kQueries  GL_TIME_ELAPSED queries: GPU time, without stalling the pipeline (hardware GPUs);
+//   kFinish   glFinish before and after each pass, wall clock: right on any driver, but it drains
+//             the pipeline. Mesa's llvmpipe needs it: it rasterizes in worker threads when a
+//             frame is flushed, outside the query (measured: 2 ms reported for a 38 ms camera
+//             pass, 0 ms for a 40 ms compute pass).
+enum class PassTimer { kOff, kQueries, kFinish };
+
+// Milliseconds per kind of pass since the last TakeTimes.
 struct GpuTimes {
     double cameraPass = 0.0;  // camera passes (both slots)
     double shadowMap = 0.0;   // shadow-map passes
@@ -62,7 +70,8 @@ class GlRenderer {
     std::vector<glm::vec4> ReadPositions(CameraSlot slot) const;
     std::vector<glm::vec4> ReadNormals(CameraSlot slot) const;
 
-    // The shadow map of `matrix` at `resolution` into map slot `map` (0 ≤ map < kMapSlots).
+    // The shadow map of `matrix` at `resolution` into map slot `map` ≥ 0 (slots are created on
+    // first use and keep their map until overwritten).
     void RenderShadowMap(int map, const LightSpace& lightSpace, const LightMatrix& matrix,
                          Resolution resolution);
     // A CPU shadow map into slot `map` in place of a shadow pass.
@@ -74,12 +83,15 @@ class GlRenderer {
     // made for `lightSpace`'s light.
     void ShadePass(CameraSlot slot, int map, const LightSpace& lightSpace);
     std::vector<spatial::Shade> ReadShades(CameraSlot slot) const;
-    // The boundary pixels of the slot's last shading (BoundaryPixels, samples.h), ascending.
+    // The boundary pixels of the slot's last shading (BoundaryPixels, samples.h), ascending:
+    // FindBoundary (the compute pass) then ReadBoundary (waits for it, reads the list back).
     std::vector<std::uint32_t> BoundaryPixels(CameraSlot slot);
+    void FindBoundary(CameraSlot slot);
+    std::vector<std::uint32_t> ReadBoundary();
 
-    // Timer queries around every pass while enabled (off by default: a query costs a little).
-    void EnableTimers(bool on) { timersOn_ = on; }
-    // Waits for the pending queries and returns their sums by kind of pass, then resets them.
+    // How passes are timed from now on (kOff by default).
+    void SetPassTimer(PassTimer timer) { timer_ = timer; }
+    // Waits for the pending queries and returns the sums by kind of pass, then resets them.
     GpuTimes TakeTimes();
 
   private:
@@ -89,6 +101,7 @@ class GlRenderer {
         std::array<GLuint, 3> color{};  // triangle, position, normal
         GLuint depth = 0;
         GLuint shade = 0;  // R8UI
+        GLuint shadeFramebuffer = 0;
     };
     struct MapTarget {
         Resolution resolution;
@@ -109,14 +122,20 @@ class GlRenderer {
     const Context& context_;
     Bounds bounds_;  // of the mesh: the largest light depth for the depth scale
     GLsizei indexCount_ = 0;
+    GLuint emptyVertexArray_ = 0;  // the full-screen triangle needs no attributes
     GLuint vertexArray_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0, normalBuffer_ = 0;
     GLuint boundaryBuffer_ = 0;
     GLsizeiptr boundaryCapacity_ = 0;  // pixels
+    GLsizeiptr boundaryPixels_ = 0;    // pixels of the last FindBoundary's image
     GLuint cameraProgram_ = 0, shadowProgram_ = 0, shadeProgram_ = 0, boundaryProgram_ = 0;
     std::array<CameraTarget, 2> cameras_{};
-    std::array<MapTarget, kMapSlots> maps_{};
+    std::vector<MapTarget> maps_;
 
-    bool timersOn_ = false;
+    void Add(PassKind kind, double ms);
+
+    PassTimer timer_ = PassTimer::kOff;
+    PassKind passKind_ = PassKind::kCamera;
+    Stopwatch passClock_;
     struct PendingQuery {
         GLuint query;
         PassKind kind;

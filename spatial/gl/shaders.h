@@ -52,14 +52,20 @@ void main() {
 )";
 
 // ShadePoint per pixel of a camera buffer (render_backend.h): attached shadow, receiver-plane
-// depth along the ray through the texel centre, relative bias 1e-5. Codes are those of Shade.
-inline constexpr std::string_view kShadeCompute = R"(#version 450 core
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, r32i) readonly uniform iimage2D triangleImage;
-layout(binding = 1, rgba32f) readonly uniform image2D positionImage;
-layout(binding = 2, rgba32f) readonly uniform image2D normalImage;
-layout(binding = 3, r8ui) writeonly uniform uimage2D shadeImage;
+// depth along the ray through the texel centre, relative bias 1e-5. Codes are those of Shade. A
+// full-screen triangle: one fragment per pixel of the shade image.
+inline constexpr std::string_view kFullScreenVertex = R"(#version 450 core
+void main() {
+    vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);  // (0,0), (2,0), (0,2)
+    gl_Position = vec4(2.0 * corner - 1.0, 0.0, 1.0);
+}
+)";
+
+inline constexpr std::string_view kShadeFragment = R"(#version 450 core
 layout(binding = 0) uniform sampler2D shadowDepth;
+layout(binding = 1) uniform isampler2D triangleImage;
+layout(binding = 2) uniform sampler2D positionImage;
+layout(binding = 3) uniform sampler2D normalImage;
 layout(location = 0) uniform mat3 lsFromWorld;      // X = lsFromWorld p + lsOffset
 layout(location = 1) uniform vec3 lsOffset;
 layout(location = 2) uniform mat3 mapFromLs;        // rows p1, p2, p4
@@ -72,13 +78,14 @@ layout(location = 8) uniform float depthOffset;     // directional: Depth(0)
 layout(location = 9) uniform float depthScale;
 layout(location = 10) uniform int pointLight;
 layout(location = 11) uniform ivec2 mapSize;
+layout(location = 0) out uint shade;
 const uint kEmpty = 0u, kLit = 1u, kShadowed = 2u, kFacingAway = 3u;
 const float kRelativeBias = 1e-5;
 
 uint ShadeOf(ivec2 pixel) {
-    if (imageLoad(triangleImage, pixel).x < 0) return kEmpty;
-    vec3 p = imageLoad(positionImage, pixel).xyz;
-    vec3 n = imageLoad(normalImage, pixel).xyz;
+    if (texelFetch(triangleImage, pixel, 0).x < 0) return kEmpty;
+    vec3 p = texelFetch(positionImage, pixel, 0).xyz;
+    vec3 n = texelFetch(normalImage, pixel, 0).xyz;
     vec3 toLight = pointLight != 0 ? normalize(wsLight - p) : -wsLightDirection;
     if (!(dot(n, toLight) > 0.0)) return kFacingAway;
     vec3 X = lsFromWorld * p + lsOffset;
@@ -111,11 +118,7 @@ uint ShadeOf(ivec2 pixel) {
     return stored < receiver * (1.0 - kRelativeBias) ? kShadowed : kLit;
 }
 
-void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, imageSize(shadeImage)))) return;
-    imageStore(shadeImage, pixel, uvec4(ShadeOf(pixel)));
-}
+void main() { shade = ShadeOf(ivec2(gl_FragCoord.xy)); }
 )";
 
 // Report Algorithm 1 step 3: the boundary pixels (a lit or shadowed receiver with an 8-neighbour
