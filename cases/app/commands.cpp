@@ -81,11 +81,13 @@ BackendKind BackendOf(const std::string& name) {
     const std::optional<BackendKind> kind = ParseBackend(name);
     if (!kind) throw InputError("--backend: must be cpu or gl, got '" + name + "'");
     if (*kind == BackendKind::kGl) {
+        std::string description;
         try {
-            std::cerr << "lexel: backend " << DescribeBackend(*kind) << '\n';
+            description = DescribeBackend(*kind);
         } catch (const BackendUnavailable& e) {
             throw InputError("--backend gl: " + std::string(e.what()));
         }
+        std::cerr << "lexel: backend " << description << '\n';
     }
     return *kind;
 }

@@ -38,7 +38,8 @@ std::vector<spatial::Light> TimingLightsOf(const spatial::Scene& scene, int coun
     if (static_cast<int>(lights.size()) < count)
         throw InputError("/lights: --lights " + std::to_string(count) + " needs " +
                          std::to_string(count) + " lights; the case has " +
-                         std::to_string(lights.size()) + " and no light_sweep");
+                         std::to_string(lights.size()) +
+                         (scene.lightSweep ? "" : " and no light_sweep"));
     lights.resize(static_cast<std::size_t>(count));
     return lights;
 }

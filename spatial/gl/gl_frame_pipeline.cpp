@@ -34,6 +34,7 @@ class GlFramePipeline final : public FramePipeline {
         FrameTimes t;
         const Stopwatch frameTime;
         const bool optimal = method == FrameMethod::kOptimal;
+        used_.clear();
         KeepState(lights, optimal);
         const bool anyUpdate =
             optimal &&
@@ -62,6 +63,7 @@ class GlFramePipeline final : public FramePipeline {
             }
             renderer_.RenderShadowMap(FinalMap(l, optimal), lightSpace, matrix, scene.shadowMap);
             renderer_.ShadePass(CameraSlot::kFrame, FinalMap(l, optimal), lightSpace);
+            used_.push_back(matrix);
             if (optimal) matrices_[l] = matrix;
         }
         glFinish();
@@ -74,6 +76,8 @@ class GlFramePipeline final : public FramePipeline {
         t.extraction += gpu.extraction;
         return t;
     }
+
+    const std::vector<LightMatrix>& Matrices() const override { return used_; }
 
     std::string PassClock() const override {
         return renderer_.context().Info().software
@@ -137,6 +141,7 @@ class GlFramePipeline final : public FramePipeline {
     GlRenderer renderer_;
     std::vector<Light> lights_;  // of the last optimal frame
     std::vector<std::optional<LightMatrix>> matrices_;
+    std::vector<LightMatrix> used_;  // by the last frame
 };
 
 }  // namespace

@@ -39,6 +39,7 @@ class BackendFramePipeline final : public FramePipeline {
         FrameTimes t;
         const Stopwatch frameTime;
         const bool optimal = method == FrameMethod::kOptimal;
+        used_.clear();
         KeepState(lights, optimal);
         const bool anyUpdate = optimal && (schedule.optimize || matrices_.empty() ||
                                            std::any_of(matrices_.begin(), matrices_.end(),
@@ -69,6 +70,7 @@ class BackendFramePipeline final : public FramePipeline {
             pass.Restart();
             backend_.ShadePixels(frame, lightSpace, map);
             t.shading += pass.Ms();
+            used_.push_back(matrix);
             if (optimal) {
                 matrices_[l] = matrix;
                 maps_[l] = std::move(map);
@@ -77,6 +79,8 @@ class BackendFramePipeline final : public FramePipeline {
         t.total = frameTime.Ms();
         return t;
     }
+
+    const std::vector<LightMatrix>& Matrices() const override { return used_; }
 
     std::string PassClock() const override {
         return "wall clock per pass (" + std::string(backend_.Name()) + " backend)";
@@ -133,6 +137,7 @@ class BackendFramePipeline final : public FramePipeline {
     Bounds bounds_;
     std::vector<Light> lights_;  // of the last optimal frame
     std::vector<std::optional<LightMatrix>> matrices_;
+    std::vector<LightMatrix> used_;  // by the last frame
     std::vector<std::optional<ShadowMap>> maps_;
 };
 

@@ -15,6 +15,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "lexel/spatial/baselines.h"
 #include "lexel/spatial/harness/render_backend.h"
@@ -58,6 +59,8 @@ class FramePipeline {
                                    FrameSchedule schedule = {}) = 0;
     // How the passes are timed, in words (for reports).
     virtual std::string PassClock() const = 0;
+    // The light matrices the last frame rendered its final maps with, one per light.
+    virtual const std::vector<LightMatrix>& Matrices() const = 0;
 };
 
 // Shared by the pipelines: the same light (type, position, direction); the baselines' context of

@@ -17,7 +17,9 @@
 #include <iterator>
 
 #include "lexel/cases/run/sweep.h"
+#include "lexel/spatial/gl/gl_frame_pipeline.h"
 #include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/frame_pipeline.h"
 #include "spatial/gl/gl_test_support.h"
 
 namespace lexel::spatial {
@@ -85,6 +87,37 @@ TEST_F(GlTest, EvaluationAgreesWithTheCpuBackendPerLight) {
     std::cout << "[   INFO   ] optimal: worst p4 angle " << worstAngle << "°, worst energy excess "
               << worstEnergy << ", mean misclassified " << sumMisCpu / lights.size() << " / "
               << sumMisGpu / lights.size() << " (cpu / gl)\n";
+}
+
+TEST_F(GlTest, TimedGlFrameUsesTheMatricesOfTheGlEvaluation) {
+    // `lexel timing --backend gl` times the same Algorithm 1 as `lexel run --backend gl`: the
+    // frame's readback, GPU boundary pixels and optimizer give the evaluation's matrices.
+    const Scene& scene = Walkthrough();
+    const auto gpu = gl::MakeGlBackend(scene.geometry);
+    const Evaluator evaluator(scene, *gpu);
+    EvaluationOptions options;
+    options.methods = {"focused", "optimal"};
+    const auto pipeline = gl::MakeGlFramePipeline(scene.geometry);
+    pipeline->RenderFrame(scene, scene.camera, scene.lights, FrameMethod::kFocused);
+    const std::vector<LightMatrix> focused = pipeline->Matrices();
+    const FrameTimes t =
+        pipeline->RenderFrame(scene, scene.camera, scene.lights, FrameMethod::kOptimal);
+    const std::vector<LightMatrix> optimal = pipeline->Matrices();
+    ASSERT_EQ(optimal.size(), scene.lights.size());
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+        const LightOutcome o = evaluator.Evaluate(scene.lights[l], options);
+        EXPECT_EQ(focused[l].p4, o.methods[0].matrix.p4) << "light " << l;
+        EXPECT_EQ(focused[l].p1, o.methods[0].matrix.p1) << "light " << l;
+        EXPECT_EQ(optimal[l].p4, o.methods[1].matrix.p4) << "light " << l;
+        EXPECT_EQ(optimal[l].p1, o.methods[1].matrix.p1) << "light " << l;
+        EXPECT_EQ(optimal[l].p2, o.methods[1].matrix.p2) << "light " << l;
+    }
+    EXPECT_GT(t.cameraPass, 0.0);
+    EXPECT_GT(t.shadowMap, 0.0);
+    EXPECT_GT(t.shading, 0.0);
+    EXPECT_GT(t.extraction, 0.0);
+    EXPECT_GT(t.search, 0.0);
+    EXPECT_GE(t.total, t.cameraPass);
 }
 
 }  // namespace
