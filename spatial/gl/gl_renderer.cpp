@@ -36,7 +36,6 @@ namespace {
 constexpr GLenum kCameraFormats[3] = {GL_R32I, GL_RGBA32F, GL_RGBA32F};
 
 glm::mat4 ToFloat(const glm::dmat4& m) { return glm::mat4(m); }
-glm::mat3 ToFloat(const glm::dmat3& m) { return glm::mat3(m); }
 
 void CheckSize(const Context& context, Resolution r, const char* what) {
     const int limit = context.Info().maxTextureSize;
@@ -52,6 +51,29 @@ double MaxDepth(const LightSpace& lightSpace, const Bounds& wsBounds) {
     double m = 0.0;
     for (const glm::dvec3& corner : wsBounds.Corners()) m = std::max(m, lightSpace.Depth(corner));
     return m;
+}
+
+// The light uniforms of shaders.h (LEXEL_LIGHT_UNIFORMS), in double, on `program`.
+void SetLightUniforms(GLuint program, const LightSpace& lightSpace, const LightMatrix& matrix) {
+    const bool point = lightSpace.IsPoint();
+    glm::dvec3 rayBase, unused;
+    lightSpace.Ray(glm::dvec3(0.0, 0.0, 1.0), &rayBase, &unused);  // directional: o - s e3
+    const glm::dvec3 wsLight = point ? lightSpace.light().position : rayBase;
+    const glm::dmat3 lsFromWorld = lightSpace.LightFromWorldLinear();
+    const glm::dvec3 lsOffset = lightSpace.ToLight(glm::dvec3(0.0));
+    const glm::dmat3 mapFromLs = matrix.Rows();
+    const glm::dmat3 lsFromMap = glm::inverse(mapFromLs);
+    const glm::dmat3 worldFromLs = glm::transpose(lsFromWorld);
+    glProgramUniform1i(program, 10, point ? 1 : 0);
+    glProgramUniformMatrix3dv(program, 11, 1, GL_FALSE, glm::value_ptr(lsFromWorld));
+    glProgramUniform3dv(program, 12, 1, glm::value_ptr(lsOffset));
+    glProgramUniformMatrix3dv(program, 13, 1, GL_FALSE, glm::value_ptr(mapFromLs));
+    glProgramUniformMatrix3dv(program, 14, 1, GL_FALSE, glm::value_ptr(lsFromMap));
+    glProgramUniformMatrix3dv(program, 15, 1, GL_FALSE, glm::value_ptr(worldFromLs));
+    glProgramUniform3dv(program, 16, 1, glm::value_ptr(wsLight));
+    glProgramUniform3dv(program, 17, 1, glm::value_ptr(lightSpace.light().direction));
+    glProgramUniform1d(program, 18, lsOffset.z);
+    glProgramUniform1d(program, 19, lightSpace.Depth(glm::dvec3(0.0)));
 }
 
 }  // namespace
@@ -78,6 +100,15 @@ GlRenderer::GlRenderer(const TriangleMesh& geometry) : context_(Context::Shared(
         normals[t] = glm::vec4(glm::vec3(geometry.FaceNormal(t)), 0.0f);
     glCreateBuffers(1, &normalBuffer_);
     glNamedBufferStorage(normalBuffer_, normals.size() * sizeof(glm::vec4), normals.data(), 0);
+    // Face planes n·x = d in double for the shadow pass's depth.
+    std::vector<glm::dvec4> planes(normals.size(), glm::dvec4(0.0));
+    for (std::size_t t = 0; t < geometry.triangles.size(); ++t) {
+        const glm::dvec3 n = geometry.FaceNormal(t);
+        planes[t] =
+            glm::dvec4(n, glm::dot(n, glm::dvec3(geometry.positions[geometry.triangles[t][0]])));
+    }
+    glCreateBuffers(1, &planeBuffer_);
+    glNamedBufferStorage(planeBuffer_, planes.size() * sizeof(glm::dvec4), planes.data(), 0);
 
     cameraProgram_ = BuildProgram({{GL_VERTEX_SHADER, shaders::kGeometryVertex},
                                    {GL_FRAGMENT_SHADER, shaders::kCameraFragment}});
@@ -98,8 +129,9 @@ GlRenderer::~GlRenderer() {
     glDeleteQueries(static_cast<GLsizei>(freeQueries_.size()), freeQueries_.data());
     for (GLuint p : {cameraProgram_, shadowProgram_, shadeProgram_, boundaryProgram_})
         glDeleteProgram(p);
-    const GLuint buffers[] = {vertexBuffer_, indexBuffer_, normalBuffer_, boundaryBuffer_};
-    glDeleteBuffers(4, buffers);
+    const GLuint buffers[] = {vertexBuffer_, indexBuffer_, normalBuffer_, planeBuffer_,
+                              boundaryBuffer_};
+    glDeleteBuffers(5, buffers);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteVertexArrays(1, &emptyVertexArray_);
 }
@@ -272,12 +304,9 @@ void GlRenderer::RenderShadowMap(int map, const LightSpace& lightSpace, const Li
     glDisable(GL_CULL_FACE);
     glUseProgram(shadowProgram_);
     glProgramUniformMatrix4fv(shadowProgram_, 0, 1, GL_FALSE, glm::value_ptr(clip));
-    const bool point = lightSpace.IsPoint();
-    const glm::vec3 wsLight(point ? lightSpace.light().position : lightSpace.light().direction);
-    glProgramUniform1i(shadowProgram_, 1, point ? 1 : 0);
-    glProgramUniform3fv(shadowProgram_, 2, 1, glm::value_ptr(wsLight));
-    glProgramUniform1f(shadowProgram_, 3, static_cast<float>(lightSpace.Depth(glm::dvec3(0.0))));
-    glProgramUniform1f(shadowProgram_, 4, 1.0f / t.depthScale);
+    glProgramUniform1d(shadowProgram_, 4, 1.0 / t.depthScale);
+    SetLightUniforms(shadowProgram_, lightSpace, matrix);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, planeBuffer_);
     glBindVertexArray(vertexArray_);
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -318,26 +347,10 @@ void GlRenderer::ShadePass(CameraSlot slot, int map, const LightSpace& lightSpac
     if (c.framebuffer == 0 || m.framebuffer == 0)
         throw std::invalid_argument("GlRenderer::ShadePass: render or upload the buffers first");
     BeginPass(slot == CameraSlot::kFrame ? PassKind::kShading : PassKind::kExtraction);
-    const bool point = lightSpace.IsPoint();
-    const glm::dmat3 lsFromWorld = lightSpace.LightFromWorldLinear();
-    const glm::dmat3 mapFromLs = m.matrix.Rows();
-    glm::dvec3 rayBase, unused;
-    lightSpace.Ray(glm::dvec3(0.0, 0.0, 1.0), &rayBase, &unused);  // directional: o - s e3
-    const glm::vec3 wsLight(point ? lightSpace.light().position : rayBase);
     const GLuint p = shadeProgram_;
-    glProgramUniformMatrix3fv(p, 0, 1, GL_FALSE, glm::value_ptr(ToFloat(lsFromWorld)));
-    glProgramUniform3fv(p, 1, 1, glm::value_ptr(glm::vec3(lightSpace.ToLight(glm::dvec3(0.0)))));
-    glProgramUniformMatrix3fv(p, 2, 1, GL_FALSE, glm::value_ptr(ToFloat(mapFromLs)));
-    glProgramUniformMatrix3fv(p, 3, 1, GL_FALSE, glm::value_ptr(ToFloat(glm::inverse(mapFromLs))));
-    glProgramUniformMatrix3fv(p, 4, 1, GL_FALSE,
-                              glm::value_ptr(ToFloat(glm::transpose(lsFromWorld))));
-    glProgramUniform3fv(p, 5, 1, glm::value_ptr(wsLight));
-    glProgramUniform3fv(p, 6, 1, glm::value_ptr(glm::vec3(lightSpace.light().direction)));
-    glProgramUniform1f(p, 7, static_cast<float>(lightSpace.ToLight(glm::dvec3(0.0)).z));
-    glProgramUniform1f(p, 8, static_cast<float>(lightSpace.Depth(glm::dvec3(0.0))));
-    glProgramUniform1f(p, 9, m.depthScale);
-    glProgramUniform1i(p, 10, point ? 1 : 0);
-    glProgramUniform2i(p, 11, m.resolution.width, m.resolution.height);
+    glProgramUniform1d(p, 0, m.depthScale);
+    glProgramUniform2i(p, 1, m.resolution.width, m.resolution.height);
+    SetLightUniforms(p, lightSpace, m.matrix);
     glBindTextureUnit(0, m.depth);
     for (int i = 0; i < 3; ++i) glBindTextureUnit(1 + i, c.color[i]);
     glBindFramebuffer(GL_FRAMEBUFFER, c.shadeFramebuffer);

@@ -124,6 +124,7 @@ class GlRenderer {
     GLsizei indexCount_ = 0;
     GLuint emptyVertexArray_ = 0;  // the full-screen triangle needs no attributes
     GLuint vertexArray_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0, normalBuffer_ = 0;
+    GLuint planeBuffer_ = 0;  // dvec4 (n, d) per triangle: n·x = d
     GLuint boundaryBuffer_ = 0;
     GLsizeiptr boundaryCapacity_ = 0;  // pixels
     GLsizeiptr boundaryPixels_ = 0;    // pixels of the last FindBoundary's image

@@ -37,17 +37,65 @@ void main() {
 }
 )";
 
-// The shadow-map pass: linear light depth (LightSpace::Depth) divided by a power of two, so that
-// the stored float times that power is the depth the shader computed, bit for bit.
-inline constexpr std::string_view kShadowFragment = R"(#version 450 core
-layout(location = 1) uniform int pointLight;
-layout(location = 2) uniform vec3 wsLight;      // point: the light; directional: its unit direction
-layout(location = 3) uniform float depthOffset; // directional: Depth(0)
-layout(location = 4) uniform float invDepthScale;
-in vec3 wsPoint;
+// The light and its matrix in double (GLSL 4.00 fp64, core since OpenGL 4.0), shared by the
+// shadow and shading passes: X = lsFromWorld p + lsOffset, u = (mapFromLs X).xy / (mapFromLs X).z,
+// and the light ray through the texel centre c: from wsLight (point) or from
+// wsLight + (lsThird / X.z) worldFromLs X (directional), along normalize(worldFromLs X) (point)
+// or wsLightDirection (directional), X = lsFromMap (c, 1). In float the ray's direction carries
+// ~1e-7 relative error, which a grazing receiver turns into more than the 1e-5 bias.
+#define LEXEL_LIGHT_UNIFORMS                                                                   \
+    "layout(location = 10) uniform int pointLight;\n"                                          \
+    "layout(location = 11) uniform dmat3 lsFromWorld;\n"                                       \
+    "layout(location = 12) uniform dvec3 lsOffset;\n"                                          \
+    "layout(location = 13) uniform dmat3 mapFromLs;\n"                                         \
+    "layout(location = 14) uniform dmat3 lsFromMap;\n"                                         \
+    "layout(location = 15) uniform dmat3 worldFromLs;\n"                                       \
+    "layout(location = 16) uniform dvec3 wsLight;\n"                                           \
+    "layout(location = 17) uniform dvec3 wsLightDirection;\n"                                  \
+    "layout(location = 18) uniform double lsThird;\n"                                          \
+    "layout(location = 19) uniform double depthOffset;\n"                                      \
+    "void LightRay(dvec2 texelCentre, out dvec3 origin, out dvec3 direction) {\n"              \
+    "    dvec3 X = lsFromMap * dvec3(texelCentre, 1.0);\n"                                     \
+    "    if (pointLight != 0) {\n"                                                             \
+    "        origin = wsLight;\n"                                                              \
+    "        direction = normalize(worldFromLs * X);\n"                                        \
+    "    } else {\n"                                                                           \
+    "        origin = wsLight + (lsThird / X.z) * (worldFromLs * X);\n"                        \
+    "        direction = wsLightDirection;\n"                                                  \
+    "    }\n"                                                                                  \
+    "}\n"                                                                                      \
+    "// The depth of the plane (n, through p) along the ray, or `otherwise` when none.\n"      \
+    "double PlaneDepth(dvec3 n, dvec3 p, dvec3 origin, dvec3 direction, double otherwise) {\n" \
+    "    double facing = dot(n, direction);\n"                                                 \
+    "    if (facing == 0.0) return otherwise;\n"                                               \
+    "    double t = dot(n, p - origin) / facing;\n"                                            \
+    "    return t > 0.0 && !isinf(t) ? t : otherwise;\n"                                       \
+    "}\n"
+
+// The shadow-map pass: linear light depth (LightSpace::Depth) at the texel centre — the distance
+// along the light ray through the texel centre to the fragment's triangle plane (n·x = d, from
+// the mesh in double), as the CPU renderer computes it at the exact point — divided by a power of
+// two, so that the stored float times that power is the depth the shader computed. Interpolating
+// the world point in float instead loses the 1e-5 bias on strongly warped maps (measured:
+// plane-optimal for a sweep light with p4 · e3 = 0.045: 1,496 texels off by more than 1e-5 and
+// 162,000 pixels decided otherwise), and a float plane through the interpolated point loses it
+// at grazing angles (the off-plane rounding divided by n · direction).
+inline constexpr std::string_view kShadowFragment =
+    "#version 450 core\n"
+    "layout(std430, binding = 2) readonly buffer FacePlanes { dvec4 wsFacePlane[]; };\n"
+    "layout(location = 4) uniform double invDepthScale;\n"
+    "in vec3 wsPoint;\n" LEXEL_LIGHT_UNIFORMS R"(
 void main() {
-    float depth = pointLight != 0 ? length(wsPoint - wsLight) : dot(wsLight, wsPoint) + depthOffset;
-    gl_FragDepth = depth * invDepthScale;
+    dvec3 origin, direction;
+    LightRay(dvec2(gl_FragCoord.xy), origin, direction);
+    dvec4 plane = wsFacePlane[gl_PrimitiveID];
+    double depth = dot(dvec3(wsPoint) - origin, direction);  // a degenerate triangle's
+    double facing = dot(plane.xyz, direction);
+    if (facing != 0.0) {
+        double t = (plane.w - dot(plane.xyz, origin)) / facing;
+        if (t > 0.0 && !isinf(t)) depth = t;
+    }
+    gl_FragDepth = float(depth * invDepthScale);
 }
 )";
 
@@ -61,61 +109,39 @@ void main() {
 }
 )";
 
-inline constexpr std::string_view kShadeFragment = R"(#version 450 core
-layout(binding = 0) uniform sampler2D shadowDepth;
-layout(binding = 1) uniform isampler2D triangleImage;
-layout(binding = 2) uniform sampler2D positionImage;
-layout(binding = 3) uniform sampler2D normalImage;
-layout(location = 0) uniform mat3 lsFromWorld;      // X = lsFromWorld p + lsOffset
-layout(location = 1) uniform vec3 lsOffset;
-layout(location = 2) uniform mat3 mapFromLs;        // rows p1, p2, p4
-layout(location = 3) uniform mat3 lsFromMap;        // its inverse
-layout(location = 4) uniform mat3 worldFromLs;      // ray directions (point) / offsets (directional)
-layout(location = 5) uniform vec3 wsLight;          // point: the light; directional: ray base
-layout(location = 6) uniform vec3 wsLightDirection; // directional: unit direction of travel
-layout(location = 7) uniform float lsThird;         // directional: the fixed third coordinate s
-layout(location = 8) uniform float depthOffset;     // directional: Depth(0)
-layout(location = 9) uniform float depthScale;
-layout(location = 10) uniform int pointLight;
-layout(location = 11) uniform ivec2 mapSize;
-layout(location = 0) out uint shade;
+inline constexpr std::string_view kShadeFragment =
+    "#version 450 core\n"
+    "layout(binding = 0) uniform sampler2D shadowDepth;\n"
+    "layout(binding = 1) uniform isampler2D triangleImage;\n"
+    "layout(binding = 2) uniform sampler2D positionImage;\n"
+    "layout(binding = 3) uniform sampler2D normalImage;\n"
+    "layout(location = 0) uniform double depthScale;\n"
+    "layout(location = 1) uniform ivec2 mapSize;\n"
+    "layout(location = 0) out uint shade;\n" LEXEL_LIGHT_UNIFORMS R"(
 const uint kEmpty = 0u, kLit = 1u, kShadowed = 2u, kFacingAway = 3u;
-const float kRelativeBias = 1e-5;
+const double kRelativeBias = 1e-5;
 
 uint ShadeOf(ivec2 pixel) {
     if (texelFetch(triangleImage, pixel, 0).x < 0) return kEmpty;
-    vec3 p = texelFetch(positionImage, pixel, 0).xyz;
-    vec3 n = texelFetch(normalImage, pixel, 0).xyz;
-    vec3 toLight = pointLight != 0 ? normalize(wsLight - p) : -wsLightDirection;
+    dvec3 p = dvec3(texelFetch(positionImage, pixel, 0).xyz);
+    dvec3 n = dvec3(texelFetch(normalImage, pixel, 0).xyz);
+    dvec3 toLight = pointLight != 0 ? normalize(wsLight - p) : -wsLightDirection;
     if (!(dot(n, toLight) > 0.0)) return kFacingAway;
-    vec3 X = lsFromWorld * p + lsOffset;
-    vec3 h = mapFromLs * X;
+    dvec3 X = lsFromWorld * p + lsOffset;
+    dvec3 h = mapFromLs * X;
     if (!(h.z > 1e-9 * length(X))) return kLit;
-    vec2 u = h.xy / h.z;
-    if (!(u.x >= 0.0 && u.y >= 0.0 && u.x < float(mapSize.x) && u.y < float(mapSize.y)))
+    dvec2 u = h.xy / h.z;
+    if (!(u.x >= 0.0 && u.y >= 0.0 && u.x < double(mapSize.x) && u.y < double(mapSize.y)))
         return kLit;
     ivec2 texel = ivec2(u);
     float stored = texelFetch(shadowDepth, texel, 0).x;
     if (stored >= 1.0) return kLit;  // cleared: nothing drawn there
-    stored *= depthScale;
-    vec3 lsCentre = lsFromMap * vec3(vec2(texel) + 0.5, 1.0);
-    vec3 origin, direction;
-    float receiver;
-    if (pointLight != 0) {
-        origin = wsLight;
-        direction = normalize(worldFromLs * lsCentre);
-        receiver = length(p - wsLight);
-    } else {
-        origin = wsLight + (lsThird / lsCentre.z) * (worldFromLs * lsCentre);
-        direction = wsLightDirection;
-        receiver = dot(wsLightDirection, p) + depthOffset;
-    }
-    float facing = dot(n, direction);
-    if (facing != 0.0) {
-        float t = dot(n, p - origin) / facing;
-        if (t > 0.0 && !isinf(t)) receiver = t;
-    }
-    return stored < receiver * (1.0 - kRelativeBias) ? kShadowed : kLit;
+    dvec3 origin, direction;
+    LightRay(dvec2(texel) + 0.5, origin, direction);
+    double receiver = PlaneDepth(n, p, origin, direction,
+                                 pointLight != 0 ? length(p - wsLight)
+                                                 : dot(wsLightDirection, p) + depthOffset);
+    return double(stored) * depthScale < receiver * (1.0 - kRelativeBias) ? kShadowed : kLit;
 }
 
 void main() { shade = ShadeOf(ivec2(gl_FragCoord.xy)); }

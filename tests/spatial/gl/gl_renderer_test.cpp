@@ -106,8 +106,8 @@ TEST_F(GlTest, CameraPassSeesTheCpuTrianglesAndPoints) {
               << coverageDiffers << ", triangle on " << triangleDiffers
               << "; point error / scene radius mean " << sumError / covered << " max " << maxError
               << '\n';
-    // Measured on llvmpipe: 3 coverage and 64 triangle differences (depth ties where objects
-    // touch the floor, shared edges), point error mean 3e-8, max 4e-6 scene radii.
+    // Measured on llvmpipe: 3 coverage and 23 triangle differences (depth ties where objects
+    // touch the floor, shared edges), float point error mean 7e-8, max 4e-6 scene radii.
     EXPECT_LE(coverageDiffers, 5e-5 * covered);
     EXPECT_LE(triangleDiffers, 5e-4 * covered);
     EXPECT_LT(sumError / covered, 1e-6);
@@ -150,9 +150,11 @@ TEST_F(GlTest, ShadowMapsMatchTheCpuCoverageAndLinearDepth) {
                   << ": " << covered << " covered, coverage differs on " << coverageDiffers
                   << ", depth rel. error median " << median << " p99 " << p99 << ", > 1e-5 on "
                   << far << '\n';
+        // Measured on llvmpipe: coverage differs on 3 and 0 texels, the depth is the CPU's float
+        // on 99% of texels (p99 0), 2 and 0 texels see another surface.
         EXPECT_LE(coverageDiffers, 1e-3 * covered);
         EXPECT_LT(median, 1e-7);
-        EXPECT_LT(p99, 1e-6);
+        EXPECT_LT(p99, 2.5e-7);  // two float roundings (6e-8 each) plus the plane's
         EXPECT_LE(far, 1e-3 * covered);
     }
 }
