@@ -228,6 +228,7 @@ int TimingCommand(const TimingFlags& flags) {
     options.frames = flags.frames;
     options.updateEvery = flags.updateEvery;
     options.standardEvery = flags.standardEvery;
+    options.optimal = flags.optimizer;
     const ReportTiming report =
         LoadReportTiming(DataDirectory() / "published" / "report_timing.json");
     const TimingRun run = WithCaseName(casePath, [&] { return RunTiming(scene, options); });

@@ -45,7 +45,8 @@ struct TimingFlags {
     int frames = 8;
     int updateEvery = 1;    // optimal: Algorithm 1 every U frames (the report: 3)
     int standardEvery = 1;  // optimal: step 1 from a standard map every S updates (the report: 2)
-    std::string format = "table";  // table | json | csv
+    std::string optimizer = "optimal-report";  // optimal frames: optimal-report | optimal | ...
+    std::string format = "table";              // table | json | csv
 };
 int TimingCommand(const TimingFlags& flags);
 

@@ -5,7 +5,7 @@
 //             [--format table|markdown|csv|json]
 //             [--out DIR]                           the 3D report's Table 1
 //   lexel timing CASE.json [--backend cpu|gl] [--lights N] [--frames F] [--format table|json|csv]
-//             [--update-every U] [--standard-every S]
+//             [--update-every U] [--standard-every S] [--optimizer optimal-report|optimal|...]
 //                                                   the 3D report's Tables 2–3
 //   lexel info                                      version and backends (the GL renderer)
 //   (run and sweep take --backend cpu|gl for 3D cases)
@@ -94,6 +94,11 @@ int main(int argc, char** argv) {
                      "Optimal: step 1 from a standard map every S updates, else from the "
                      "previous map (report: 2)")
         ->check(CLI::Range(1, 1000));
+    timing
+        ->add_option(
+            "--optimizer", timingFlags.optimizer,
+            "The optimal frames' method (default optimal-report: Algorithm 1 as published)")
+        ->check(CLI::IsMember({"optimal-report", "optimal", "optimal-refined", "optimal-shear"}));
     timing->add_option("--format", timingFlags.format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
 
@@ -147,9 +152,8 @@ int main(int argc, char** argv) {
             return cases::RunCommand({casePaths, methods, metric, run->count("--metric") > 0,
                                       format, runOut, !noMapTruth, runBackend});
         if (*sweep)
-            return cases::SweepCommand(
-                {sweepCase, sweepLights, sweepLightType, sweepMethods, sweepFormat, sweepOut,
-                 sweepBackend});
+            return cases::SweepCommand({sweepCase, sweepLights, sweepLightType, sweepMethods,
+                                        sweepFormat, sweepOut, sweepBackend});
         if (*timing) return cases::TimingCommand(timingFlags);
         if (*info) return cases::InfoCommand(std::string("lexel ") + LEXEL_VERSION);
         if (*tables) return cases::TablesCommand(tablesOut, casesDir);

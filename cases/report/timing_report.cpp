@@ -106,7 +106,7 @@ std::string TimingText(const spatial::Scene& scene, const TimingRun& run,
         << scene.camera.resolution.height << ", readback " << scene.readback.width << "×"
         << scene.readback.height << ", maps " << scene.shadowMap.width << "×"
         << scene.shadowMap.height << "\nbackend " << run.backend << "\ntimed: " << run.passClock
-        << "\noptimal: Algorithm 1 every " << run.updateEvery
+        << "\noptimal: " << run.optimizer << " every " << run.updateEvery
         << " frame(s), step 1 from a standard map every " << run.standardEvery
         << " update(s), else from the light's previous map\n\n";
     TextTable table(kTextHeader);
@@ -149,6 +149,7 @@ nlohmann::json TimingJson(const spatial::Scene& scene, const TimingRun& run,
             {"shadow_map", {scene.shadowMap.width, scene.shadowMap.height}},
             {"lights", lights},
             {"poses", run.poses},
+            {"optimizer", run.optimizer},
             {"update_every", run.updateEvery},
             {"standard_every", run.standardEvery},
             {"focused", MethodJson(run.focused)},

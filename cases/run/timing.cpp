@@ -44,8 +44,9 @@ std::vector<spatial::Light> TimingLightsOf(const spatial::Scene& scene, int coun
     return lights;
 }
 
-spatial::FrameSchedule ScheduleOf(const TimingOptions& options, int frame) {
-    spatial::FrameSchedule s;
+spatial::FrameOptions ScheduleOf(const TimingOptions& options, int frame) {
+    spatial::FrameOptions s;
+    s.optimal = options.optimal;
     s.optimize = frame % options.updateEvery == 0;
     s.standardMap = s.optimize && (frame / options.updateEvery) % options.standardEvery == 0;
     return s;
@@ -62,6 +63,7 @@ TimingRun RunTiming(const spatial::Scene& scene, const TimingOptions& options) {
     run.poses = scene.cameraPath.empty() ? 1 : static_cast<int>(scene.cameraPath.size());
     run.updateEvery = options.updateEvery;
     run.standardEvery = options.standardEvery;
+    run.optimizer = options.optimal;
     // Frame -1 warms up (shader compilation, caches) and is not reported.
     for (int k = -1; k < options.frames; ++k) {
         const std::size_t pose = static_cast<std::size_t>(std::max(k, 0) % run.poses);
@@ -75,7 +77,7 @@ TimingRun RunTiming(const spatial::Scene& scene, const TimingOptions& options) {
                 pipeline->RenderFrame(scene, camera, run.lights, spatial::FrameMethod::kFocused);
             optimal =
                 pipeline->RenderFrame(scene, camera, run.lights, spatial::FrameMethod::kOptimal,
-                                      k < 0 ? spatial::FrameSchedule{} : ScheduleOf(options, k));
+                                      ScheduleOf(options, std::max(k, 0)));
         } catch (const DomainError& e) {
             throw InputError(SpatialErrorField(e, "/lights", cameraField) + ": " + e.what());
         }

@@ -16,12 +16,13 @@ struct TimingOptions {
     BackendKind backend = BackendKind::kCpu;
     int lights = 4;  // the report's Table 3 has 4
     int frames = 8;  // timed frames per method, after one warm-up frame each
-    // The report's savings (§2.4, FrameSchedule): optimal runs Algorithm 1 on frames k with
+    // The report's savings (§2.4, FrameOptions): optimal runs Algorithm 1 on frames k with
     // k mod updateEvery = 0, and of those every standardEvery-th takes step 1 from a fresh
     // standard map (the others from the light's previous map). 1, 1: everything every frame; the
     // report's: 3, 2.
     int updateEvery = 1;
     int standardEvery = 1;
+    std::string optimal = "optimal-report";  // FrameOptions::optimal
 };
 
 struct TimingRun {
@@ -32,10 +33,11 @@ struct TimingRun {
     std::vector<spatial::FrameTimes> focused, optimal;  // per timed frame
     int poses = 1;  // distinct camera poses walked (camera_path length, or 1)
     int updateEvery = 1, standardEvery = 1;
+    std::string optimizer;  // of the optimal frames (FrameOptions::optimal)
 };
 
-// The schedule of timed frame k ≥ 0 (the warm-up frame runs in full).
-spatial::FrameSchedule ScheduleOf(const TimingOptions& options, int frame);
+// The optimal frames' options for timed frame k ≥ 0 (the warm-up frame runs in full).
+spatial::FrameOptions ScheduleOf(const TimingOptions& options, int frame);
 
 // The mean of each column over the frames.
 spatial::FrameTimes MeanTimes(const std::vector<spatial::FrameTimes>& frames);

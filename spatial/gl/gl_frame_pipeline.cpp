@@ -26,7 +26,7 @@ class GlFramePipeline final : public FramePipeline {
         : geometry_(geometry), bounds_(geometry.ComputeBounds()), renderer_(geometry_) {}
 
     FrameTimes RenderFrame(const Scene& scene, const Camera& camera, std::span<const Light> lights,
-                           FrameMethod method, FrameSchedule schedule) override {
+                           FrameMethod method, FrameOptions options) override {
         const CurrentContext current(renderer_.context());
         renderer_.SetPassTimer(renderer_.context().Info().software ? PassTimer::kFinish
                                                                    : PassTimer::kQueries);
@@ -38,8 +38,8 @@ class GlFramePipeline final : public FramePipeline {
         KeepState(lights, optimal);
         const bool anyUpdate =
             optimal &&
-            (schedule.optimize || std::any_of(matrices_.begin(), matrices_.end(),
-                                              [](const auto& m) { return !m.has_value(); }));
+            (options.optimize || std::any_of(matrices_.begin(), matrices_.end(),
+                                             [](const auto& m) { return !m.has_value(); }));
         if (anyUpdate) renderer_.RenderCamera(CameraSlot::kReadback, camera, scene.readback);
         renderer_.RenderCamera(CameraSlot::kFrame, camera, camera.resolution);
         std::optional<Readback> readback;
@@ -48,7 +48,7 @@ class GlFramePipeline final : public FramePipeline {
         for (std::size_t l = 0; l < lights.size(); ++l) {
             const LightSpace lightSpace(lights[l], bounds_);
             LightMatrix matrix;
-            if (optimal && !schedule.optimize && matrices_[l]) {
+            if (optimal && !options.optimize && matrices_[l]) {
                 matrix = *matrices_[l];  // P kept between updates
             } else {
                 const Stopwatch stage;
@@ -56,9 +56,9 @@ class GlFramePipeline final : public FramePipeline {
                                                                  readback ? &*readback : nullptr));
                 t.hull += stage.Ms();
                 if (optimal) {
-                    const bool previous = !schedule.standardMap && matrices_[l].has_value();
-                    matrix = Optimize(scene, *readback, lightSpace, matrix,
-                                      previous ? FinalMap(l, true) : -1, &t);
+                    const bool previous = !options.standardMap && matrices_[l].has_value();
+                    matrix = Optimize(scene, camera, *readback, lightSpace, matrix,
+                                      previous ? FinalMap(l, true) : -1, options.optimal, &t);
                 }
             }
             renderer_.RenderShadowMap(FinalMap(l, optimal), lightSpace, matrix, scene.shadowMap);
@@ -113,8 +113,9 @@ class GlFramePipeline final : public FramePipeline {
     // Algorithm 1 for one light: step 1 from map slot `previousMap` (the light's last final map)
     // or, when -1, a fresh standard map; readback shading and boundary pixels on the GPU; the
     // samples and the optimization on the CPU.
-    LightMatrix Optimize(const Scene& scene, const Readback& readback, const LightSpace& lightSpace,
-                         const LightMatrix& focused, int previousMap, FrameTimes* t) {
+    LightMatrix Optimize(const Scene& scene, const Camera& camera, const Readback& readback,
+                         const LightSpace& lightSpace, const LightMatrix& focused, int previousMap,
+                         const std::string& method, FrameTimes* t) {
         int map = previousMap;
         if (map < 0) {
             renderer_.RenderShadowMap(kStandardMap, lightSpace, focused, scene.shadowMap);
@@ -123,17 +124,13 @@ class GlFramePipeline final : public FramePipeline {
         renderer_.ShadePass(CameraSlot::kReadback, map, lightSpace);
         renderer_.FindBoundary(CameraSlot::kReadback);
         glFinish();
-        Stopwatch stage;
+        const Stopwatch stage;
         const LightSamples samples =
             LightSamplesAtPixels(readback, lightSpace, renderer_.ReadBoundary());
         t->extraction += stage.Ms();
-        stage.Restart();
-        const OptimizerResult r = OptimizeLightMatrix(
-            samples, InitialLightAxis(lightSpace, bounds_, readback.wsRelevant), scene.shadowMap);
-        const double ms = stage.Ms();
-        t->hull += r.hullMs;
-        t->search += ms - r.hullMs;
-        return r.matrix;
+        return TimedOptimizer(method,
+                              FrameBaselineContext(scene, camera, lightSpace, bounds_, &readback),
+                              samples, t);
     }
 
     TriangleMesh geometry_;

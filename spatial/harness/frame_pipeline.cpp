@@ -1,10 +1,13 @@
 // The frame of frame_pipeline.h over the RenderBackend interface, every stage timed by wall clock.
 #include "lexel/spatial/harness/frame_pipeline.h"
 
+#include <algorithm>
 #include <optional>
+#include <stdexcept>
 
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/baselines.h"
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/optimizer.h"
 
 namespace lexel::spatial {
@@ -21,9 +24,34 @@ BaselineContext FrameBaselineContext(const Scene& scene, const Camera& camera,
     context.camera = camera;
     context.map = scene.shadowMap;
     context.wsBounds = wsBounds;
-    if (readback) context.wsRelevant = readback->wsRelevant;
+    if (readback) {
+        context.wsRelevant = readback->wsRelevant;
+        context.wsRelevantHull = readback->wsRelevantHull;
+    }
     context.floorPlane = scene.floorPlane;
     return context;
+}
+
+bool IsFrameOptimizer(std::string_view method) {
+    return method == "optimal-report" || method == "optimal" || method == "optimal-refined" ||
+           method == "optimal-shear";
+}
+
+LightMatrix TimedOptimizer(const std::string& method, BaselineContext context,
+                           const LightSamples& samples, FrameTimes* t) {
+    if (!IsFrameOptimizer(method))
+        throw std::invalid_argument("frame pipeline: '" + method + "' is not an optimizer");
+    context.samples = &samples;
+    MethodContext methodContext;
+    methodContext.baseline = context;
+    methodContext.samples = &samples;
+    const Stopwatch clock;
+    const MethodMatrix m = ComputeLightMatrix(method, methodContext);
+    const double ms = clock.Ms();
+    const double hullMs = m.optimizer ? m.optimizer->hullMs : 0.0;
+    t->hull += hullMs;
+    t->search += ms - hullMs;
+    return m.matrix;
 }
 
 namespace {
@@ -35,13 +63,13 @@ class BackendFramePipeline final : public FramePipeline {
         : owned_(std::move(owned)), backend_(backend), bounds_(geometry.ComputeBounds()) {}
 
     FrameTimes RenderFrame(const Scene& scene, const Camera& camera, std::span<const Light> lights,
-                           FrameMethod method, FrameSchedule schedule) override {
+                           FrameMethod method, FrameOptions options) override {
         FrameTimes t;
         const Stopwatch frameTime;
         const bool optimal = method == FrameMethod::kOptimal;
         used_.clear();
         KeepState(lights, optimal);
-        const bool anyUpdate = optimal && (schedule.optimize || matrices_.empty() ||
+        const bool anyUpdate = optimal && (options.optimize || matrices_.empty() ||
                                            std::any_of(matrices_.begin(), matrices_.end(),
                                                        [](const auto& m) { return !m; }));
         std::optional<Readback> readback;
@@ -53,7 +81,7 @@ class BackendFramePipeline final : public FramePipeline {
         for (std::size_t l = 0; l < lights.size(); ++l) {
             const LightSpace lightSpace(lights[l], bounds_);
             LightMatrix matrix;
-            if (optimal && !schedule.optimize && matrices_[l]) {
+            if (optimal && !options.optimize && matrices_[l]) {
                 matrix = *matrices_[l];  // P kept between updates
             } else {
                 pass.Restart();
@@ -61,8 +89,9 @@ class BackendFramePipeline final : public FramePipeline {
                                                                  readback ? &*readback : nullptr));
                 t.hull += pass.Ms();
                 if (optimal)
-                    matrix = Optimize(scene, *readback, lightSpace, matrix,
-                                      schedule.standardMap || !maps_[l] ? nullptr : &*maps_[l], &t);
+                    matrix = Optimize(scene, camera, *readback, lightSpace, matrix,
+                                      options.standardMap || !maps_[l] ? nullptr : &*maps_[l],
+                                      options.optimal, &t);
             }
             pass.Restart();
             ShadowMap map = backend_.RenderShadowMap(lightSpace, matrix, scene.shadowMap);
@@ -110,8 +139,9 @@ class BackendFramePipeline final : public FramePipeline {
     }
 
     // Algorithm 1 for one light, step 1 from `previousMap` or (null) a fresh standard map.
-    LightMatrix Optimize(const Scene& scene, const Readback& readback, const LightSpace& lightSpace,
-                         const LightMatrix& focused, const ShadowMap* previousMap,
+    LightMatrix Optimize(const Scene& scene, const Camera& camera, const Readback& readback,
+                         const LightSpace& lightSpace, const LightMatrix& focused,
+                         const ShadowMap* previousMap, const std::string& method,
                          FrameTimes* t) const {
         Stopwatch pass;
         std::optional<ShadowMap> standard;
@@ -123,13 +153,9 @@ class BackendFramePipeline final : public FramePipeline {
         const LightSamples samples =
             backend_.BoundarySamples(readback, lightSpace, previousMap ? *previousMap : *standard);
         t->extraction += pass.Ms();
-        pass.Restart();
-        const OptimizerResult r = OptimizeLightMatrix(
-            samples, InitialLightAxis(lightSpace, bounds_, readback.wsRelevant), scene.shadowMap);
-        const double ms = pass.Ms();
-        t->hull += r.hullMs;
-        t->search += ms - r.hullMs;
-        return r.matrix;
+        return TimedOptimizer(method,
+                              FrameBaselineContext(scene, camera, lightSpace, bounds_, &readback),
+                              samples, t);
     }
 
     std::unique_ptr<RenderBackend> owned_;

@@ -3,10 +3,11 @@
 // "Convex Hull"), split the way §2.3–2.4 runs Algorithm 1:
 //   optimal:  readback camera pass → readback (to the CPU, Appendix A derivatives, 3D hull) →
 //             per light: focused matrix, standard shadow map, readback shading and boundary
-//             samples (step 3), Algorithm 1 (2D hull, rotation search), final shadow map;
+//             samples (step 3), Algorithm 1 (2D hull, rotation search: FrameOptions::optimal, by
+//             default the report's single start), final shadow map;
 //   focused:  per light: focused matrix (frustum ∩ bounds, rectangle), final shadow map;
 //   both:     the final camera pass, and per light the final shading of the frame.
-// FrameSchedule adds the report's two savings (§2.4): P updated only every few frames ("we only
+// FrameOptions adds the report's two savings (§2.4): P updated only every few frames ("we only
 // update P every three frames"), and step 1 from the light's previous final map instead of a
 // fresh standard one ("every couple frames we generate standard shadow maps for step 1 instead
 // of using the previous frame's"). The default runs Algorithm 1 in full every frame.
@@ -15,6 +16,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lexel/spatial/baselines.h"
@@ -27,10 +29,16 @@ enum class FrameMethod { kFocused, kOptimal };
 
 // What an optimal frame does (focused frames ignore it). A light that has no previous matrix or
 // map (the first frame, or other lights than last frame) gets the full Algorithm 1.
-struct FrameSchedule {
-    bool optimize = true;     // run Algorithm 1; false: keep each light's previous matrix
+struct FrameOptions {
+    // The optimizer (methods.h): `optimal-report`, Algorithm 1 from focused's axis as the report
+    // ran it, or `optimal` (from every baseline's start), `optimal-refined`, `optimal-shear`.
+    std::string optimal = "optimal-report";
+    bool optimize = true;     // run it; false: keep each light's previous matrix
     bool standardMap = true;  // step 1 from a standard (focused) map; false: the previous map
 };
+
+// Whether `method` is one a FrameOptions::optimal can name.
+bool IsFrameOptimizer(std::string_view method);
 
 // Milliseconds. GPU passes are GPU time (timer queries) on a GPU pipeline and wall time on the CPU
 // one; CPU stages are wall time. The parts need not add up to `total`.
@@ -56,7 +64,7 @@ class FramePipeline {
     // come from `scene`), shadowing `lights`. Throws DomainError as Evaluator::Evaluate does.
     virtual FrameTimes RenderFrame(const Scene& scene, const Camera& camera,
                                    std::span<const Light> lights, FrameMethod method,
-                                   FrameSchedule schedule = {}) = 0;
+                                   FrameOptions options = {}) = 0;
     // How the passes are timed, in words (for reports).
     virtual std::string PassClock() const = 0;
     // The light matrices the last frame rendered its final maps with, one per light.
@@ -69,6 +77,10 @@ bool SameLight(const Light& a, const Light& b);
 BaselineContext FrameBaselineContext(const Scene& scene, const Camera& camera,
                                      const LightSpace& lightSpace, const Bounds& wsBounds,
                                      const Readback* readback);
+// FrameOptions::optimal's matrix for one light from its samples, timed into t->hull (the 2D
+// hull) and t->search (the rest). Throws std::invalid_argument for a method that is not one.
+LightMatrix TimedOptimizer(const std::string& method, BaselineContext context,
+                           const LightSamples& samples, FrameTimes* t);
 
 // The frame on any RenderBackend (the CPU reference: every pass TBB-parallel, wall times).
 std::unique_ptr<FramePipeline> MakeBackendFramePipeline(const RenderBackend& backend,

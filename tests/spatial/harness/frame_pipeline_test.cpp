@@ -22,7 +22,7 @@ TEST(FramePipeline, CpuFrameUsesTheEvaluationsMatricesAndKeepsThemBetweenUpdates
     const auto cpu = MakeCpuRenderer(scene.geometry);
     const Evaluator evaluator(scene, *cpu);
     EvaluationOptions options;
-    options.methods = {"focused", "optimal"};
+    options.methods = {"focused", "optimal-report"};
     const auto pipeline = MakeCpuFramePipeline(scene.geometry);
 
     const FrameTimes focused =
