@@ -28,8 +28,9 @@ class GlFramePipeline final : public FramePipeline {
     FrameTimes RenderFrame(const Scene& scene, const Camera& camera, std::span<const Light> lights,
                            FrameMethod method, FrameOptions options) override {
         const CurrentContext current(renderer_.context());
-        renderer_.SetPassTimer(renderer_.context().Info().software ? PassTimer::kFinish
-                                                                   : PassTimer::kQueries);
+        renderer_.SetPassTimer(!options.timePasses                   ? PassTimer::kOff
+                               : renderer_.context().Info().software ? PassTimer::kFinish
+                                                                     : PassTimer::kQueries);
         renderer_.TakeTimes();  // drop anything pending
         FrameTimes t;
         const Stopwatch frameTime;

@@ -35,6 +35,10 @@ struct FrameOptions {
     std::string optimal = "optimal-report";
     bool optimize = true;     // run it; false: keep each light's previous matrix
     bool standardMap = true;  // step 1 from a standard (focused) map; false: the previous map
+    // Time the GPU passes one by one. On a software renderer that brackets each pass with
+    // glFinish (PassTimer::kFinish), which serializes the frame; false leaves the GPU passes at
+    // 0 and `total` unperturbed (the frame-ratio benchmark). CPU stages are always timed.
+    bool timePasses = true;
 };
 
 // Whether `method` is one a FrameOptions::optimal can name.
