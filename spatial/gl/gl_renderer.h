@@ -4,13 +4,15 @@
 //     (RGBA32F), depth reversed (D32F, 1 at the near plane, 0 at the far plane: float precision
 //     is relative, not absolute);
 //   - shadow map into a map slot: any light matrix P through ClipFromWorld (clip_matrix.h) with
-//     depth clamping, storing the linear light depth LightSpace::Depth / 2^k (D32F) so that the
-//     stored value times 2^k is the depth the shader computed, exactly;
-//   - shading of a camera slot against a map slot (a compute pass): ShadePoint's decision per
-//     pixel, as Shade codes in an R8UI image;
+//     depth clamping, storing the linear light depth LightSpace::Depth / 2^k (D32F) — along the
+//     texel centre's ray to the triangle's plane, in double — so that the stored value times 2^k
+//     is the depth the shader computed;
+//   - shading of a camera slot against a map slot (a full-screen fragment pass): ShadePoint's
+//     decision per pixel in double, as Shade codes in an R8UI image;
 //   - the boundary pixels of a shaded slot (a compute pass appending into a buffer): only they
 //     come back to the CPU (report §2.4: the readback is the cost to keep small).
-// Each pass can be timed by a GL_TIME_ELAPSED query (Times).
+// Each pass can be timed (PassTimer).
+// The shaders and their precision: shaders.h.
 //
 // Every member function needs the shared context current on the calling thread (CurrentContext);
 // the constructor and destructor take care of it themselves. Throws GlUnavailable when the GPU
