@@ -1,7 +1,7 @@
 // The OpenGL passes against the CPU reference, pass by pass, on the walkthrough (report §3's
 // scene): camera pass (triangle ids, float world points), shadow maps through the focused matrix
 // (coverage, linear depth), shading of the same buffers (ShadePoint's decision), and the GPU's
-// boundary pixels against BoundaryPixels over the same decisions.
+// boundary pixels against BoundaryPixels over the same decisions; the pass timers of each mode.
 #include "lexel/spatial/gl/gl_renderer.h"
 
 #include <gtest/gtest.h>
@@ -210,6 +210,41 @@ TEST_F(GlTest, BoundaryPixelsOnTheGpuAreTheCpuExtractionOfTheSameDecisions) {
         std::cout << "[   INFO   ] readback 180²: " << pixels.size() << " boundary pixels, "
                   << gpu.lsX.size() << " samples; " << d.differ << " of " << d.counted
                   << " decisions differ from the CPU's\n";
+    }
+}
+
+TEST_F(GlTest, PassTimersSumEachKindOfPassAndReset) {
+    // Each timer mode over one camera pass and one shadow pass, no shading or extraction: the two
+    // kinds that ran have time, the others none, and TakeTimes starts the sums again from zero.
+    // GL_TIME_ELAPSED on llvmpipe sees only part of a pass (gl_renderer.h) but not nothing: the
+    // vertex stage of 17k triangles runs inside the query.
+    const Scene& scene = Walkthrough();
+    const auto cpu = MakeCpuRenderer(scene.geometry);
+    const Readback readback = RenderReadback(*cpu, scene.camera, scene.readback);
+    const LightSpace ls(scene.lights[0], scene.geometry.ComputeBounds());
+    const LightMatrix focused = FocusedFor(scene, ls, readback);
+    gl::GlRenderer renderer(scene.geometry);
+    const gl::CurrentContext current(renderer.context());
+    for (const gl::PassTimer timer :
+         {gl::PassTimer::kOff, gl::PassTimer::kQueries, gl::PassTimer::kFinish}) {
+        renderer.SetPassTimer(timer);
+        renderer.RenderCamera(gl::CameraSlot::kFrame, scene.camera, scene.camera.resolution);
+        renderer.RenderShadowMap(0, ls, focused, scene.shadowMap);
+        const gl::GpuTimes t = renderer.TakeTimes();
+        const int mode = static_cast<int>(timer);
+        if (timer == gl::PassTimer::kOff) {
+            EXPECT_EQ(t.cameraPass, 0.0);
+            EXPECT_EQ(t.shadowMap, 0.0);
+        } else {
+            EXPECT_GT(t.cameraPass, 0.0) << "timer " << mode;
+            EXPECT_GT(t.shadowMap, 0.0) << "timer " << mode;
+            EXPECT_LT(t.cameraPass + t.shadowMap, 60e3) << "timer " << mode;  // ms: not ns
+        }
+        EXPECT_EQ(t.shading, 0.0) << "timer " << mode;
+        EXPECT_EQ(t.extraction, 0.0) << "timer " << mode;
+        const gl::GpuTimes again = renderer.TakeTimes();
+        EXPECT_EQ(again.cameraPass + again.shadowMap + again.shading + again.extraction, 0.0)
+            << "timer " << mode;
     }
 }
 
