@@ -3,23 +3,21 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "lexel/solvers/footprint_metrics.h"
 #include "lexel/spatial/energy_gradient.h"
 
 namespace lexel::spatial {
 
-LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightSpace,
-                              std::span<const Shade> shades) {
-    LightSamples s;
-    const CameraBuffer& buf = readback.buffer;
-    const int w = buf.resolution.width, h = buf.resolution.height;
-    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
-    s.lsRelevant.reserve(readback.wsRelevant.size());
-    for (const glm::dvec3& ws : readback.wsRelevant) s.lsRelevant.push_back(lightSpace.ToLight(ws));
-    s.lsRelevantHull.reserve(readback.wsRelevantHull.size());
-    for (const glm::dvec3& ws : readback.wsRelevantHull)
-        s.lsRelevantHull.push_back(lightSpace.ToLight(ws));
+std::vector<std::uint32_t> BoundaryPixels(Resolution resolution, std::span<const Shade> shades) {
+    if (shades.size() != resolution.Count())
+        throw std::invalid_argument("BoundaryPixels: " + std::to_string(shades.size()) +
+                                    " decisions for " + std::to_string(resolution.Count()) +
+                                    " pixels");
+    const int w = resolution.width, h = resolution.height;
+    std::vector<std::uint32_t> pixels;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * w + x;
@@ -33,17 +31,43 @@ LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightS
                     const Shade there = shades[static_cast<std::size_t>(ny) * w + nx];
                     boundary = (there == Shade::kLit || there == Shade::kShadowed) && there != here;
                 }
-            if (!boundary) continue;
-            ++s.boundaryPixels;
-            if (!readback.smooth[i]) continue;
-            s.lsX.push_back(lightSpace.ToLight(buf.wsPosition[i]));
-            s.dXdx1.push_back(lsFromWs * readback.dWdx1[i]);
-            s.dXdx2.push_back(lsFromWs * readback.dWdx2[i]);
-            s.pixel.push_back(static_cast<std::uint32_t>(i));
-            s.wsX.push_back(buf.wsPosition[i]);
+            if (boundary) pixels.push_back(static_cast<std::uint32_t>(i));
         }
     }
+    return pixels;
+}
+
+LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& lightSpace,
+                                  std::span<const std::uint32_t> boundaryPixels) {
+    const CameraBuffer& buf = readback.buffer;
+    for (std::size_t k = 0; k < boundaryPixels.size(); ++k)
+        if (boundaryPixels[k] >= buf.resolution.Count() ||
+            (k > 0 && boundaryPixels[k] <= boundaryPixels[k - 1]))
+            throw std::invalid_argument(
+                "LightSamplesAtPixels: pixels must be ascending and inside the readback");
+    LightSamples s;
+    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+    s.lsRelevant.reserve(readback.wsRelevant.size());
+    for (const glm::dvec3& ws : readback.wsRelevant) s.lsRelevant.push_back(lightSpace.ToLight(ws));
+    s.lsRelevantHull.reserve(readback.wsRelevantHull.size());
+    for (const glm::dvec3& ws : readback.wsRelevantHull)
+        s.lsRelevantHull.push_back(lightSpace.ToLight(ws));
+    s.boundaryPixels = boundaryPixels.size();
+    for (const std::uint32_t i : boundaryPixels) {
+        if (!readback.smooth[i]) continue;
+        s.lsX.push_back(lightSpace.ToLight(buf.wsPosition[i]));
+        s.dXdx1.push_back(lsFromWs * readback.dWdx1[i]);
+        s.dXdx2.push_back(lsFromWs * readback.dWdx2[i]);
+        s.pixel.push_back(i);
+        s.wsX.push_back(buf.wsPosition[i]);
+    }
     return s;
+}
+
+LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightSpace,
+                              std::span<const Shade> shades) {
+    return LightSamplesAtPixels(readback, lightSpace,
+                                BoundaryPixels(readback.buffer.resolution, shades));
 }
 
 void SampleJacobian(const LightMatrix& matrix, const glm::dvec3& lsX, const glm::dvec3& dXdx1,

@@ -40,9 +40,21 @@ struct LightSamples {
 };
 
 // Boundary samples from the readback's shadow decisions `shades` (ShadePixels over
-// readback.buffer with a standard shadow map).
+// readback.buffer with a standard shadow map): LightSamplesAtPixels over BoundaryPixels.
 LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightSpace,
                               std::span<const Shade> shades);
+
+// The boundary pixels of an image of shadow decisions, ascending: a kLit or kShadowed pixel with
+// an 8-neighbour that is kShadowed or kLit the other way. `shades` is row-major with
+// resolution.Count() entries (std::invalid_argument otherwise).
+std::vector<std::uint32_t> BoundaryPixels(Resolution resolution, std::span<const Shade> shades);
+
+// The samples at boundary pixels found elsewhere (a GPU pass): `boundaryPixels` ascending and
+// inside the readback (std::invalid_argument otherwise). Pixels whose derivatives are not reliable
+// (readback.smooth) are dropped and counted in LightSamples::boundaryPixels, as MakeLightSamples
+// does: both give the same samples, bit for bit, from the same pixels.
+LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& lightSpace,
+                                  std::span<const std::uint32_t> boundaryPixels);
 
 // J = ∂u/∂x at one sample (texels per readback pixel), as (row 1, row 2).
 void SampleJacobian(const LightMatrix& matrix, const glm::dvec3& lsX, const glm::dvec3& dXdx1,

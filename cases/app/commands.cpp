@@ -18,11 +18,13 @@
 #include "lexel/cases/report/sweep_report.h"
 #include "lexel/cases/report/tables_report.h"
 #include "lexel/cases/report/text_table.h"
+#include "lexel/cases/report/timing_report.h"
 #include "lexel/cases/run/cascade_study.h"
 #include "lexel/cases/run/lowres.h"
 #include "lexel/cases/run/spatial_run.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/cases/run/thesis_tables.h"
+#include "lexel/cases/run/timing.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/methods.h"
@@ -74,6 +76,23 @@ std::vector<std::string> FlatlandMethods(std::vector<std::string> methods) {
     return MethodsOf(std::move(methods), flatland::FlatlandMethodNames(), "flatland");
 }
 
+// The --backend value (main.cpp checks it is cpu or gl). For gl, says on stderr which renderer
+// runs, and turns "no context" into the one-line error of --backend.
+BackendKind BackendOf(const std::string& name) {
+    const std::optional<BackendKind> kind = ParseBackend(name);
+    if (!kind) throw InputError("--backend: must be cpu or gl, got '" + name + "'");
+    if (*kind == BackendKind::kGl) {
+        std::string description;
+        try {
+            description = DescribeBackend(*kind);
+        } catch (const BackendUnavailable& e) {
+            throw InputError("--backend gl: " + std::string(e.what()));
+        }
+        std::cerr << "lexel: backend " << description << '\n';
+    }
+    return *kind;
+}
+
 // Errors a runner finds after loading get the case file's name in front, like the loader's own.
 template <class Body>
 auto WithCaseName(const fs::path& casePath, Body body) {
@@ -105,6 +124,7 @@ int RunSpatial(const RunFlags& flags) {
     options.methods = SpatialMethods(flags.methods);
     options.mapTruth = flags.mapTruth;
     options.keepBuffers = !flags.outDir.empty();
+    options.backend = BackendOf(flags.backend);
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
     if (flags.format == "json")
         std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
@@ -125,6 +145,9 @@ int RunSpatial(const RunFlags& flags) {
 }
 
 int RunFlatland(const RunFlags& flags) {
+    if (flags.backend != "cpu")
+        throw InputError(
+            "--backend: flatland cases have no renderer; --backend applies to 3D cases");
     const std::optional<Metric> metric = ParseMetric(flags.metric);
     if (!metric)
         throw InputError("--metric: must be one of l1, l2, linf, got '" + flags.metric + "'");
@@ -170,9 +193,10 @@ namespace {
 
 // For `lexel sweep --out`: the frame, errors and per-cascade maps of the partitioned methods for
 // the sweep's first light; the number of images.
-int WriteFirstLightCascades(const fs::path& dir, const spatial::Scene& scene,
-                            const SweepResult& r) {
+int WriteFirstLightCascades(const fs::path& dir, const spatial::Scene& scene, const SweepResult& r,
+                            BackendKind backend) {
     SpatialRunOptions options;
+    options.backend = backend;
     for (const std::string& m : r.methods)
         if (spatial::IsPartitionedMethod(m)) options.methods.push_back(m);
     if (options.methods.empty() || r.lights.empty()) return 0;
@@ -191,6 +215,7 @@ int SweepCommand(const SweepFlags& flags) {
     const fs::path casePath = flags.casePath;
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
+    const BackendKind backend = BackendOf(flags.backend);
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     std::optional<spatial::Light::Type> type;
@@ -200,7 +225,8 @@ int SweepCommand(const SweepFlags& flags) {
     const SweepResult r = WithCaseName(casePath, [&] {
         const std::vector<spatial::Light> lights = SweepLightsOf(scene, flags.lights, type);
         Progress bar("sweep", lights.size(), "lights");
-        return RunSweep(scene, methods, lights, [&] { bar.Step(); });
+        return RunSweep(
+            scene, methods, lights, [&] { bar.Step(); }, backend);
     });
     // With --out, the cascade-count study and the first light's cascades are computed before
     // anything is written.
@@ -208,7 +234,8 @@ int SweepCommand(const SweepFlags& flags) {
     if (!flags.outDir.empty() && !CascadeStudyMethods(r.methods).empty())
         study = WithCaseName(casePath, [&] {
             Progress bar("partitions k = 1, 2, 4, 8", 3 * r.lights.size(), "lights");
-            return RunCascadeCountStudy(scene, r, [&] { bar.Step(); });
+            return RunCascadeCountStudy(
+                scene, r, [&] { bar.Step(); }, backend);
         });
     if (flags.format == "json")
         std::cout << SweepJson(r).dump(2) << '\n';
@@ -231,12 +258,44 @@ int SweepCommand(const SweepFlags& flags) {
         WriteFileAtomically((dir / "cascades.csv").string(), CascadeStudyCsv(*study));
         WriteCascadeStudyPlot((dir / "cascades.png").string(), *study, r);
         const int images =
-            WithCaseName(casePath, [&] { return WriteFirstLightCascades(dir, scene, r); });
+            WithCaseName(casePath, [&] { return WriteFirstLightCascades(dir, scene, r, backend); });
         also = ", cascades.csv, cascades.png and " + std::to_string(images) +
                " images of the first light";
     }
     std::cerr << "lexel: wrote table1.md, table1.csv, sweep.json, lights.csv" << also << " to "
               << flags.outDir << '\n';
+    return 0;
+}
+
+int TimingCommand(const TimingFlags& flags) {
+    const fs::path casePath = flags.casePath;
+    const spatial::Scene scene = LoadSpatialScene(casePath);
+    TimingOptions options;
+    options.backend = BackendOf(flags.backend);
+    options.lights = flags.lights;
+    options.frames = flags.frames;
+    options.updateEvery = flags.updateEvery;
+    options.standardEvery = flags.standardEvery;
+    options.optimal = flags.optimizer;
+    const ReportTiming report =
+        LoadReportTiming(DataDirectory() / "published" / "report_timing.json");
+    const TimingRun run = WithCaseName(casePath, [&] { return RunTiming(scene, options); });
+    if (flags.format == "json")
+        std::cout << TimingJson(scene, run, report).dump(2) << '\n';
+    else if (flags.format == "csv")
+        std::cout << TimingCsv(run);
+    else
+        std::cout << TimingText(scene, run, report);
+    return 0;
+}
+
+int InfoCommand(const std::string& version) {
+    std::cout << version << '\n' << DescribeBackend(BackendKind::kCpu) << '\n';
+    try {
+        std::cout << DescribeBackend(BackendKind::kGl) << '\n';
+    } catch (const BackendUnavailable& e) {
+        std::cout << "gl: unavailable: " << e.what() << '\n';
+    }
     return 0;
 }
 

@@ -24,6 +24,7 @@ struct RunFlags {
     std::string outDir;            // empty: print only
     bool mapTruth = true;          // 3D: also the report's 4000² truth map
     int cascades = 0;              // 3D: partitions of the partitioned methods; 0: the case's
+    std::string backend = "cpu";   // 3D: cpu | gl
 };
 int RunCommand(const RunFlags& flags);
 
@@ -34,9 +35,25 @@ struct SweepFlags {
     std::vector<std::string> methods;  // empty: all
     std::string format = "table";      // table | markdown | csv | json
     std::string outDir;
-    int cascades = 0;  // partitions of the partitioned methods; 0: the case's
+    int cascades = 0;             // partitions of the partitioned methods; 0: the case's
+    std::string backend = "cpu";  // cpu | gl
 };
 int SweepCommand(const SweepFlags& flags);
+
+struct TimingFlags {
+    std::string casePath;
+    std::string backend = "cpu";  // cpu | gl
+    int lights = 4;
+    int frames = 8;
+    int updateEvery = 1;    // optimal: Algorithm 1 every U frames (the report: 3)
+    int standardEvery = 1;  // optimal: step 1 from a standard map every S updates (the report: 2)
+    std::string optimizer = "optimal-report";  // optimal frames: optimal-report | optimal | ...
+    std::string format = "table";              // table | json | csv
+};
+int TimingCommand(const TimingFlags& flags);
+
+// The version and the backends this build and machine offer (the GL renderer, or why none).
+int InfoCommand(const std::string& version);
 
 int TablesCommand(const std::string& outDir, const std::string& casesDir);
 int LowresCommand(const std::string& casePath, const std::string& outDir);

@@ -4,6 +4,11 @@
 //   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--methods NAME...]
 //             [--cascades K] [--format table|markdown|csv|json]
 //             [--out DIR]          the 3D report's Table 1, the fair and equal-texel tables
+//   lexel timing CASE.json [--backend cpu|gl] [--lights N] [--frames F] [--format table|json|csv]
+//             [--update-every U] [--standard-every S] [--optimizer optimal-report|optimal|...]
+//                                                   the 3D report's Tables 2–3
+//   lexel info                                      version and backends (the GL renderer)
+//   (run and sweep take --backend cpu|gl for 3D cases)
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
 //   lexel fit-thesis [--case NAME] [--out DIR] [--seed S] [--samples N] [--starts K] [--explain]
@@ -42,6 +47,9 @@ int main(int argc, char** argv) {
     run->add_option("--cascades", runCascades,
                     "3D: partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
         ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
+    std::string runBackend = "cpu";
+    run->add_option("--backend", runBackend, "3D cases: the renderer (gl: OpenGL 4.5 via EGL)")
+        ->check(CLI::IsMember({"cpu", "gl"}));
     bool noMapTruth = false;
     run->add_flag("--no-map-truth", noMapTruth,
                   "3D cases: skip the report's focused 4000² truth map (rays are the truth)");
@@ -72,6 +80,42 @@ int main(int argc, char** argv) {
         ->add_option("--cascades", sweepCascades,
                      "Partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
         ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
+    std::string sweepBackend = "cpu";
+    sweep->add_option("--backend", sweepBackend, "The renderer (gl: OpenGL 4.5 via EGL)")
+        ->check(CLI::IsMember({"cpu", "gl"}));
+
+    auto* timing = app.add_subcommand(
+        "timing", "3D: time focused and optimal frames pass by pass (report Tables 2-3)");
+    lexel::cases::TimingFlags timingFlags;
+    timing->add_option("case", timingFlags.casePath, "3D case file (JSON)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    timing->add_option("--backend", timingFlags.backend, "The renderer (gl: OpenGL 4.5 via EGL)")
+        ->check(CLI::IsMember({"cpu", "gl"}));
+    timing->add_option("--lights", timingFlags.lights, "Lights per frame (default 4, as Table 3)")
+        ->check(CLI::Range(1, 64));
+    timing
+        ->add_option("--frames", timingFlags.frames,
+                     "Timed frames per method, walking the camera_path (default 8)")
+        ->check(CLI::Range(1, 10000));
+    timing
+        ->add_option("--update-every", timingFlags.updateEvery,
+                     "Optimal: run Algorithm 1 every U frames, keep P between (report: 3)")
+        ->check(CLI::Range(1, 1000));
+    timing
+        ->add_option("--standard-every", timingFlags.standardEvery,
+                     "Optimal: step 1 from a standard map every S updates, else from the "
+                     "previous map (report: 2)")
+        ->check(CLI::Range(1, 1000));
+    timing
+        ->add_option(
+            "--optimizer", timingFlags.optimizer,
+            "The optimal frames' method (default optimal-report: Algorithm 1 as published)")
+        ->check(CLI::IsMember({"optimal-report", "optimal", "optimal-refined", "optimal-shear"}));
+    timing->add_option("--format", timingFlags.format, "Output format")
+        ->check(CLI::IsMember({"table", "json", "csv"}));
+
+    auto* info = app.add_subcommand("info", "The version and the renderers available here");
 
     auto* tables =
         app.add_subcommand("tables", "Reproduce the thesis tables (Chong 2003, ch. 4.1.3)");
@@ -119,10 +163,12 @@ int main(int argc, char** argv) {
     try {
         if (*run)
             return cases::RunCommand({casePaths, methods, metric, run->count("--metric") > 0,
-                                      format, runOut, !noMapTruth, runCascades});
+                                      format, runOut, !noMapTruth, runCascades, runBackend});
         if (*sweep)
             return cases::SweepCommand({sweepCase, sweepLights, sweepLightType, sweepMethods,
-                                        sweepFormat, sweepOut, sweepCascades});
+                                        sweepFormat, sweepOut, sweepCascades, sweepBackend});
+        if (*timing) return cases::TimingCommand(timingFlags);
+        if (*info) return cases::InfoCommand(std::string("lexel ") + LEXEL_VERSION);
         if (*tables) return cases::TablesCommand(tablesOut, casesDir);
         if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);
         if (*fitThesis) return cases::FitThesisCommand(fitFlags);

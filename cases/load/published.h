@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lexel::cases {
@@ -44,5 +45,32 @@ struct ReportTable1 {
 };
 
 ReportTable1 LoadReportTable1(const std::filesystem::path& file);
+
+// Tables 2 and 3 of the report (report_timing.json): frames per second per number of lights and
+// shadow-map side (Table 2), and one frame's time profile for 4 lights (Table 3, milliseconds).
+struct ReportTiming {
+    struct FpsRow {
+        int lights = 0, mapSide = 0;
+        std::vector<double> fps;  // per method, in table2Methods order
+    };
+    struct StageRow {
+        std::string stage;                // total, optimization, convex_hull, render_and_wait
+        std::vector<double> ms, percent;  // per method, in table3Methods order
+    };
+    int table2Screen = 0;  // screen side, pixels
+    std::vector<std::string> table2Methods;
+    std::vector<FpsRow> table2;
+    int table3Lights = 0, table3MapSide = 0;
+    std::vector<std::string> table3Methods;
+    std::vector<StageRow> table3;
+
+    // Table 3's milliseconds of `stage` for `method`, or nullopt.
+    std::optional<double> Table3Ms(const std::string& stage, const std::string& method) const;
+    // Table 2's frame-time ratio optimal/focused (= fps focused / fps optimal) for `lights`
+    // lights at each printed map side, as (side, ratio); empty for other light counts.
+    std::vector<std::pair<int, double>> Table2Ratios(int lights) const;
+};
+
+ReportTiming LoadReportTiming(const std::filesystem::path& file);
 
 }  // namespace lexel::cases

@@ -30,7 +30,8 @@ std::vector<std::string> CascadeStudyMethods(const std::vector<std::string>& met
 }
 
 CascadeCountStudy RunCascadeCountStudy(const spatial::Scene& scene, const SweepResult& sweep,
-                                       const std::function<void()>& onLightDone) {
+                                       const std::function<void()>& onLightDone,
+                                       BackendKind backend) {
     CascadeCountStudy study;
     study.methods = CascadeStudyMethods(sweep.methods);
     study.counts.assign(std::begin(kCounts), std::end(kCounts));
@@ -48,7 +49,7 @@ CascadeCountStudy RunCascadeCountStudy(const spatial::Scene& scene, const SweepR
         if (k != scene.partitions.count) {
             spatial::Scene atK = scene;
             atK.partitions.count = k;
-            extra = RunSweep(atK, study.methods, sweep.lights, onLightDone);
+            extra = RunSweep(atK, study.methods, sweep.lights, onLightDone, backend);
             r = &extra;
         }
         for (std::size_t m = 0; m < study.methods.size(); ++m)

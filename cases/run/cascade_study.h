@@ -23,9 +23,10 @@ struct CascadeCountStudy {
 std::vector<std::string> CascadeStudyMethods(const std::vector<std::string>& methods);
 
 // Reuses `sweep` (run at scene.partitions.count) and sweeps the study's methods at the other
-// counts over the same lights; `onLightDone` after each light of each extra sweep. Throws as
-// RunSweep.
+// counts over the same lights on `backend`; `onLightDone` after each light of each extra sweep.
+// Throws as RunSweep.
 CascadeCountStudy RunCascadeCountStudy(const spatial::Scene& scene, const SweepResult& sweep,
-                                       const std::function<void()>& onLightDone = {});
+                                       const std::function<void()>& onLightDone = {},
+                                       BackendKind backend = BackendKind::kCpu);
 
 }  // namespace lexel::cases

@@ -10,7 +10,7 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
         throw InputError(
             "/lights: the case has no fixed lights; run `lexel sweep` for its light_sweep");
     SpatialRun run;
-    run.backend = spatial::MakeCpuRenderer(scene.geometry);
+    run.backend = MakeRenderBackend(options.backend, scene.geometry);
     run.evaluator = MakeEvaluator(scene, *run.backend);
     spatial::EvaluationOptions evalOptions;
     evalOptions.methods = options.methods;

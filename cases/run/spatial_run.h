@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "lexel/cases/run/backend.h"
 #include "lexel/cases/run/camera_path.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/scene.h"
@@ -17,6 +18,7 @@ struct SpatialRunOptions {
     std::vector<std::string> methods;  // names from SpatialMethodNames
     bool mapTruth = true;              // also the report's focused 4000² truth map
     bool keepBuffers = false;          // keep shades and maps (for images)
+    BackendKind backend = BackendKind::kCpu;
 };
 
 struct SpatialRun {
@@ -27,7 +29,8 @@ struct SpatialRun {
 };
 
 // Everything is computed before anything is reported or written. Throws InputError naming the
-// field (/lights: none; /lights/k, /camera, /geometry) for input the evaluation cannot serve.
+// field (/lights: none; /lights/k, /camera, /geometry) for input the evaluation cannot serve, and
+// BackendUnavailable when the backend cannot be made.
 SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& options);
 
 }  // namespace lexel::cases

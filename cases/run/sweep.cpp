@@ -35,9 +35,10 @@ std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights,
 }
 
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
-                     const std::vector<Light>& lights, const std::function<void()>& onLightDone) {
+                     const std::vector<Light>& lights, const std::function<void()>& onLightDone,
+                     BackendKind backendKind) {
     const Stopwatch timer;
-    const auto backend = spatial::MakeCpuRenderer(scene.geometry);
+    const auto backend = MakeRenderBackend(backendKind, scene.geometry);
     const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
     SweepResult r;
     r.caseName = scene.name;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lexel/cases/run/backend.h"
 #include "lexel/spatial/harness/scene.h"
 
 namespace lexel::cases {
@@ -41,10 +42,12 @@ std::vector<spatial::Light> SweepLightsOf(const spatial::Scene& scene, int light
 
 // Evaluates every light, in parallel over lights, deterministically for the case's seed; calls
 // `onLightDone` (from any thread) after each. Throws InputError naming the camera or the light
-// for input the evaluation cannot serve.
+// for input the evaluation cannot serve, BackendUnavailable when `backend` cannot be made. With
+// the GL backend the lights still run in parallel; their GPU passes take turns on the one context.
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
                      const std::vector<spatial::Light>& lights,
-                     const std::function<void()>& onLightDone = {});
+                     const std::function<void()>& onLightDone = {},
+                     BackendKind backend = BackendKind::kCpu);
 
 // "point (x, y, z)" or "directional (x, y, z)", 4 significant digits.
 std::string LightLabel(const spatial::Light& light);

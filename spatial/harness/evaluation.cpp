@@ -181,8 +181,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     // Step 1 of Algorithm 1: boundary samples from a standard (focused) shadow map.
     const LightMatrix focused = FocusedLightMatrix(context.baseline);
     const ShadowMap standardMap = backend_.RenderShadowMap(lightSpace, focused, scene_.shadowMap);
-    out.samples = MakeLightSamples(readback_, lightSpace,
-                                   backend_.ShadePixels(readback_.buffer, lightSpace, standardMap));
+    out.samples = backend_.BoundarySamples(readback_, lightSpace, standardMap);
     context.samples = &out.samples;
     context.baseline.samples = &out.samples;
 

@@ -7,4 +7,9 @@ Readback RenderReadback(const RenderBackend& backend, const Camera& camera, Reso
                         camera.ScreenFromWorld(resolution));
 }
 
+LightSamples RenderBackend::BoundarySamples(const Readback& readback, const LightSpace& lightSpace,
+                                            const ShadowMap& map) const {
+    return MakeLightSamples(readback, lightSpace, ShadePixels(readback.buffer, lightSpace, map));
+}
+
 }  // namespace lexel::spatial

@@ -53,6 +53,12 @@ class RenderBackend {
                                       Resolution resolution) const = 0;
     virtual std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                            const ShadowMap& map) const = 0;
+    // Algorithm 1 step 3 for one light: the boundary samples of `readback` under `map` (a
+    // standard shadow map). Every backend must give MakeLightSamples over its own ShadePixels of
+    // readback.buffer (the default does exactly that); a GPU backend finds the boundary pixels on
+    // the GPU and reads back only them.
+    virtual LightSamples BoundarySamples(const Readback& readback, const LightSpace& lightSpace,
+                                         const ShadowMap& map) const;
 };
 
 // The readback of one camera pose rendered by `backend` (MakeReadback over its camera pass).

@@ -328,3 +328,26 @@ expect_run(2 "^$" "^lexel: error: --metric: 3D cases are measured by the report'
 # Errors found after loading name the case file and the JSON pointer.
 expect_run(2 "^$" "spatial_path_no_visible.json: /camera_path/1: no geometry is visible"
            run "${DATA}/spatial_path_no_visible.json")
+
+# lexel timing on the CPU backend (the GL backend: cli_gl_test.cmake): per frame and mean rows,
+# the report's Table 3 beside ours, JSON with every column.
+expect_run(0 "focused 0[^\n]*\n(.*\n)?focused mean[^\n]*\n(.*\n)?optimal mean[^\n]*\n\nframe time optimal/focused: [0-9.]+ \\(ours, 2 lights\\); report Table 3: 1.353[^\n]*Table 2 \\(2 lights\\): 1.130 at 500"
+           "^$" timing "${DATA}/spatial_small.json" --lights 2 --frames 2)
+expect_run(0 "^\\{" "^$" timing "${DATA}/spatial_small.json" --lights 5 --frames 3 --update-every 3
+           --format json)
+string(JSON timingLights LENGTH "${lastStdout}" lights)
+string(JSON timingFrames LENGTH "${lastStdout}" optimal frames)
+string(JSON search1 GET "${lastStdout}" optimal frames 1 search)
+string(JSON table3 GET "${lastStdout}" table3 total report_optimal)
+if(NOT timingLights EQUAL 5 OR NOT timingFrames EQUAL 3 OR NOT search1 EQUAL 0 OR NOT table3 EQUAL 56)
+    message(FATAL_ERROR "unexpected timing JSON:\n${lastStdout}")
+endif()
+expect_run(0 "^method,frame,total_ms,camera_pass_ms,readback_ms,extraction_ms,hull_ms,search_ms,shadow_map_ms,shading_ms\nfocused,0,[^\n]*\nfocused,mean,[^\n]*\noptimal,0,[^\n]*\noptimal,mean,"
+           "^$" timing "${DATA}/spatial_small.json" --lights 1 --frames 1 --format csv)
+expect_run(2 "^$" "^lexel: error: [^\n]*spatial_no_sweep.json: /lights: --lights 2 needs 2 lights; the case has 1 and no light_sweep\n$"
+           timing "${DATA}/spatial_no_sweep.json" --lights 2)
+# --backend: cpu or gl, 3D cases only.
+expect_run(2 "" "--backend: vulkan not in \\{cpu,gl\\}" run "${DATA}/spatial_small.json" --backend vulkan)
+expect_run(2 "^$" "^lexel: error: --backend: flatland cases have no renderer; --backend applies to 3D cases\n$"
+           run "${good}" --backend gl)
+expect_run(0 "^lexel [0-9.]+\ncpu \\([0-9]+ threads\\)\ngl: " "^$" info)

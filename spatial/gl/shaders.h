@@ -1,0 +1,174 @@
+// The GLSL 4.50 programs of the OpenGL backend: the camera pass, the shadow-map pass, the shading
+// pass (ShadePoint's decision, render_backend.h) and the boundary-pixel extraction of report
+// Algorithm 1 step 3 (samples.h). Uniform locations and bindings are fixed here and used by
+// gl_renderer.cpp.
+#pragma once
+
+#include <string_view>
+
+namespace lexel::spatial::gl::shaders {
+
+// Both geometry passes: world positions through a 4×4 clip-from-world matrix.
+inline constexpr std::string_view kGeometryVertex = R"(#version 450 core
+layout(location = 0) in vec3 wsVertex;
+layout(location = 0) uniform mat4 clipFromWorld;
+out vec3 wsPoint;
+void main() {
+    wsPoint = wsVertex;
+    gl_Position = clipFromWorld * vec4(wsVertex, 1.0);
+}
+)";
+
+// The camera pass: per pixel the triangle (gl_PrimitiveID of the one draw call = the mesh's
+// triangle index), the world point and the face normal turned towards the eye (as CpuRenderer).
+inline constexpr std::string_view kCameraFragment = R"(#version 450 core
+layout(location = 1) uniform vec3 wsEye;
+layout(std430, binding = 0) readonly buffer FaceNormals { vec4 wsFaceNormal[]; };
+in vec3 wsPoint;
+layout(location = 0) out int triangle;
+layout(location = 1) out vec4 position;
+layout(location = 2) out vec4 normal;
+void main() {
+    vec3 n = wsFaceNormal[gl_PrimitiveID].xyz;
+    if (dot(n, wsEye - wsPoint) < 0.0) n = -n;
+    triangle = gl_PrimitiveID;
+    position = vec4(wsPoint, 1.0);
+    normal = vec4(n, 0.0);
+}
+)";
+
+// The light and its matrix in double (GLSL 4.00 fp64, core since OpenGL 4.0), shared by the
+// shadow and shading passes: X = lsFromWorld p + lsOffset, u = (mapFromLs X).xy / (mapFromLs X).z,
+// and the light ray through the texel centre c: from wsLight (point) or from
+// wsLight + (lsThird / X.z) worldFromLs X (directional), along normalize(worldFromLs X) (point)
+// or wsLightDirection (directional), X = lsFromMap (c, 1). In float the ray's direction carries
+// ~1e-7 relative error, which a grazing receiver turns into more than the 1e-5 bias.
+#define LEXEL_LIGHT_UNIFORMS                                                                   \
+    "layout(location = 10) uniform int pointLight;\n"                                          \
+    "layout(location = 11) uniform dmat3 lsFromWorld;\n"                                       \
+    "layout(location = 12) uniform dvec3 lsOffset;\n"                                          \
+    "layout(location = 13) uniform dmat3 mapFromLs;\n"                                         \
+    "layout(location = 14) uniform dmat3 lsFromMap;\n"                                         \
+    "layout(location = 15) uniform dmat3 worldFromLs;\n"                                       \
+    "layout(location = 16) uniform dvec3 wsLight;\n"                                           \
+    "layout(location = 17) uniform dvec3 wsLightDirection;\n"                                  \
+    "layout(location = 18) uniform double lsThird;\n"                                          \
+    "layout(location = 19) uniform double depthOffset;\n"                                      \
+    "void LightRay(dvec2 texelCentre, out dvec3 origin, out dvec3 direction) {\n"              \
+    "    dvec3 X = lsFromMap * dvec3(texelCentre, 1.0);\n"                                     \
+    "    if (pointLight != 0) {\n"                                                             \
+    "        origin = wsLight;\n"                                                              \
+    "        direction = normalize(worldFromLs * X);\n"                                        \
+    "    } else {\n"                                                                           \
+    "        origin = wsLight + (lsThird / X.z) * (worldFromLs * X);\n"                        \
+    "        direction = wsLightDirection;\n"                                                  \
+    "    }\n"                                                                                  \
+    "}\n"                                                                                      \
+    "// The depth of the plane (n, through p) along the ray, or `otherwise` when none.\n"      \
+    "double PlaneDepth(dvec3 n, dvec3 p, dvec3 origin, dvec3 direction, double otherwise) {\n" \
+    "    double facing = dot(n, direction);\n"                                                 \
+    "    if (facing == 0.0) return otherwise;\n"                                               \
+    "    double t = dot(n, p - origin) / facing;\n"                                            \
+    "    return t > 0.0 && !isinf(t) ? t : otherwise;\n"                                       \
+    "}\n"
+
+// The shadow-map pass: linear light depth (LightSpace::Depth) at the texel centre — the distance
+// along the light ray through the texel centre to the fragment's triangle plane (n·x = d, from
+// the mesh in double), as the CPU renderer computes it at the exact point — divided by a power of
+// two, so that the stored float times that power is the depth the shader computed. Interpolating
+// the world point in float instead loses the 1e-5 bias on strongly warped maps (measured:
+// plane-optimal for a sweep light with p4 · e3 = 0.045: 1,496 texels off by more than 1e-5 and
+// 162,000 pixels decided otherwise), and a float plane through the interpolated point loses it
+// at grazing angles (the off-plane rounding divided by n · direction).
+inline constexpr std::string_view kShadowFragment =
+    "#version 450 core\n"
+    "layout(std430, binding = 2) readonly buffer FacePlanes { dvec4 wsFacePlane[]; };\n"
+    "layout(location = 4) uniform double invDepthScale;\n"
+    "in vec3 wsPoint;\n" LEXEL_LIGHT_UNIFORMS R"(
+void main() {
+    dvec3 origin, direction;
+    LightRay(dvec2(gl_FragCoord.xy), origin, direction);
+    dvec4 plane = wsFacePlane[gl_PrimitiveID];
+    double depth = dot(dvec3(wsPoint) - origin, direction);  // a degenerate triangle's
+    double facing = dot(plane.xyz, direction);
+    if (facing != 0.0) {
+        double t = (plane.w - dot(plane.xyz, origin)) / facing;
+        if (t > 0.0 && !isinf(t)) depth = t;
+    }
+    gl_FragDepth = float(depth * invDepthScale);
+}
+)";
+
+// ShadePoint per pixel of a camera buffer (render_backend.h): attached shadow, receiver-plane
+// depth along the ray through the texel centre, relative bias 1e-5. Codes are those of Shade. A
+// full-screen triangle: one fragment per pixel of the shade image.
+inline constexpr std::string_view kFullScreenVertex = R"(#version 450 core
+void main() {
+    vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);  // (0,0), (2,0), (0,2)
+    gl_Position = vec4(2.0 * corner - 1.0, 0.0, 1.0);
+}
+)";
+
+inline constexpr std::string_view kShadeFragment =
+    "#version 450 core\n"
+    "layout(binding = 0) uniform sampler2D shadowDepth;\n"
+    "layout(binding = 1) uniform isampler2D triangleImage;\n"
+    "layout(binding = 2) uniform sampler2D positionImage;\n"
+    "layout(binding = 3) uniform sampler2D normalImage;\n"
+    "layout(location = 0) uniform double depthScale;\n"
+    "layout(location = 1) uniform ivec2 mapSize;\n"
+    "layout(location = 0) out uint shade;\n" LEXEL_LIGHT_UNIFORMS R"(
+const uint kEmpty = 0u, kLit = 1u, kShadowed = 2u, kFacingAway = 3u;
+const double kRelativeBias = 1e-5;
+
+uint ShadeOf(ivec2 pixel) {
+    if (texelFetch(triangleImage, pixel, 0).x < 0) return kEmpty;
+    dvec3 p = dvec3(texelFetch(positionImage, pixel, 0).xyz);
+    dvec3 n = dvec3(texelFetch(normalImage, pixel, 0).xyz);
+    dvec3 toLight = pointLight != 0 ? normalize(wsLight - p) : -wsLightDirection;
+    if (!(dot(n, toLight) > 0.0)) return kFacingAway;
+    dvec3 X = lsFromWorld * p + lsOffset;
+    dvec3 h = mapFromLs * X;
+    if (!(h.z > 1e-9 * length(X))) return kLit;
+    dvec2 u = h.xy / h.z;
+    if (!(u.x >= 0.0 && u.y >= 0.0 && u.x < double(mapSize.x) && u.y < double(mapSize.y)))
+        return kLit;
+    ivec2 texel = ivec2(u);
+    float stored = texelFetch(shadowDepth, texel, 0).x;
+    if (stored >= 1.0) return kLit;  // cleared: nothing drawn there
+    dvec3 origin, direction;
+    LightRay(dvec2(texel) + 0.5, origin, direction);
+    double receiver = PlaneDepth(n, p, origin, direction,
+                                 pointLight != 0 ? length(p - wsLight)
+                                                 : dot(wsLightDirection, p) + depthOffset);
+    return double(stored) * depthScale < receiver * (1.0 - kRelativeBias) ? kShadowed : kLit;
+}
+
+void main() { shade = ShadeOf(ivec2(gl_FragCoord.xy)); }
+)";
+
+// Report Algorithm 1 step 3: the boundary pixels (a lit or shadowed receiver with an 8-neighbour
+// lit or shadowed the other way, as BoundaryPixels in samples.h), appended in any order.
+inline constexpr std::string_view kBoundaryCompute = R"(#version 450 core
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 3, r8ui) readonly uniform uimage2D shadeImage;
+layout(std430, binding = 1) buffer Boundary { uint count; uint pixel[]; };
+void main() {
+    ivec2 size = imageSize(shadeImage);
+    ivec2 q = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(q, size))) return;
+    uint here = imageLoad(shadeImage, q).x;
+    if (here != 1u && here != 2u) return;
+    bool boundary = false;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 r = q + ivec2(dx, dy);
+            if (any(lessThan(r, ivec2(0))) || any(greaterThanEqual(r, size))) continue;
+            uint there = imageLoad(shadeImage, r).x;
+            boundary = boundary || ((there == 1u || there == 2u) && there != here);
+        }
+    if (boundary) pixel[atomicAdd(count, 1u)] = uint(q.y * size.x + q.x);
+}
+)";
+
+}  // namespace lexel::spatial::gl::shaders

@@ -1,0 +1,88 @@
+# The `lexel` command with --backend gl: the same outputs as the CPU backend on the small 3D case,
+# the timing command, and the one-line error when no context can be made. Invoked by ctest with
+# -DLEXEL=... -DDATA=... -DWORK=...; prints "SKIPPED" (CTest: skipped) when this machine has no
+# OpenGL 4.5 context, unless LEXEL_REQUIRE_GL=1 (CI), which makes that a failure.
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+set(small "${DATA}/spatial_small.json")
+
+function(expect_run expectedCode stdoutRegex stderrRegex)
+    execute_process(COMMAND "${LEXEL}" ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT code EQUAL expectedCode)
+        message(FATAL_ERROR "lexel ${ARGN}: exit ${code}, expected ${expectedCode}\nstdout: ${out}\nstderr: ${err}")
+    endif()
+    if(NOT out MATCHES "${stdoutRegex}")
+        message(FATAL_ERROR "lexel ${ARGN}: stdout does not match '${stdoutRegex}':\n${out}")
+    endif()
+    if(NOT err MATCHES "${stderrRegex}")
+        message(FATAL_ERROR "lexel ${ARGN}: stderr does not match '${stderrRegex}':\n${err}")
+    endif()
+    set(lastStdout "${out}" PARENT_SCOPE)
+endfunction()
+
+expect_run(0 "^lexel [0-9.]+\ncpu \\([0-9]+ threads\\)\ngl: " "^$" info)
+if(lastStdout MATCHES "\ngl: unavailable: ([^\n]*)")
+    if("$ENV{LEXEL_REQUIRE_GL}" STREQUAL "1")
+        message(FATAL_ERROR "LEXEL_REQUIRE_GL=1 but ${CMAKE_MATCH_1}")
+    endif()
+    message("SKIPPED: ${CMAKE_MATCH_1}")
+    return()
+endif()
+string(REGEX MATCH "\ngl: ([^\n]*)" renderer "${lastStdout}")
+
+# run: the same counted pixels and almost the same misclassified ones as the CPU backend.
+expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^lexel: backend gl: [^\n]+\n$"
+           run "${small}" --backend gl --format json --method focused --method optimal)
+set(glJson "${lastStdout}")
+expect_run(0 "^\\{" "^$" run "${small}" --format json --method focused --method optimal)
+set(cpuJson "${lastStdout}")
+foreach(m 0 1)
+    string(JSON counted GET "${cpuJson}" lights 0 receiver_pixels)
+    string(JSON glCounted GET "${glJson}" lights 0 receiver_pixels)
+    string(JSON cpuWrong GET "${cpuJson}" lights 0 methods ${m} misclassified)
+    string(JSON glWrong GET "${glJson}" lights 0 methods ${m} misclassified)
+    math(EXPR diff "${glWrong} - ${cpuWrong}")
+    math(EXPR bound "${counted} / 2000")
+    if(bound LESS 5)
+        set(bound 5)
+    endif()
+    if(diff LESS -${bound} OR diff GREATER ${bound} OR NOT counted EQUAL glCounted)
+        message(FATAL_ERROR "run --backend gl: method ${m} misclassifies ${glWrong} of ${glCounted}, "
+                            "the CPU ${cpuWrong} of ${counted} (bound ${bound})")
+    endif()
+endforeach()
+
+# --out: the same images as the CPU backend (same files; their pixels differ only where the
+# decisions do, gl_tests).
+expect_run(0 "^light 0" "wrote [1-9][0-9]* images" run "${small}" --backend gl --out "${WORK}/out_gl")
+expect_run(0 "^light 0" "wrote [1-9][0-9]* images" run "${small}" --out "${WORK}/out_cpu")
+file(GLOB glFiles RELATIVE "${WORK}/out_gl" "${WORK}/out_gl/*")
+file(GLOB cpuFiles RELATIVE "${WORK}/out_cpu" "${WORK}/out_cpu/*")
+list(LENGTH glFiles nGl)
+if(NOT glFiles STREQUAL cpuFiles OR nGl LESS 3)
+    message(FATAL_ERROR "run --out: the GL backend wrote ${glFiles}, the CPU backend ${cpuFiles}")
+endif()
+
+# sweep and timing.
+expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^lexel: backend gl" sweep "${small}" --backend gl
+           --lights 3 --methods optimal --methods focused --format json)
+expect_run(0 "^\\{" "^lexel: backend gl" timing "${small}" --backend gl --lights 2 --frames 2 --format json)
+string(JSON backend GET "${lastStdout}" backend)
+string(JSON frames LENGTH "${lastStdout}" optimal frames)
+string(JSON ratio GET "${lastStdout}" ratio ours)
+if(NOT backend MATCHES "^gl: " OR NOT frames EQUAL 2 OR NOT ratio GREATER 0)
+    message(FATAL_ERROR "unexpected timing JSON:\n${lastStdout}")
+endif()
+
+# No usable context: one line naming --backend, exit 2, nothing on stdout. A software renderer
+# refused by LEXEL_GL_REQUIRE_HARDWARE=1 is "no context" on a machine without a GPU.
+if(renderer MATCHES "llvmpipe|softpipe")
+    set(ENV{LEXEL_GL_REQUIRE_HARDWARE} 1)
+    expect_run(2 "^$" "^lexel: error: --backend gl: no OpenGL 4.5 context: [^\n]*refused[^\n]*\n$"
+               run "${small}" --backend gl)
+    unset(ENV{LEXEL_GL_REQUIRE_HARDWARE})
+endif()
+set(ENV{__EGL_VENDOR_LIBRARY_FILENAMES} "${WORK}/no_such_vendor.json")
+expect_run(2 "^$" "^lexel: error: --backend gl: no OpenGL 4.5 context: [^\n]*\n$"
+           timing "${small}" --backend gl)
+expect_run(0 "\ngl: unavailable: " "" info)
