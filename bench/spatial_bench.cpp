@@ -42,6 +42,7 @@
 #include <memory>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "lexel/cases/load/spatial_case.h"
@@ -466,6 +467,42 @@ void BM_WalkthroughMultiStart(benchmark::State& state) {
     state.counters["ratio_optimal_to_focused_tight"] = optimalMs / tightMs;
 }
 BENCHMARK(BM_WalkthroughMultiStart)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The partitioned methods (issue 14): per light, the cascades of one scheme at the default k = 4
+// against `optimal` (every start, Algorithm 1 from each) in the same run on one core; ratio =
+// scheme / optimal. Argument: the index into PartitionedMethodNames().
+void BM_WalkthroughPartitioned(benchmark::State& state) {
+    tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
+    const Walkthrough& w = Case();
+    const std::string name = PartitionedMethodNames().at(static_cast<std::size_t>(state.range(0)));
+    state.SetLabel(name);
+    double optimalMs = 0.0, partitionedMs = 0.0;
+    for (auto _ : state) {
+        for (const PerLight& l : w.lights) {
+            MethodContext context;
+            context.baseline = w.Context(l.lightSpace);
+            context.baseline.samples = &l.samples;
+            context.samples = &l.samples;
+            context.partitions = w.scene.partitions;
+            auto start = std::chrono::steady_clock::now();
+            MethodMatrix optimal = ComputeLightMatrix("optimal", context);
+            benchmark::DoNotOptimize(optimal);
+            optimalMs += MsSince(start);
+            start = std::chrono::steady_clock::now();
+            MethodMatrix partitioned = ComputeLightMatrix(name, context);
+            benchmark::DoNotOptimize(partitioned);
+            partitionedMs += MsSince(start);
+        }
+    }
+    const double calls = static_cast<double>(state.iterations()) * w.lights.size();
+    state.counters["optimal_ms_per_light"] = optimalMs / calls;
+    state.counters["ms_per_light"] = partitionedMs / calls;
+    state.counters["ratio_to_optimal"] = partitionedMs / optimalMs;
+}
+BENCHMARK(BM_WalkthroughPartitioned)
+    ->DenseRange(0, 6)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // All four methods light by light in one run (ratios under the same conditions), plus the
 // Table 3-like split on one core.
