@@ -102,7 +102,7 @@ foreach(k RANGE ${last})
     endif()
     expect_count("${wrong}" "lights/0/methods/${k}/misclassified")
 endforeach()
-expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1\n0,normal,[^\n]*,1\n$"
+expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps,max_perspective_aliasing,storage_factor\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+\n0,normal,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+\n$"
            "^$" run "${small}" --format csv --method optimal --method normal --no-map-truth)
 
 # --out writes the report and three images per light and method (a partitioned method: a map
@@ -172,7 +172,7 @@ if(NOT ranked STREQUAL "optimal-report")
 endif()
 expect_run(0 "^## Table 1 as published [^\n]*spatial_small, 3 point lights[^\n]*\n\n\\| lights \\| optimal-report \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\|\n.*\n\\| worst 10% by psm \\|.*## The fair comparison [^\n]*\n\n\\| method \\|"
            "^$" sweep "${small}" --lights 3 --format markdown)
-expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,mean_uncovered_pixels,empty_partitions\nreport,all,optimal-report,[0-9.]+,0\\.0000,.*\nfair,all,optimal,[0-9.]+,0\\.0000,"
+expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor\nreport,all,optimal-report,[0-9.]+,0\\.0000,.*\nfair,all,optimal,[0-9.]+,0\\.0000,"
            "^$" sweep "${small}" --lights 3 --format csv)
 expect_run(0 "^Table 1 as published .*\nThe fair comparison .*\nsweep: [0-9.]+ s for 3 lights\n$" "^$"
            sweep "${small}" --lights 3)
