@@ -5,8 +5,10 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <filesystem>
 #include <random>
 
+#include "lexel/cases/load/spatial_case.h"
 #include "lexel/spatial/harness/evaluation.h"
 
 namespace lexel::spatial {
@@ -111,6 +113,39 @@ TEST(EffectiveStorageFactor, IsTexelsTimesAliasingSquaredOverPixels) {
     // S̄ = 1200² / 750² = 2.56.
     EXPECT_DOUBLE_EQ(EffectiveStorageFactor(400 * 400, 3.0, 750 * 750), 2.56);
     EXPECT_EQ(EffectiveStorageFactor(400 * 400, 3.0, 0), 0.0);
+}
+
+TEST(Evaluation, StorageFactorIsTheWorstPerspectiveAliasingOfTheShadedPixels) {
+    // The CLI's small case: its focused map covers every counted pixel, so the evaluation's
+    // maximum is the maximum of PerspectiveAliasing over the lit and shadowed pixels.
+    const Scene scene = cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) / ".." /
+                                                "tests/cases/data/spatial_small.json");
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Evaluator evaluator(scene, *backend);
+    EvaluationOptions options;
+    options.methods = {"focused", "pssm"};
+    options.keepBuffers = true;
+    const LightOutcome o = evaluator.Evaluate(scene.lights.front(), options);
+    const LightSpace lightSpace(o.light, evaluator.bounds());
+    const std::int64_t framePixels =
+        static_cast<std::int64_t>(scene.camera.resolution.width) * scene.camera.resolution.height;
+    const MethodOutcome& focused = o.methods[0];
+    ASSERT_EQ(focused.uncovered, 0);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < focused.shades.size(); ++i)
+        if (focused.shades[i] == Shade::kLit || focused.shades[i] == Shade::kShadowed)
+            worst =
+                std::max(worst, PerspectiveAliasing(scene.camera, lightSpace, focused.map.matrix,
+                                                    evaluator.frame().wsPosition[i]));
+    EXPECT_EQ(focused.perspectiveMax, worst);
+    for (const MethodOutcome& m : o.methods) {
+        EXPECT_EQ(m.texels, scene.shadowMap.width * scene.shadowMap.height) << m.method;
+        EXPECT_GT(m.perspectiveMax, 0.0) << m.method;
+        EXPECT_LE(m.perspectiveP99, m.perspectiveMax) << m.method;
+        EXPECT_DOUBLE_EQ(m.storageFactor, static_cast<double>(m.texels) * m.perspectiveMax *
+                                              m.perspectiveMax / static_cast<double>(framePixels))
+            << m.method;
+    }
 }
 
 }  // namespace
