@@ -1,6 +1,7 @@
 #include "lexel/cases/app/commands.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -15,6 +16,7 @@
 #include "lexel/cases/report/lowres_report.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/report/spatial_report.h"
+#include "lexel/cases/report/storage_report.h"
 #include "lexel/cases/report/sweep_report.h"
 #include "lexel/cases/report/tables_report.h"
 #include "lexel/cases/report/text_table.h"
@@ -22,6 +24,7 @@
 #include "lexel/cases/run/cascade_study.h"
 #include "lexel/cases/run/lowres.h"
 #include "lexel/cases/run/spatial_run.h"
+#include "lexel/cases/run/storage.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/cases/run/thesis_tables.h"
 #include "lexel/cases/run/timing.h"
@@ -286,6 +289,69 @@ int TimingCommand(const TimingFlags& flags) {
         std::cout << TimingCsv(run);
     else
         std::cout << TimingText(scene, run, report);
+    return 0;
+}
+
+namespace {
+
+// The frustum flags, each checked against ViewFrustum's domain with the flag's name.
+spatial::ViewFrustum StorageFrustum(const StorageFlags& flags) {
+    const auto number = [](double v) { return Significant(v, 6); };
+    if (!(flags.fovYDeg > 0.0 && flags.fovYDeg < 180.0))
+        throw InputError("--fov-y: must be in (0, 180) degrees, got " + number(flags.fovYDeg));
+    if (!(flags.aspect > 0.0 && std::isfinite(flags.aspect)))
+        throw InputError("--aspect: must be finite and > 0, got " + number(flags.aspect));
+    if (!(flags.nearPlane > 0.0 && std::isfinite(flags.nearPlane)))
+        throw InputError("--near: must be finite and > 0, got " + number(flags.nearPlane));
+    if (!(flags.farPlane > flags.nearPlane && std::isfinite(flags.farPlane)))
+        throw InputError("--far: must be finite and > --near (" + number(flags.nearPlane) +
+                         "), got " + number(flags.farPlane));
+    return {flags.fovYDeg, flags.aspect, flags.nearPlane, flags.farPlane};
+}
+
+int CaseStorageCommand(const StorageFlags& flags) {
+    const fs::path casePath = flags.casePath;
+    const spatial::Scene scene = LoadSpatialScene(casePath);
+    const std::vector<std::string> methods = SpatialMethods(flags.methods);
+    const CaseStorage result =
+        WithCaseName(casePath, [&] { return RunCaseStorage(scene, methods); });
+    if (flags.format == "json")
+        std::cout << CaseStorageJson(result).dump(2) << '\n';
+    else if (flags.format == "csv")
+        std::cout << CaseStorageCsv(result);
+    else
+        std::cout << CaseStorageText(result);
+    if (flags.outDir.empty()) return 0;
+    const fs::path dir(flags.outDir);
+    fs::create_directories(dir);
+    const std::string stem = "storage_" + scene.name;
+    WriteFileAtomically((dir / (stem + ".json")).string(), CaseStorageJson(result).dump(2) + "\n");
+    WriteFileAtomically((dir / (stem + ".csv")).string(), CaseStorageCsv(result));
+    std::cerr << "lexel: wrote " << stem << ".json/.csv to " << flags.outDir << '\n';
+    return 0;
+}
+
+}  // namespace
+
+int StorageCommand(const StorageFlags& flags) {
+    if (!flags.casePath.empty()) return CaseStorageCommand(flags);
+    if (!flags.methods.empty())
+        throw InputError("--method: applies with --case (the measured storage factor)");
+    const StorageStudy study = RunStorageStudy(StorageFrustum(flags));
+    if (flags.format == "json")
+        std::cout << StorageJson(study).dump(2) << '\n';
+    else if (flags.format == "csv")
+        std::cout << StorageCsv(study);
+    else
+        std::cout << StorageText(study);
+    if (flags.outDir.empty()) return 0;
+    const fs::path dir(flags.outDir);
+    fs::create_directories(dir);
+    WriteFileAtomically((dir / "storage.json").string(), StorageJson(study).dump(2) + "\n");
+    WriteFileAtomically((dir / "storage.csv").string(), StorageCsv(study));
+    const std::vector<std::string> figures = WriteStorageFigures(dir, study);
+    std::cerr << "lexel: wrote storage.json, storage.csv and " << figures.size() << " figures to "
+              << flags.outDir << '\n';
     return 0;
 }
 

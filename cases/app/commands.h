@@ -52,6 +52,20 @@ struct TimingFlags {
 };
 int TimingCommand(const TimingFlags& flags);
 
+// Lloyd et al. 2006's storage factor for one view frustum (the frustum flags), or with a case
+// file every method's measured storage factor beside the analytic one for the case's camera.
+struct StorageFlags {
+    double fovYDeg = 60.0;
+    double aspect = 1.0;
+    double nearPlane = 1.0;
+    double farPlane = 1000.0;
+    std::string casePath;              // --case: measured beside analytic instead of the figures
+    std::vector<std::string> methods;  // with --case; empty: all
+    std::string format = "table";      // table | json | csv
+    std::string outDir;                // empty: print only
+};
+int StorageCommand(const StorageFlags& flags);
+
 // The version and the backends this build and machine offer (the GL renderer, or why none).
 int InfoCommand(const std::string& version);
 

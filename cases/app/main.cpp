@@ -7,6 +7,10 @@
 //   lexel timing CASE.json [--backend cpu|gl] [--lights N] [--frames F] [--format table|json|csv]
 //             [--update-every U] [--standard-every S] [--optimizer optimal-report|optimal|...]
 //                                                   the 3D report's Tables 2–3
+//   lexel storage [--fov-y DEG] [--aspect A] [--near N] [--far F] [--format table|json|csv]
+//             [--out DIR]                 Lloyd 2006's storage factor (Figs. 5–7, 10, 12, 13)
+//   lexel storage --case CASE.json [--method NAME...] [--format ...] [--out DIR]
+//                                   every method's measured storage factor beside the analytic
 //   lexel info                                      version and backends (the GL renderer)
 //   (run and sweep take --backend cpu|gl for 3D cases)
 //   lexel tables [--out DIR] [--cases DIR]
@@ -115,6 +119,30 @@ int main(int argc, char** argv) {
     timing->add_option("--format", timingFlags.format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
 
+    auto* storage = app.add_subcommand(
+        "storage",
+        "Lloyd et al. 2006's storage factor: the data and figures of Figs. 5-7, 10, 12, 13");
+    lexel::cases::StorageFlags storageFlags;
+    storage->add_option("--fov-y", storageFlags.fovYDeg, "Vertical field of view in degrees")
+        ->capture_default_str();
+    storage->add_option("--aspect", storageFlags.aspect, "Image width / height")
+        ->capture_default_str();
+    storage->add_option("--near", storageFlags.nearPlane, "Near plane n")->capture_default_str();
+    storage->add_option("--far", storageFlags.farPlane, "Far plane f")->capture_default_str();
+    auto* storageCase =
+        storage
+            ->add_option("--case", storageFlags.casePath,
+                         "3D case: every method's measured storage factor beside the analytic "
+                         "one for the case's camera (instead of the figures)")
+            ->check(CLI::ExistingFile);
+    for (const char* flag : {"--fov-y", "--aspect", "--near", "--far"})
+        storageCase->excludes(storage->get_option(flag));
+    storage->add_option("--method", storageFlags.methods, "With --case: methods (default: all)");
+    storage->add_option("--format", storageFlags.format, "Output format")
+        ->check(CLI::IsMember({"table", "json", "csv"}));
+    storage->add_option("--out", storageFlags.outDir,
+                        "Also write storage.json, storage.csv and the figures (PNG) here");
+
     auto* info = app.add_subcommand("info", "The version and the renderers available here");
 
     auto* tables =
@@ -168,6 +196,7 @@ int main(int argc, char** argv) {
             return cases::SweepCommand({sweepCase, sweepLights, sweepLightType, sweepMethods,
                                         sweepFormat, sweepOut, sweepCascades, sweepBackend});
         if (*timing) return cases::TimingCommand(timingFlags);
+        if (*storage) return cases::StorageCommand(storageFlags);
         if (*info) return cases::InfoCommand(std::string("lexel ") + LEXEL_VERSION);
         if (*tables) return cases::TablesCommand(tablesOut, casesDir);
         if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);

@@ -621,7 +621,109 @@ void DrawCurve(cairo_t* cr, const PlotCurve& curve, Rgb colour, PxX pxX, PxY pxY
 
 }  // namespace
 
+namespace {
+
+// Linear x axis [lo, hi] with about 8 ticks at round values.
+void DrawLinearXTicks(cairo_t* cr, const PxRect& plot, double lo, double hi) {
+    const auto px = [&](double x) { return plot.x + (x - lo) / (hi - lo) * plot.width; };
+    const double step = NiceStep((hi - lo) / 8);
+    for (double x = std::ceil(lo / step - 1e-9) * step; x <= hi + 1e-9 * step; x += step) {
+        const double value = std::abs(x) < 1e-9 * step ? 0.0 : x;
+        if (px(x) > plot.x + 1 && px(x) < plot.Right() - 1)
+            GridLine(cr, px(x), plot.y, px(x), plot.Bottom());
+        TickMark(cr, px(x), plot.Bottom(), px(x), plot.Bottom() + 6);
+        ShowText(cr, px(x), plot.Bottom() + 10, FormatTick(value), 0.5, 0);
+    }
+}
+
+// The same plot with a linear x or a log y axis (WriteCurvePlot's other cases).
+void WriteCurvePlotScaled(const std::string& pngPath, const CurvePlot& figure) {
+    constexpr int kPxWidth = 900, kPxHeight = 600;
+    const PxRect plot{95, 55, 775, 460};
+    double xMin = std::numeric_limits<double>::infinity(), xMax = -xMin;
+    double yMin = std::numeric_limits<double>::infinity(), yMax = -yMin;
+    for (const PlotCurve& curve : figure.curves)
+        for (std::size_t i = 0; i < std::min(curve.x.size(), curve.y.size()); ++i) {
+            const double x = curve.x[i], y = curve.y[i];
+            if (!std::isfinite(x) || !std::isfinite(y)) continue;
+            if ((figure.logX && !(x > 0)) || (figure.logY && !(y > 0))) continue;
+            xMin = std::min(xMin, x), xMax = std::max(xMax, x);
+            yMin = std::min(yMin, y), yMax = std::max(yMax, y);
+        }
+    if (figure.guideY) yMin = std::min(yMin, *figure.guideY), yMax = std::max(yMax, *figure.guideY);
+    if (!(xMax > xMin)) xMin = 0.0, xMax = 1.0;
+    LogAxis logX;
+    if (figure.logX && !figure.xTicks.empty()) {
+        const auto [lo, hi] = std::minmax_element(figure.xTicks.begin(), figure.xTicks.end());
+        logX = {std::log10(*lo) - 0.05, std::log10(*hi) + 0.05};
+    } else if (figure.logX) {
+        const auto [lo, hi] = DecadeRange(xMin, xMax).value_or(std::make_pair(0, 1));
+        logX = {static_cast<double>(lo), static_cast<double>(hi)};
+    }
+    const auto pxX = [&](double x) {
+        return figure.logX ? logX.Px(plot, x) : plot.x + (x - xMin) / (xMax - xMin) * plot.width;
+    };
+    double yLo = 0.0, yHi = std::max(1.0, yMax * 1.1);
+    if (figure.logY) {
+        const auto [lo, hi] = DecadeRange(yMin, yMax).value_or(std::make_pair(0, 1));
+        yLo = lo, yHi = hi;
+    }
+    const auto pxY = [&](double y) {
+        const double v = figure.logY ? std::log10(y) : y;
+        return plot.Bottom() - (v - yLo) / (yHi - yLo) * plot.height;
+    };
+    RenderPng(pngPath, kPxWidth, kPxHeight, [&](cairo_t* cr) {
+        SetFont(cr, 18, true);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        ShowText(cr, kPxWidth / 2.0, 16, figure.title, 0.5, 0);
+        SetFont(cr, 13);
+        if (figure.logY) {
+            DrawLogYTicks(cr, plot, static_cast<int>(yLo), static_cast<int>(yHi));
+        } else {
+            const double yStep = NiceStep(yHi / 6);
+            for (double y = 0; y <= yHi + 1e-9; y += yStep) {
+                if (y > 0) GridLine(cr, plot.x, pxY(y), plot.Right(), pxY(y));
+                TickMark(cr, plot.x - 6, pxY(y), plot.x, pxY(y));
+                ShowText(cr, plot.x - 10, pxY(y), FormatTick(y), 1, 0.5);
+            }
+        }
+        SetFont(cr, 13);
+        if (figure.logX)
+            DrawXTicks(cr, plot, logX, figure.xTicks);
+        else
+            DrawLinearXTicks(cr, plot, xMin, xMax);
+        cairo_save(cr);
+        cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
+        cairo_clip(cr);
+        if (figure.guideY) DrawGuide(cr, plot, pxY(*figure.guideY), figure.guideLabel);
+        std::vector<std::string> labels;
+        std::vector<Rgb> colours;
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        for (std::size_t c = 0; c < figure.curves.size(); ++c) {
+            labels.push_back(figure.curves[c].label);
+            colours.push_back(MethodColour(c));
+            PlotCurve drawable = figure.curves[c];
+            // DrawCurve skips x ≤ 0; on a linear x axis shift by the axis origin instead.
+            if (!figure.logX)
+                for (double& x : drawable.x) x = x - xMin + 1.0;
+            const auto pxShifted = [&](double x) {
+                return figure.logX ? pxX(x) : pxX(x - 1.0 + xMin);
+            };
+            if (figure.logY)
+                for (double& y : drawable.y)
+                    if (!(y > 0)) y = std::numeric_limits<double>::quiet_NaN();
+            DrawCurve(cr, drawable, colours.back(), pxShifted, pxY);
+        }
+        cairo_restore(cr);
+        DrawAxesFrame(cr, plot, figure.xLabel, figure.yLabel);
+        DrawLegend(cr, plot, labels, colours, true);
+    });
+}
+
+}  // namespace
+
 void WriteCurvePlot(const std::string& pngPath, const CurvePlot& figure) {
+    if (!figure.logX || figure.logY) return WriteCurvePlotScaled(pngPath, figure);
     constexpr int kPxWidth = 900, kPxHeight = 600;
     const PxRect plot{95, 55, 775, 460};
     double xMin = std::numeric_limits<double>::infinity(), xMax = 0.0, yMax = 0.0;

@@ -22,10 +22,11 @@ namespace lexel::cases {
 void WriteCaseFigure(const std::string& pngPath, const flatland::FlatScene& scene,
                      const flatland::CaseReport& report);
 
-// A line plot with a log-scale x axis: curves with dots, a legend, an optional dashed guide.
+// A line plot with a log-scale (or linear) x axis and a linear (or log-scale) y axis: curves with
+// dots, a legend, an optional dashed guide.
 struct PlotCurve {
     std::string label;
-    std::vector<double> x, y;  // x > 0
+    std::vector<double> x, y;  // x > 0 on a log x axis, y > 0 on a log y axis
 };
 struct CurvePlot {
     std::string title, xLabel, yLabel;
@@ -33,6 +34,8 @@ struct CurvePlot {
     std::vector<double> xTicks;    // ticks at these x (and the axis spans them); empty: decades
     std::optional<double> guideY;  // a dashed horizontal line at this y, labelled guideLabel
     std::string guideLabel;
+    bool logX = true;   // false: linear x from the smallest to the largest x (xTicks ignored)
+    bool logY = false;  // true: whole decades of y
 };
 // Throws std::runtime_error when the file cannot be written.
 void WriteCurvePlot(const std::string& pngPath, const CurvePlot& plot);

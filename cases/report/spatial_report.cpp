@@ -94,12 +94,13 @@ std::string SpatialRunText(const spatial::Scene&, const SpatialRun& run) {
     for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
         const auto& o = run.outcomes[l];
         TextTable table({"method", "misclassified", "false shadow", "false light", "uncovered",
-                         "mean σ1(J⁻¹)", "max σ1(J⁻¹)", "h (eq. 6)", "ms"});
+                         "mean σ1(J⁻¹)", "max σ1(J⁻¹)", "storage factor", "h (eq. 6)", "ms"});
         for (const auto& m : o.methods)
             table.AddRow({m.method, std::to_string(m.misclassified), std::to_string(m.falseShadow),
                           std::to_string(m.misclassified - m.falseShadow),
                           std::to_string(m.uncovered), Significant(m.footprintMean, 4),
-                          Significant(m.footprintMax, 4), Significant(m.h, 6), Fixed(m.ms, 3)});
+                          Significant(m.footprintMax, 4), Significant(m.storageFactor, 4),
+                          Significant(m.h, 6), Fixed(m.ms, 3)});
         text << (l ? "\n" : "") << LightHeader(l, o) << table.Render() << IterationLines(o)
              << CascadeLines(o);
     }
@@ -127,6 +128,11 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                                      {"uncovered", m.uncovered},
                                      {"mean_footprint", m.footprintMean},
                                      {"max_footprint", FiniteOrNull(m.footprintMax)},
+                                     {"max_perspective_aliasing", m.perspectiveMax},
+                                     {"p99_perspective_aliasing", m.perspectiveP99},
+                                     {"texels", m.texels},
+                                     {"storage_factor", m.storageFactor},
+                                     {"storage_factor_p99", m.storageFactorP99},
                                      {"h", FiniteOrNull(m.h)},
                                      {"ms", m.ms}};
             if (!m.hAfterIteration.empty()) method["h_after_iteration"] = m.hAfterIteration;
@@ -169,14 +175,16 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
 std::string SpatialRunCsv(const SpatialRun& run) {
     std::ostringstream csv;
     csv << "light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,"
-           "max_footprint,maps\n";
+           "max_footprint,maps,max_perspective_aliasing,storage_factor\n";
     for (std::size_t l = 0; l < run.outcomes.size(); ++l)
         for (const auto& m : run.outcomes[l].methods)
             csv << l << ',' << m.method << ',' << m.misclassified << ',' << m.falseShadow << ','
                 << m.misclassified - m.falseShadow << ',' << Significant(m.h, 9) << ','
                 << Fixed(m.ms, 4) << ',' << m.uncovered << ',' << Significant(m.footprintMean, 9)
                 << ',' << Significant(m.footprintMax, 9) << ','
-                << std::max<std::size_t>(1, m.cascades.size()) << '\n';
+                << std::max<std::size_t>(1, m.cascades.size()) << ','
+                << Significant(m.perspectiveMax, 9) << ',' << Significant(m.storageFactor, 9)
+                << '\n';
     return csv.str();
 }
 

@@ -160,6 +160,10 @@ struct MethodSummary {
     double meanUncovered = 0.0;        // counted pixels no map covers, mean per light
     std::int64_t emptyPartitions = 0;  // over all lights
     int cascades = 1;                  // maps per light (the most over lights)
+    // Lloyd's storage factor measured per light (SweepCell::storageFactor): median and max over
+    // the lights (the median: one number for the hemisphere that a few lights near the view
+    // axis, where every single map needs far more, do not dominate).
+    double medianStorage = 0.0, maxStorage = 0.0;
 };
 
 MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t reference) {
@@ -187,6 +191,15 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
         out.meanUncovered += static_cast<double>(c.uncovered);
         out.emptyPartitions += c.emptyPartitions;
         out.cascades = std::max(out.cascades, c.cascades);
+    }
+    std::vector<double> storage;
+    for (const auto& light : r.cells) storage.push_back(light[m].storageFactor);
+    if (!storage.empty()) {
+        std::sort(storage.begin(), storage.end());
+        const std::size_t half = storage.size() / 2;
+        out.medianStorage =
+            storage.size() % 2 ? storage[half] : 0.5 * (storage[half - 1] + storage[half]);
+        out.maxStorage = storage.back();
     }
     const double lights = static_cast<double>(std::max<std::size_t>(1, r.cells.size()));
     out.meanMisclassified /= lights;
@@ -230,7 +243,8 @@ TextTable SummaryTable(const SweepResult& r, const View& view) {
     const std::string ref = r.methods[view.reference];
     TextTable table({"method", "mean misclassified", "% more than " + ref,
                      "% of lights beating " + ref, "mean h (eq. 6)", "lights with h = inf",
-                     "h orders as errors (% lights)", "grazing share of h", "mean ms per light"});
+                     "h orders as errors (% lights)", "grazing share of h", "median storage factor",
+                     "mean ms per light"});
     const MethodSummary reference = Summarize(r, view.reference, view.reference);
     for (std::size_t m : view.methods) {
         const MethodSummary s = Summarize(r, m, view.reference);
@@ -240,7 +254,8 @@ TextTable SummaryTable(const SweepResult& r, const View& view) {
                       m == view.reference ? "–" : Fixed(s.beatingPercent, 0) + "%",
                       Significant(s.meanH, 5), std::to_string(s.infiniteH),
                       std::isnan(s.hAgreesPercent) ? "–" : Fixed(s.hAgreesPercent, 0) + "%",
-                      Fixed(100.0 * s.grazingShare, 0) + "%", Fixed(s.meanMs, 3)});
+                      Fixed(100.0 * s.grazingShare, 0) + "%", Significant(s.medianStorage, 4),
+                      Fixed(s.meanMs, 3)});
     }
     return table;
 }
@@ -251,8 +266,8 @@ TextTable EqualTexelTable(const SweepResult& r, const View& view) {
     const std::string ref = r.methods[view.reference];
     TextTable table({"method", "maps", "mean misclassified", "% more than " + ref,
                      "% of lights beating " + ref, "mean σ1(J⁻¹)", "max σ1(J⁻¹)",
-                     "uncovered pixels (mean)", "empty partitions", "mean h (eq. 6)",
-                     "mean ms per light"});
+                     "uncovered pixels (mean)", "empty partitions", "median storage factor",
+                     "mean h (eq. 6)", "mean ms per light"});
     const MethodSummary reference = Summarize(r, view.reference, view.reference);
     for (std::size_t m : view.methods) {
         const MethodSummary s = Summarize(r, m, view.reference);
@@ -262,7 +277,8 @@ TextTable EqualTexelTable(const SweepResult& r, const View& view) {
                       m == view.reference ? "–" : Fixed(s.beatingPercent, 0) + "%",
                       Significant(s.meanFootprint, 4), Significant(s.maxFootprint, 4),
                       Fixed(s.meanUncovered, 1), std::to_string(s.emptyPartitions),
-                      Significant(s.meanH, 5), Fixed(s.meanMs, 3)});
+                      Significant(s.medianStorage, 4), Significant(s.meanH, 5),
+                      Fixed(s.meanMs, 3)});
     }
     return table;
 }
@@ -338,6 +354,8 @@ nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) 
              {"max_footprint", FiniteOrNull(s.maxFootprint)},
              {"mean_uncovered_pixels", s.meanUncovered},
              {"empty_partitions", s.emptyPartitions},
+             {"median_storage_factor", s.medianStorage},
+             {"max_storage_factor", s.maxStorage},
              {"mean_ms", s.meanMs}});
     }
     if (worstRows) {
@@ -366,7 +384,7 @@ std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
     std::ostringstream out;
     out << "table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,"
            "mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,"
-           "mean_uncovered_pixels,empty_partitions\n";
+           "mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor\n";
     const auto write = [&](const char* table, const View& view, const std::vector<Row>& rows) {
         const bool published = r.methods[view.reference] == "optimal-report";
         for (const Row& row : rows) {
@@ -387,9 +405,10 @@ std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
                 if (row.set == "all")
                     out << ',' << Significant(s.meanFootprint, 9) << ','
                         << Significant(s.maxFootprint, 9) << ',' << Fixed(s.meanUncovered, 3) << ','
-                        << s.emptyPartitions;
+                        << s.emptyPartitions << ',' << Significant(s.medianStorage, 9) << ','
+                        << Significant(s.maxStorage, 9);
                 else
-                    out << ",,,,";
+                    out << ",,,,,,";
                 out << '\n';
             }
         }

@@ -25,10 +25,16 @@ std::string Significant(double value, int digits) {
 
 namespace {
 // Terminal columns of a UTF-8 string: one per code point (continuation bytes are 10xxxxxx), so
-// "σ" and "∞" take one column like the ASCII around them.
+// "σ" and "∞" take one column like the ASCII around them; combining diacritical marks
+// (U+0300–U+036F, UTF-8 CC 80 – CD AF: the bar of "S̄") take none.
 std::size_t DisplayWidth(const std::string& text) {
     std::size_t width = 0;
-    for (unsigned char c : text) width += (c & 0xC0) != 0x80;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0;
+        const bool combining = c == 0xCC || (c == 0xCD && next <= 0xAF);
+        width += (c & 0xC0) != 0x80 && !combining;
+    }
     return width;
 }
 }  // namespace

@@ -58,11 +58,17 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
         }
         for (std::size_t m = 0; m < methods.size(); ++m) {
             const spatial::MethodOutcome& o = outcome.methods[m];
-            r.cells[l][m] = {
-                o.misclassified,  o.h,         o.ms,
-                o.hGrazing,       o.winner,    o.footprintMean,
-                o.footprintMax,   o.uncovered, std::max(1, static_cast<int>(o.cascades.size())),
-                o.emptyPartitions};
+            r.cells[l][m] = {o.misclassified,
+                             o.h,
+                             o.ms,
+                             o.hGrazing,
+                             o.winner,
+                             o.footprintMean,
+                             o.footprintMax,
+                             o.uncovered,
+                             std::max(1, static_cast<int>(o.cascades.size())),
+                             o.emptyPartitions,
+                             o.storageFactor};
         }
         r.receiverPixels[l] = outcome.receiverPixels;
         if (onLightDone) onLightDone();

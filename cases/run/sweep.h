@@ -24,6 +24,9 @@ struct SweepCell {
     std::int64_t uncovered = 0;                      // counted pixels no map covers
     int cascades = 1;                                // maps (partitioned methods: k)
     int emptyPartitions = 0;
+    // Lloyd 2006's storage factor measured (MethodOutcome::storageFactor): texels for a worst
+    // perspective aliasing of 1 over the frame's pixels.
+    double storageFactor = 0.0;
 };
 
 struct SweepResult {

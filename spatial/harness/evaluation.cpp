@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "lexel/solvers/errors.h"
@@ -119,17 +120,29 @@ FrameShading ShadeThroughMap(const RenderBackend& backend, const CameraBuffer& f
 struct Footprints {
     double mean = 0.0, max = 0.0;
     std::int64_t uncovered = 0;
+    double perspectiveMax = 0.0, perspectiveP99 = 0.0;
 };
+
+// The nearest-rank q-quantile (q in [0, 1]) of the values; 0 for none. Reorders them.
+double NearestRankQuantile(std::vector<double>& values, double q) {
+    if (values.empty()) return 0.0;
+    const auto rank = static_cast<std::size_t>(
+        std::max(1.0, std::ceil(q * static_cast<double>(values.size()))) - 1.0);
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank),
+                     values.end());
+    return values[rank];
+}
 
 // σ₁(J⁻¹) over the counted pixels of a shading (evaluation.h); a counted pixel outside its
 // cascade's depth interval, behind its map's plane or outside its texels is uncovered instead.
-Footprints MeasureFootprints(const LightSpace& lightSpace, const CameraBuffer& frame,
-                             std::span<const glm::dvec3> dWdx1, std::span<const glm::dvec3> dWdx2,
-                             const FrameShading& shading) {
+Footprints MeasureFootprints(const Camera& camera, const LightSpace& lightSpace,
+                             const CameraBuffer& frame, std::span<const glm::dvec3> dWdx1,
+                             std::span<const glm::dvec3> dWdx2, const FrameShading& shading) {
     const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
     Footprints f;
     double sum = 0.0;
     std::int64_t measured = 0;
+    std::vector<double> perspective;
     for (std::size_t i = 0; i < shading.shades.size(); ++i) {
         if (shading.shades[i] != Shade::kLit && shading.shades[i] != Shade::kShadowed) continue;
         const ShadowMap& map = shading.maps[shading.cascade[i]];
@@ -141,6 +154,9 @@ Footprints MeasureFootprints(const LightSpace& lightSpace, const CameraBuffer& f
             ++f.uncovered;
             continue;
         }
+        const double aliasing =
+            PerspectiveAliasing(camera, lightSpace, map.matrix, frame.wsPosition[i]);
+        if (std::isfinite(aliasing)) perspective.push_back(aliasing);
         const double sigma = SampleBadness(map.matrix, lsX, lsFromWs * dWdx1[i],
                                            lsFromWs * dWdx2[i], Badness::kLargestSingularValue);
         if (!std::isfinite(sigma)) continue;  // J singular: the pixel's plane contains its ray
@@ -149,10 +165,50 @@ Footprints MeasureFootprints(const LightSpace& lightSpace, const CameraBuffer& f
         ++measured;
     }
     f.mean = measured > 0 ? sum / static_cast<double>(measured) : 0.0;
+    if (!perspective.empty())
+        f.perspectiveMax = *std::max_element(perspective.begin(), perspective.end());
+    f.perspectiveP99 = NearestRankQuantile(perspective, 0.99);
     return f;
 }
 
 }  // namespace
+
+// ∂u/∂x on the plane ⊥ the ray: the rows ∂u^i/∂X (LightMatrix::MapJacobian) times ∂X/∂x
+// (LightSpace::LightFromWorldLinear) applied to a unit basis (e1, e2) of that plane give the 2×2
+// J_l in texels per world unit. The texel's beam cross-section is J_l⁻¹, whose largest singular
+// value is σ_max(J_l) / |det J_l| (σ_min σ_max = |det|), with σ_max² = (T + √(T² − 4 det²)) / 2,
+// T = ‖J_l‖_F²: no cancellation for the small singular value.
+double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
+                           const LightMatrix& matrix, const glm::dvec3& wsPoint) {
+    const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
+    if (!InFront(matrix.p4, lsX)) return std::numeric_limits<double>::infinity();
+    glm::dvec3 du1dX, du2dX;
+    matrix.MapJacobian(lsX, &du1dX, &du2dX);
+    const glm::dvec3 wsRay = -lightSpace.DirectionToLight(wsPoint);
+    const glm::dvec3 helper =
+        std::abs(wsRay.x) < 0.5 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec3 wsE1 = glm::normalize(glm::cross(wsRay, helper));
+    const glm::dvec3 wsE2 = glm::cross(wsRay, wsE1);
+    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+    const glm::dvec3 lsE1 = lsFromWs * wsE1, lsE2 = lsFromWs * wsE2;
+    const double a = glm::dot(du1dX, lsE1), b = glm::dot(du1dX, lsE2);
+    const double c = glm::dot(du2dX, lsE1), d = glm::dot(du2dX, lsE2);
+    const double det = std::abs(a * d - b * c);
+    if (!(det > 0.0)) return std::numeric_limits<double>::infinity();
+    const double frobenius2 = a * a + b * b + c * c + d * d;
+    const double sigmaMax = std::sqrt(
+        0.5 * (frobenius2 + std::sqrt(std::max(0.0, frobenius2 * frobenius2 - 4.0 * det * det))));
+    const double wsTexelWidth = sigmaMax / det;
+    // Eq. 2 per pixel: the image beam's width at planar depth z.
+    const double wsPixelWidth = 2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) *
+                                PlanarEyeDepth(camera, wsPoint) / camera.resolution.height;
+    return wsTexelWidth / wsPixelWidth;
+}
+
+double EffectiveStorageFactor(std::int64_t texels, double aliasing, std::int64_t framePixels) {
+    if (framePixels <= 0) return 0.0;
+    return static_cast<double>(texels) * aliasing * aliasing / static_cast<double>(framePixels);
+}
 
 std::vector<Shade> Evaluator::ShadeFrame(const Light& light, const LightMatrix& matrix) const {
     const LightSpace lightSpace(light, bounds_);
@@ -267,10 +323,18 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
             : ShadeThroughCascades(backend_, frame_, lightSpace, cascades, frameDepth_);
     m->misclassified = CountWrong(shading.shades, truth, &m->falseShadow);
     const Footprints footprints =
-        MeasureFootprints(lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
+        MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
     m->footprintMean = footprints.mean;
     m->footprintMax = footprints.max;
     m->uncovered = footprints.uncovered;
+    m->perspectiveMax = footprints.perspectiveMax;
+    m->perspectiveP99 = footprints.perspectiveP99;
+    for (const ShadowMap& map : shading.maps)
+        m->texels += static_cast<std::int64_t>(map.resolution.width) * map.resolution.height;
+    const std::int64_t framePixels =
+        static_cast<std::int64_t>(scene_.camera.resolution.width) * scene_.camera.resolution.height;
+    m->storageFactor = EffectiveStorageFactor(m->texels, m->perspectiveMax, framePixels);
+    m->storageFactorP99 = EffectiveStorageFactor(m->texels, m->perspectiveP99, framePixels);
     if (cascades.empty()) {
         m->h = Energy(m->matrix, samples);
         for (std::size_t s = 0; s < grazing.size(); ++s)

@@ -16,7 +16,8 @@
 // under the cascade that serves it. Every method's footprint is measured per counted pixel as
 // σ₁(J⁻¹), J = ∂u/∂x in texels of the serving map per frame pixel, with ∂W/∂x exact on the
 // pixel's plane (PlaneDerivatives): the most frame pixels one texel spans, > 1 where the map
-// undersamples the view.
+// undersamples the view. Beside it, Lloyd et al. 2006's perspective aliasing w_l/w_i per covered
+// counted pixel (PerspectiveAliasing) and the effective storage factor it implies.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +35,21 @@
 namespace lexel::spatial {
 
 class RayCaster;
+
+// Lloyd et al. 2006 eq. 1's perspective factor w_l/w_i at a world point served by `matrix`:
+// w_l = σ₁ of the inverse of ∂u/∂x restricted to the plane perpendicular to the light's ray
+// through the point (world units per texel: the widest cross-section of the texel's beam), and
+// w_i = 2 tanθ z / H (eq. 2 per pixel: z the planar eye depth, H the frame's height in pixels,
+// square pixels). Unlike σ₁(J⁻¹) it leaves out the receiver's orientation (eq. 1's cosine ratio,
+// projection aliasing), as Lloyd's storage factor does. +inf where the map is singular there or
+// the point is not in front of the map; throws nothing.
+double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
+                           const LightMatrix& matrix, const glm::dvec3& wsPoint);
+
+// texels · aliasing² / framePixels: the storage factor S̄ (Lloyd 2006 eq. 12's texels over image
+// pixels) that brings a worst aliasing `aliasing` to 1 by scaling every map's resolution alike.
+// 0 when framePixels ≤ 0.
+double EffectiveStorageFactor(std::int64_t texels, double aliasing, std::int64_t framePixels);
 
 inline constexpr double kRayOffset = 1e-5;  // scene radii; Embree works in float
 // A sample where |n · l| < kGrazingCos (the light within ~11.5° of the receiver's plane) is a
@@ -71,7 +87,16 @@ struct MethodOutcome {
     // map's plane or outside its texels (shaded lit, as ShadePoint does).
     std::int64_t uncovered = 0;
     double footprintMean = 0.0;  // σ₁(J⁻¹) over the covered counted pixels (frame pixels/texel)
-    double footprintMax = 0.0;             // ... its maximum
+    double footprintMax = 0.0;  // ... its maximum
+    // Lloyd 2006's perspective aliasing w_l/w_i (PerspectiveAliasing) over the same pixels: its
+    // maximum and 99th percentile (nearest rank), texel widths per pixel width.
+    double perspectiveMax = 0.0, perspectiveP99 = 0.0;
+    std::int64_t texels = 0;  // Σ over the method's maps of width × height
+    // The effective storage factor: the texels the method would need, relative to the frame's
+    // pixels, for its measured worst perspective aliasing to be 1 (all maps scaled alike):
+    // texels · perspectiveMax² / frame pixels, Lloyd's S̄ measured (EffectiveStorageFactor).
+    // storageFactorP99 the same with perspectiveP99.
+    double storageFactor = 0.0, storageFactorP99 = 0.0;
     std::vector<CascadeOutcome> cascades;  // partitioned methods: per cascade
     int emptyPartitions = 0;               // ... those serving no readback point
     std::vector<Shade> shades;             // per frame pixel, when keepBuffers

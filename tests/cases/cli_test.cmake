@@ -102,7 +102,7 @@ foreach(k RANGE ${last})
     endif()
     expect_count("${wrong}" "lights/0/methods/${k}/misclassified")
 endforeach()
-expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1\n0,normal,[^\n]*,1\n$"
+expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps,max_perspective_aliasing,storage_factor\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+\n0,normal,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+\n$"
            "^$" run "${small}" --format csv --method optimal --method normal --no-map-truth)
 
 # --out writes the report and three images per light and method (a partitioned method: a map
@@ -172,7 +172,7 @@ if(NOT ranked STREQUAL "optimal-report")
 endif()
 expect_run(0 "^## Table 1 as published [^\n]*spatial_small, 3 point lights[^\n]*\n\n\\| lights \\| optimal-report \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\|\n.*\n\\| worst 10% by psm \\|.*## The fair comparison [^\n]*\n\n\\| method \\|"
            "^$" sweep "${small}" --lights 3 --format markdown)
-expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,mean_uncovered_pixels,empty_partitions\nreport,all,optimal-report,[0-9.]+,0\\.0000,.*\nfair,all,optimal,[0-9.]+,0\\.0000,"
+expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor\nreport,all,optimal-report,[0-9.]+,0\\.0000,.*\nfair,all,optimal,[0-9.]+,0\\.0000,"
            "^$" sweep "${small}" --lights 3 --format csv)
 expect_run(0 "^Table 1 as published .*\nThe fair comparison .*\nsweep: [0-9.]+ s for 3 lights\n$" "^$"
            sweep "${small}" --lights 3)
@@ -351,3 +351,46 @@ expect_run(2 "" "--backend: vulkan not in \\{cpu,gl\\}" run "${DATA}/spatial_sma
 expect_run(2 "^$" "^lexel: error: --backend: flatland cases have no renderer; --backend applies to 3D cases\n$"
            run "${good}" --backend gl)
 expect_run(0 "^lexel [0-9.]+\ncpu \\([0-9]+ threads\\)\ngl: " "^$" info)
+
+# ---- lexel storage: Lloyd et al. 2006's storage factor (issue 15) ----
+# The default frustum is Fig. 12's (60°, f/n = 1000): S̄_opt 5.98, ZP + W overhead 865, 53.0, 16.0,
+# 9.5 for 1, 2, 4, 8 maps; Figs. 5–6's S̄ = 85.74 from PSM to LiSPSM at f/n = 100.
+expect_run(0 "^Lloyd et al. 2006's storage factor[^\n]*fov_y 60°, aspect 1, n 1, f 1000 \\(f/n = 1000\\)\nS̄_opt = [^\n]* = 5.98229 .*\n *0.00 +16.454[0-9]* +85.736[0-9]* .*\nFig. 12:[^\n]*\n[^\n]*\n-+\n *1 +865159 +865.159 .*\n *8 +22.53[0-9]* +9.50[0-9]* "
+           "^$" storage)
+expect_run(0 "^\\{" "^$" storage --fov-y 60 --near 1 --far 100 --format json)
+string(JSON optimal GET "${lastStdout}" optimal)
+string(JSON hemispheres LENGTH "${lastStdout}" hemisphere)
+string(JSON warpRatio GET "${lastStdout}" warp 1 depth_ratio)
+if(NOT optimal MATCHES "^3\\.98819[0-9]*" OR NOT hemispheres EQUAL 3 OR NOT warpRatio MATCHES "^100(\\.0)?$")
+    message(FATAL_ERROR "unexpected storage JSON:\n${lastStdout}")
+endif()
+expect_run(0 "^figure,series,x1,x2,value\nfig5_6,warp,-1,20,[^\n]*\n(.*\n)?fig12,ZP \\+ W overhead,4,,16.0159[0-9]*\n(.*\n)?fig13,vertex rule,4,1,"
+           "^$" storage --format csv)
+expect_run(0 "" "wrote storage.json, storage.csv and 7 figures" storage --far 100 --out "${WORK}/storage")
+foreach(f storage.json storage.csv fig5_6_warp.png fig7_hemisphere_no_warp.png
+        fig7_hemisphere_lispsm.png fig7_hemisphere_fp_w.png fig10_partitions.png fig12_maps.png
+        fig13_crossover.png)
+    if(NOT EXISTS "${WORK}/storage/${f}")
+        message(FATAL_ERROR "lexel storage --out did not write ${f}")
+    endif()
+endforeach()
+# Bad flags: one line naming the flag, exit 2, nothing written.
+expect_run(2 "^$" "^lexel: error: --far: must be finite and > --near \\(1\\), got 0.5\n$"
+           storage --far 0.5 --out "${WORK}/storage_bad")
+expect_run(2 "^$" "^lexel: error: --fov-y: must be in \\(0, 180\\) degrees, got 180\n$"
+           storage --fov-y 180 --out "${WORK}/storage_bad")
+expect_run(2 "^$" "^lexel: error: --aspect: must be finite and > 0, got 0\n$"
+           storage --aspect 0 --out "${WORK}/storage_bad")
+expect_run(2 "^$" "^lexel: error: --near: must be finite and > 0, got -1\n$"
+           storage --near -1 --out "${WORK}/storage_bad")
+expect_run(2 "^$" "" storage --format xml --out "${WORK}/storage_bad")
+expect_run(2 "^$" "--far excludes --case" storage --case "${small}" --far 10)
+expect_run(2 "^$" "^lexel: error: --method: applies with --case" storage --method focused)
+if(EXISTS "${WORK}/storage_bad")
+    message(FATAL_ERROR "a failed lexel storage left ${WORK}/storage_bad behind")
+endif()
+# Measured beside analytic on a case: each method's storage factor and its scheme's S̄.
+expect_run(0 "^Measured storage factor beside[^\n]*spatial_small: camera fov_y 60°, aspect 1.33333, n 0.1, f 50 \\(f/n = 500\\)[^\n]*\nlight 0: point \\(8, 8, 2\\), γ = [0-9.]+°[^\n]*\nS̄_opt 5.382 \\(camera\\)[^\n]*\n[^\n]*\n-+\nfocused +1 +[0-9.e+]+ +[0-9.e+]+ +[0-9.e+]+ +no warp +[0-9.e+]+ .*\nlispsm +1 [^\n]* LiSPSM .*\nzp-lispsm +4 [^\n]* ZP \\+ W \\(k = 4\\) "
+           "^$" storage --case "${small}" --method focused --method lispsm --method zp-lispsm)
+expect_run(0 "^light,method,maps,texels,max_perspective_aliasing,storage_factor,storage_factor_p99,scheme,scheme_storage_camera,scheme_storage_visible,optimal_camera,optimal_visible\n0,optimal,1,16384,[^\n]*,best single map,"
+           "^$" storage --case "${small}" --method optimal --format csv)
