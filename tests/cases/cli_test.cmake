@@ -66,6 +66,61 @@ if(EXISTS "${WORK}/bad")
     message(FATAL_ERROR "a failed run left ${WORK}/bad behind")
 endif()
 
+# ---- Issue 16: names are file stems; no output replaces another or an input ----
+# A name that would leave --out, hide a NUL, or not fit a file name: exit 2, one line naming
+# /name, nothing written anywhere.
+file(READ "${good}" goodText)
+string(REPEAT "n" 300 longName)
+foreach(bad "dotdot|../escaped|contains '/'"
+            "absolute|${WORK}/names/absolute_escape|contains '/'"
+            "nul|a\\u0000b|contains the control character U\\+0000"
+            "long|${longName}|300 bytes, at most 100")
+    string(REPLACE "|" ";" bad "${bad}")
+    list(GET bad 0 file)
+    list(GET bad 1 name)
+    list(GET bad 2 reason)
+    string(REPLACE "\"single_plane\"" "\"${name}\"" text "${goodText}")
+    file(WRITE "${WORK}/names/${file}.json" "${text}")
+    expect_run(2 "^$" "^lexel: error: [^\n]*${file}.json: /name: not a safe file stem: ${reason}\n$"
+               run "${WORK}/names/${file}.json" --method normal --out "${WORK}/names/out")
+    expect_run(2 "^$" "^lexel: error: [^\n]*${file}.json: /name: not a safe file stem: ${reason}\n$"
+               lowres "${WORK}/names/${file}.json" --out "${WORK}/names/out")
+endforeach()
+file(GLOB written "${WORK}/names/*" "${WORK}/names/out")
+list(LENGTH written nWritten)
+if(NOT nWritten EQUAL 4 OR EXISTS "${WORK}/names/out" OR EXISTS "${WORK}/names/escaped.json")
+    message(FATAL_ERROR "a refused name wrote files: ${written}")
+endif()
+file(READ "${DATA}/spatial_small.json" smallText)
+string(REPLACE "\"spatial_small\"" "\"../escaped3d\"" text "${smallText}")
+file(WRITE "${WORK}/names/dotdot3d.json" "${text}")
+expect_run(2 "^$" "^lexel: error: [^\n]*dotdot3d.json: /name: not a safe file stem: contains '/'\n$"
+           run "${WORK}/names/dotdot3d.json" --out "${WORK}/names/out")
+# Two cases of one name in one run would overwrite each other's reports.
+file(WRITE "${WORK}/dup/copy.json" "${goodText}")
+expect_run(2 "^$" "^lexel: error: --out: [^\n]*single_plane.json and [^\n]*copy.json are both named 'single_plane' \\(their outputs would overwrite each other\\)\n$"
+           run "${good}" "${WORK}/dup/copy.json" --method normal --out "${WORK}/dup/out")
+expect_run(0 "" "" run "${good}" "${WORK}/dup/copy.json" --method normal)  # without --out: fine
+# --out in the case's own folder would replace the case file with its report.
+file(WRITE "${WORK}/self/single_plane.json" "${goodText}")
+file(WRITE "${WORK}/self/lowres_single_plane.md" "${goodText}")
+file(WRITE "${WORK}/self/spatial_small.json" "${smallText}")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*single_plane.json would overwrite the case file [^\n]*self/single_plane.json\n$"
+           run "${WORK}/self/single_plane.json" --method normal --out "${WORK}/self")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*lowres_single_plane.md would overwrite the case file [^\n]*\n$"
+           lowres "${WORK}/self/lowres_single_plane.md" --out "${WORK}/self")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*spatial_small.json would overwrite the case file [^\n]*\n$"
+           run "${WORK}/self/spatial_small.json" --method focused --out "${WORK}/self")
+file(GLOB written "${WORK}/self/*")
+file(READ "${WORK}/self/single_plane.json" kept)
+list(LENGTH written nWritten)
+if(NOT nWritten EQUAL 3 OR NOT kept STREQUAL goodText)
+    message(FATAL_ERROR "a refused --out changed ${WORK}/self: ${written}")
+endif()
+if(EXISTS "${WORK}/dup/out")
+    message(FATAL_ERROR "a refused run wrote ${WORK}/dup/out")
+endif()
+
 # ---- 3D cases: lexel run and lexel sweep on a small floor-and-box scene ----
 set(small "${DATA}/spatial_small.json")
 set(methods3d optimal optimal-refined focused-tight lispsm-tight psm-tight plane-optimal normal
