@@ -121,6 +121,29 @@ if(EXISTS "${WORK}/dup/out")
     message(FATAL_ERROR "a refused run wrote ${WORK}/dup/out")
 endif()
 
+# ---- Issue 16: every command-line error is one line, exit 2 ----
+set(oneLine "^lexel: error: [^\n]+\n$")
+expect_run(2 "^$" "^lexel: error: cases: File does not exist: [^\n]*does_not_exist.json\n$"
+           run "${WORK}/does_not_exist.json")
+expect_run(2 "^$" "${oneLine}" run "${WORK}")  # a directory as the case
+expect_run(2 "^$" "${oneLine}" sweep "${DATA}/spatial_small.json" --lights 0)
+expect_run(2 "^$" "${oneLine}" timing "${DATA}/spatial_small.json" --frames 0)
+expect_run(2 "^$" "^lexel: error: [^\n]*--frobnicate[^\n]*\n$" run "${good}" --frobnicate)
+expect_run(2 "^$" "${oneLine}" run "${good}" --format xml)
+expect_run(2 "^$" "${oneLine}" run)
+expect_run(2 "^$" "${oneLine}")
+expect_run(2 "^$" "${oneLine}" nope)
+expect_run(0 "Case files" "^$" run --help)
+
+# ---- Issue 16: a stdout that cannot be written is a failed run (exit 1, one line) ----
+if(EXISTS /dev/full)
+    execute_process(COMMAND "${LEXEL}" run "${good}" --method normal OUTPUT_FILE /dev/full
+                    RESULT_VARIABLE code ERROR_VARIABLE err)
+    if(NOT code EQUAL 1 OR NOT err STREQUAL "lexel: error: cannot write to standard output\n")
+        message(FATAL_ERROR "lexel run > /dev/full: exit ${code}, stderr '${err}'")
+    endif()
+endif()
+
 # ---- 3D cases: lexel run and lexel sweep on a small floor-and-box scene ----
 set(small "${DATA}/spatial_small.json")
 set(methods3d optimal optimal-refined focused-tight lispsm-tight psm-tight plane-optimal normal
