@@ -121,6 +121,30 @@ if(EXISTS "${WORK}/dup/out")
     message(FATAL_ERROR "a refused run wrote ${WORK}/dup/out")
 endif()
 
+# ---- Issue 16: never nan in any format ----
+# The projection_aliasing plank without its floor: 5 and 10 decision pixels miss it, so the
+# low-resolution study's extra error is undefined there: "n/a" in text, empty in lowres.csv.
+file(MAKE_DIRECTORY "${WORK}/undecidable")
+foreach(f single_plane simple_geometry light_from_top)
+    file(COPY "${CASES}/flatland/${f}.json" DESTINATION "${WORK}/undecidable")
+endforeach()
+file(READ "${DATA}/lowres_undecidable.json" text)
+file(WRITE "${WORK}/undecidable/projection_aliasing.json" "${text}")
+expect_run(0 "\n5 +n/a +n/a +n/a\n10 +n/a +n/a +n/a\n20 " "^$"
+           lowres "${WORK}/undecidable/projection_aliasing.json")
+expect_run(0 "" "^$" tables --cases "${WORK}/undecidable" --out "${WORK}/undecidable/out")
+file(READ "${WORK}/undecidable/out/lowres.csv" csv)
+if(NOT csv MATCHES "\nprojection_aliasing,5,,,\nprojection_aliasing,10,,,\nprojection_aliasing,20,[-0-9]")
+    message(FATAL_ERROR "lowres.csv: expected empty fields at K = 5 and 10:\n${csv}")
+endif()
+foreach(f lowres.csv tables.csv tables.md)
+    file(READ "${WORK}/undecidable/out/${f}" text)
+    string(TOLOWER "${text}" text)
+    if(text MATCHES "(^|[^a-z])-?nan([^a-z]|$)")
+        message(FATAL_ERROR "${WORK}/undecidable/out/${f} prints nan:\n${text}")
+    endif()
+endforeach()
+
 # ---- Issue 16: every command-line error is one line, exit 2 ----
 set(oneLine "^lexel: error: [^\n]+\n$")
 expect_run(2 "^$" "^lexel: error: cases: File does not exist: [^\n]*does_not_exist.json\n$"
