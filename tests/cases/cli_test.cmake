@@ -60,8 +60,8 @@ expect_run(2 "^$" "/light/position/0: must be a number, got null" run "${DATA}/n
 # A bad second case stops the run before anything is written.
 expect_run(2 "^$" "fov_deg" run "${good}" "${DATA}/bad_fov.json" --out "${WORK}/bad")
 expect_run(2 "" "unknown flatland method 'nope'" run "${good}" --method nope --out "${WORK}/bad")
-expect_run(2 "" "" run "${good}" --format xml)
-expect_run(2 "" "" run "${WORK}/does_not_exist.json")
+expect_run(2 "^$" "^lexel: error: --format: xml not in \\{table,json,csv\\}\n$" run "${good}" --format xml)
+expect_run(2 "^$" "^lexel: error: [^\n]*\n$" run "${WORK}/does_not_exist.json")
 if(EXISTS "${WORK}/bad")
     message(FATAL_ERROR "a failed run left ${WORK}/bad behind")
 endif()
@@ -344,8 +344,8 @@ expect_run(2 "^$" "^lexel: error: [^\n]*unknown 3D method 'nope'[^\n]*\n$"
            sweep "${small}" --methods focused --methods nope --out "${WORK}/bad3d")
 expect_run(2 "^$" "^lexel: error: [^\n]*unknown 3D method 'nope'[^\n]*\n$"
            run "${small}" --method nope --out "${WORK}/bad3d")
-expect_run(2 "" "" sweep "${small}" --format xml --out "${WORK}/bad3d")
-expect_run(2 "" "" sweep "${small}" --lights 0 --out "${WORK}/bad3d")
+expect_run(2 "^$" "^lexel: error: --format: xml not in [^\n]*\n$" sweep "${small}" --format xml --out "${WORK}/bad3d")
+expect_run(2 "^$" "^lexel: error: --lights: Value 0 not in range 1 to 100000\n$" sweep "${small}" --lights 0 --out "${WORK}/bad3d")
 expect_run(2 "^$" "^lexel: error: run: give one 3D case at a time \\(got 2 files\\)\n$"
            run "${small}" "${small}" --out "${WORK}/bad3d")
 expect_run(2 "^$" "^lexel: error: [^\n]*single_plane.json: this is a flatland case[^\n]*\n$"
@@ -449,7 +449,7 @@ expect_run(0 "^method,frame,total_ms,camera_pass_ms,readback_ms,extraction_ms,hu
 expect_run(2 "^$" "^lexel: error: [^\n]*spatial_no_sweep.json: /lights: --lights 2 needs 2 lights; the case has 1 and no light_sweep\n$"
            timing "${DATA}/spatial_no_sweep.json" --lights 2)
 # --backend: cpu or gl, 3D cases only.
-expect_run(2 "" "--backend: vulkan not in \\{cpu,gl\\}" run "${DATA}/spatial_small.json" --backend vulkan)
+expect_run(2 "^$" "^lexel: error: --backend: vulkan not in \\{cpu,gl\\}\n$" run "${DATA}/spatial_small.json" --backend vulkan)
 expect_run(2 "^$" "^lexel: error: --backend: flatland cases have no renderer; --backend applies to 3D cases\n$"
            run "${good}" --backend gl)
 expect_run(0 "^lexel [0-9.]+\ncpu \\([0-9]+ threads\\)\ngl: " "^$" info)
