@@ -240,6 +240,13 @@ int SweepCommand(const SweepFlags& flags) {
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
     const BackendKind backend = BackendOf(flags.backend);
+    if (!flags.outDir.empty())
+        RefuseOverwritingInputs(flags.outDir, {flags.casePath}, [&](const std::string& file) {
+            for (const char* name : {"table1.md", "table1.csv", "sweep.json", "lights.csv",
+                                     "cascades.csv", "cascades.png"})
+                if (file == name) return true;
+            return file.starts_with(scene.name + "_light") && file.ends_with(".png");
+        });
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     std::optional<spatial::Light::Type> type;

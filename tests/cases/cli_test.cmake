@@ -111,10 +111,13 @@ expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*lowres_single_plane.md wo
            lowres "${WORK}/self/lowres_single_plane.md" --out "${WORK}/self")
 expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*spatial_small.json would overwrite the case file [^\n]*\n$"
            run "${WORK}/self/spatial_small.json" --method focused --out "${WORK}/self")
+file(WRITE "${WORK}/self/sweep.json" "${smallText}")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*sweep.json would overwrite the case file [^\n]*self/sweep.json\n$"
+           sweep "${WORK}/self/sweep.json" --lights 1 --method focused --out "${WORK}/self")
 file(GLOB written "${WORK}/self/*")
 file(READ "${WORK}/self/single_plane.json" kept)
 list(LENGTH written nWritten)
-if(NOT nWritten EQUAL 3 OR NOT kept STREQUAL goodText)
+if(NOT nWritten EQUAL 4 OR NOT kept STREQUAL goodText)
     message(FATAL_ERROR "a refused --out changed ${WORK}/self: ${written}")
 endif()
 if(EXISTS "${WORK}/dup/out")
