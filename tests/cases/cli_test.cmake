@@ -86,6 +86,14 @@ foreach(bad "dotdot|../escaped|contains '/'"
     expect_run(2 "^$" "^lexel: error: [^\n]*${file}.json: /name: not a safe file stem: ${reason}\n$"
                lowres "${WORK}/names/${file}.json" --out "${WORK}/names/out")
 endforeach()
+# tables with such a case among its four: refused at loading, before any figure is drawn.
+foreach(f single_plane simple_geometry light_from_top projection_aliasing)
+    file(COPY "${CASES}/flatland/${f}.json" DESTINATION "${WORK}/names_tables")
+endforeach()
+string(REPLACE "\"single_plane\"" "\"../escaped\"" text "${goodText}")
+file(WRITE "${WORK}/names_tables/single_plane.json" "${text}")
+expect_run(2 "^$" "^lexel: error: [^\n]*single_plane.json: /name: not a safe file stem: contains '/'\n$"
+           tables --cases "${WORK}/names_tables" --out "${WORK}/names/out")
 file(GLOB written "${WORK}/names/*" "${WORK}/names/out")
 list(LENGTH written nWritten)
 if(NOT nWritten EQUAL 4 OR EXISTS "${WORK}/names/out" OR EXISTS "${WORK}/names/escaped.json")
