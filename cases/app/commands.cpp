@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "lexel/cases/app/output_guard.h"
 #include "lexel/cases/app/progress.h"
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/json_reader.h"
@@ -128,6 +129,12 @@ int RunSpatial(const RunFlags& flags) {
     options.mapTruth = flags.mapTruth;
     options.keepBuffers = !flags.outDir.empty();
     options.backend = BackendOf(flags.backend);
+    if (!flags.outDir.empty())
+        RefuseOverwritingInputs(flags.outDir, flags.cases, [&](const std::string& file) {
+            const std::string& name = scene.name;  // <name>.json/.csv, <name>_light<k>_*.png
+            return file == name + ".json" || file == name + ".csv" ||
+                   (file.starts_with(name + "_light") && file.ends_with(".png"));
+        });
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
     if (flags.format == "json")
         std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
@@ -147,6 +154,21 @@ int RunSpatial(const RunFlags& flags) {
     return 0;
 }
 
+// `run --out` with flatland cases writes <name>.json/.csv/.md per case: refuses two cases of one
+// name and outputs that would replace a case file.
+void RefuseFlatlandOutputClashes(const RunFlags& flags,
+                                 const std::vector<flatland::FlatScene>& scenes) {
+    std::vector<std::string> names;
+    for (const auto& scene : scenes) names.push_back(scene.name);
+    RefuseDuplicateNames(names, flags.cases);
+    RefuseOverwritingInputs(flags.outDir, flags.cases, [&](const std::string& file) {
+        for (const std::string& name : names)
+            if (file == name + ".json" || file == name + ".csv" || file == name + ".md")
+                return true;
+        return false;
+    });
+}
+
 int RunFlatland(const RunFlags& flags) {
     if (flags.backend != "cpu")
         throw InputError(
@@ -156,13 +178,15 @@ int RunFlatland(const RunFlags& flags) {
         throw InputError("--metric: must be one of l1, l2, linf, got '" + flags.metric + "'");
     const std::vector<std::string> methods = FlatlandMethods(flags.methods);
     // Everything is computed before anything is written: a bad second case leaves no files.
+    std::vector<flatland::FlatScene> scenes;
+    for (const auto& path : flags.cases) scenes.push_back(LoadFlatScene(path));
+    if (!flags.outDir.empty()) RefuseFlatlandOutputClashes(flags, scenes);
     std::vector<flatland::CaseReport> reports;
-    for (const auto& path : flags.cases) {
-        const flatland::FlatScene scene = LoadFlatScene(path);
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
         try {
-            reports.push_back(flatland::RunFlatlandCase(scene, methods, *metric));
+            reports.push_back(flatland::RunFlatlandCase(scenes[i], methods, *metric));
         } catch (const DomainError& e) {
-            throw FlatlandInputError(path, e);
+            throw FlatlandInputError(flags.cases[i], e);
         }
     }
     if (flags.format == "json")
@@ -219,6 +243,13 @@ int SweepCommand(const SweepFlags& flags) {
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
     const BackendKind backend = BackendOf(flags.backend);
+    if (!flags.outDir.empty())
+        RefuseOverwritingInputs(flags.outDir, {flags.casePath}, [&](const std::string& file) {
+            for (const char* name : {"table1.md", "table1.csv", "sweep.json", "lights.csv",
+                                     "cascades.csv", "cascades.png"})
+                if (file == name) return true;
+            return file.starts_with(scene.name + "_light") && file.ends_with(".png");
+        });
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     std::optional<spatial::Light::Type> type;
@@ -404,6 +435,11 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
 
 int LowresCommand(const std::string& casePath, const std::string& outDir) {
     const flatland::FlatScene scene = LoadFlatScene(casePath);
+    if (!outDir.empty())
+        RefuseOverwritingInputs(outDir, {casePath}, [&](const std::string& file) {
+            return file == "lowres_" + scene.name + ".md" ||
+                   file == "lowres_" + scene.name + ".png";
+        });
     std::vector<LowresRow> rows;
     try {
         rows = RunLowresStudy(scene);

@@ -30,7 +30,18 @@
 #define LEXEL_VERSION "unknown"
 #endif
 
-int main(int argc, char** argv) {
+namespace {
+
+// A parser error as the one line every failure prints (CLI11's own message, newlines folded).
+int ParseFailure(const CLI::ParseError& e) {
+    std::string message = e.what();
+    for (char& c : message)
+        if (c == '\n' || c == '\r') c = ' ';
+    std::cerr << "lexel: error: " << message << '\n';
+    return 2;
+}
+
+int RunLexel(int argc, char** argv) {
     CLI::App app{"lexel: choose the light projection that minimizes shadow-map aliasing"};
     app.set_version_flag("--version", std::string("lexel ") + LEXEL_VERSION);
     app.require_subcommand(1);
@@ -183,9 +194,14 @@ int main(int argc, char** argv) {
 
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        const int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        return ParseFailure(e);
     }
     using namespace lexel;
     try {
@@ -212,4 +228,17 @@ int main(int argc, char** argv) {
         return 1;
     }
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int status = RunLexel(argc, argv);
+    // Results that did not reach stdout (a full disk, a closed pipe) are a failed run.
+    std::cout.flush();
+    if (!std::cout) {
+        std::cerr << "lexel: error: cannot write to standard output\n";
+        return status == 0 ? 1 : status;
+    }
+    return status;
 }

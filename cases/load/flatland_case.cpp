@@ -1,5 +1,6 @@
 #include "lexel/cases/load/flatland_case.h"
 
+#include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/solvers/errors.h"
 
@@ -47,7 +48,7 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
     root.ExpectObject({"camera", "light", "lexels", "geometry"},
                       {"name", "description", "decision_pixels", "frusta"});
     flatland::FlatScene scene;
-    scene.name = root.Has("name") ? root["name"].String() : fallbackName;
+    scene.name = CaseNameOf(root, fallbackName);
     if (root.Has("description")) root["description"].String();
 
     const JsonField camera = root["camera"];

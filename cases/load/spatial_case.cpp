@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/solvers/errors.h"
@@ -157,7 +158,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
                       {"name", "description", "lights", "shadow_map", "readback", "geometry",
                        "generator", "light_sweep", "camera_path", "cascades"});
     spatial::Scene scene;
-    scene.name = root.Has("name") ? root["name"].String() : fallbackName;
+    scene.name = CaseNameOf(root, fallbackName);
     if (root.Has("description")) root["description"].String();
 
     ReadCamera(root["camera"], &scene.camera);

@@ -70,10 +70,12 @@ std::string RunCsv(std::span<const flatland::CaseReport> reports) {
             std::string note = m.note;
             for (char& c : note)
                 if (c == ',' || c == '"') c = ';';
-            out << r.caseName << ',' << m.method << ',' << m.lexelPlaneDeg << ',' << m.stats.worst()
-                << ',' << m.stats.average << ',' << m.stats.meanPlusSigma << ',' << m.stats.median
-                << ',' << m.stats.l1 << ',' << m.stats.l2 << ',' << m.stats.linf << ','
-                << m.stats.count << ',' << m.solveMs << ','
+            const auto num = [](double v) { return CsvNumber(v, 17); };  // NaN: empty
+            out << r.caseName << ',' << m.method << ',' << num(m.lexelPlaneDeg) << ','
+                << num(m.stats.worst()) << ',' << num(m.stats.average) << ','
+                << num(m.stats.meanPlusSigma) << ',' << num(m.stats.median) << ','
+                << num(m.stats.l1) << ',' << num(m.stats.l2) << ',' << num(m.stats.linf) << ','
+                << m.stats.count << ',' << num(m.solveMs) << ','
                 << (m.frusta.empty() ? 1 : m.frusta.size()) << ',' << note << '\n';
         }
     return out.str();

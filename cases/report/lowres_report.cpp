@@ -48,8 +48,8 @@ std::string LowresCsv(const std::vector<std::pair<std::string, std::vector<Lowre
     out << "case,decision_pixels,l1_extra_percent,l2_extra_percent,linf_extra_percent\n";
     for (const auto& [name, rows] : studies)
         for (const auto& row : rows)
-            out << name << ',' << row.decisionPixels << ',' << row.extraPercent[0] << ','
-                << row.extraPercent[1] << ',' << row.extraPercent[2] << '\n';
+            out << name << ',' << row.decisionPixels << ',' << CsvNumber(row.extraPercent[0]) << ','
+                << CsvNumber(row.extraPercent[1]) << ',' << CsvNumber(row.extraPercent[2]) << '\n';
     return out.str();
 }
 

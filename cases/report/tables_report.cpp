@@ -112,9 +112,10 @@ std::string TablesCsv(const std::vector<TableResult>& results) {
         for (const auto& [label, method] : TableRows()) {
             const auto& m = r.Method(method);
             const ThesisRow* p = r.thesis.RowFor(method);
+            const auto num = [](double v) { return CsvNumber(v, 17); };  // NaN: empty
             out << fs::path(r.thesis.file).stem().string() << ',' << label << ',' << method << ','
-                << m.lexelPlaneDeg << ',' << m.stats.worst() << ',' << m.stats.average << ','
-                << m.stats.meanPlusSigma << ',';
+                << num(m.lexelPlaneDeg) << ',' << num(m.stats.worst()) << ','
+                << num(m.stats.average) << ',' << num(m.stats.meanPlusSigma) << ',';
             if (p)
                 out << p->angle << ',' << p->worst << ',' << p->average << ',' << p->meanPlusSigma
                     << ','

@@ -8,6 +8,7 @@
 namespace lexel::cases {
 
 std::string Fixed(double value, int digits) {
+    if (std::isnan(value)) return "";
     if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
     // Values that round to zero print as 0, never as "-0.000".
     if (std::abs(value) < 0.5 * std::pow(10.0, -digits)) value = 0.0;
@@ -17,10 +18,19 @@ std::string Fixed(double value, int digits) {
 }
 
 std::string Significant(double value, int digits) {
+    if (std::isnan(value)) return "";
     if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
     return buffer;
+}
+
+std::string CsvNumber(double value, int precision) {
+    if (std::isnan(value)) return "";
+    std::ostringstream out;
+    out.precision(precision);
+    out << value;
+    return out.str();
 }
 
 namespace {

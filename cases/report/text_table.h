@@ -20,7 +20,11 @@ class TextTable {
     std::vector<std::vector<std::string>> rows_;
 };
 
+// An undefined quantity (NaN) prints as an empty string in every format: an empty CSV field, an
+// empty table cell (JSON writes it as null); never "nan".
 std::string Fixed(double value, int digits);            // "%.{digits}f"; "inf"; never "-0.000"
 std::string Significant(double value, int digits = 4);  // "%.{digits}g"; "inf"
+// A CSV field for `value` as std::ostream writes it at this precision; empty for NaN.
+std::string CsvNumber(double value, int precision = 6);
 
 }  // namespace lexel::cases

@@ -60,10 +60,123 @@ expect_run(2 "^$" "/light/position/0: must be a number, got null" run "${DATA}/n
 # A bad second case stops the run before anything is written.
 expect_run(2 "^$" "fov_deg" run "${good}" "${DATA}/bad_fov.json" --out "${WORK}/bad")
 expect_run(2 "" "unknown flatland method 'nope'" run "${good}" --method nope --out "${WORK}/bad")
-expect_run(2 "" "" run "${good}" --format xml)
-expect_run(2 "" "" run "${WORK}/does_not_exist.json")
+expect_run(2 "^$" "^lexel: error: --format: xml not in \\{table,json,csv\\}\n$" run "${good}" --format xml)
+expect_run(2 "^$" "^lexel: error: [^\n]*\n$" run "${WORK}/does_not_exist.json")
 if(EXISTS "${WORK}/bad")
     message(FATAL_ERROR "a failed run left ${WORK}/bad behind")
+endif()
+
+# ---- Issue 16: names are file stems; no output replaces another or an input ----
+# A name that would leave --out, hide a NUL, or not fit a file name: exit 2, one line naming
+# /name, nothing written anywhere.
+file(READ "${good}" goodText)
+string(REPEAT "n" 300 longName)
+foreach(bad "dotdot|../escaped|contains '/'"
+            "absolute|${WORK}/names/absolute_escape|contains '/'"
+            "nul|a\\u0000b|contains the control character U\\+0000"
+            "long|${longName}|300 bytes, at most 100")
+    string(REPLACE "|" ";" bad "${bad}")
+    list(GET bad 0 file)
+    list(GET bad 1 name)
+    list(GET bad 2 reason)
+    string(REPLACE "\"single_plane\"" "\"${name}\"" text "${goodText}")
+    file(WRITE "${WORK}/names/${file}.json" "${text}")
+    expect_run(2 "^$" "^lexel: error: [^\n]*${file}.json: /name: not a safe file stem: ${reason}\n$"
+               run "${WORK}/names/${file}.json" --method normal --out "${WORK}/names/out")
+    expect_run(2 "^$" "^lexel: error: [^\n]*${file}.json: /name: not a safe file stem: ${reason}\n$"
+               lowres "${WORK}/names/${file}.json" --out "${WORK}/names/out")
+endforeach()
+# tables with such a case among its four: refused at loading, before any figure is drawn.
+foreach(f single_plane simple_geometry light_from_top projection_aliasing)
+    file(COPY "${CASES}/flatland/${f}.json" DESTINATION "${WORK}/names_tables")
+endforeach()
+string(REPLACE "\"single_plane\"" "\"../escaped\"" text "${goodText}")
+file(WRITE "${WORK}/names_tables/single_plane.json" "${text}")
+expect_run(2 "^$" "^lexel: error: [^\n]*single_plane.json: /name: not a safe file stem: contains '/'\n$"
+           tables --cases "${WORK}/names_tables" --out "${WORK}/names/out")
+file(GLOB written "${WORK}/names/*" "${WORK}/names/out")
+list(LENGTH written nWritten)
+if(NOT nWritten EQUAL 4 OR EXISTS "${WORK}/names/out" OR EXISTS "${WORK}/names/escaped.json")
+    message(FATAL_ERROR "a refused name wrote files: ${written}")
+endif()
+file(READ "${DATA}/spatial_small.json" smallText)
+string(REPLACE "\"spatial_small\"" "\"../escaped3d\"" text "${smallText}")
+file(WRITE "${WORK}/names/dotdot3d.json" "${text}")
+expect_run(2 "^$" "^lexel: error: [^\n]*dotdot3d.json: /name: not a safe file stem: contains '/'\n$"
+           run "${WORK}/names/dotdot3d.json" --out "${WORK}/names/out")
+# Two cases of one name in one run would overwrite each other's reports.
+file(WRITE "${WORK}/dup/copy.json" "${goodText}")
+expect_run(2 "^$" "^lexel: error: --out: [^\n]*single_plane.json and [^\n]*copy.json are both named 'single_plane' \\(their outputs would overwrite each other\\)\n$"
+           run "${good}" "${WORK}/dup/copy.json" --method normal --out "${WORK}/dup/out")
+expect_run(0 "" "" run "${good}" "${WORK}/dup/copy.json" --method normal)  # without --out: fine
+# --out in the case's own folder would replace the case file with its report.
+file(WRITE "${WORK}/self/single_plane.json" "${goodText}")
+file(WRITE "${WORK}/self/lowres_single_plane.md" "${goodText}")
+file(WRITE "${WORK}/self/spatial_small.json" "${smallText}")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*single_plane.json would overwrite the case file [^\n]*self/single_plane.json\n$"
+           run "${WORK}/self/single_plane.json" --method normal --out "${WORK}/self")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*lowres_single_plane.md would overwrite the case file [^\n]*\n$"
+           lowres "${WORK}/self/lowres_single_plane.md" --out "${WORK}/self")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*spatial_small.json would overwrite the case file [^\n]*\n$"
+           run "${WORK}/self/spatial_small.json" --method focused --out "${WORK}/self")
+file(WRITE "${WORK}/self/sweep.json" "${smallText}")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*sweep.json would overwrite the case file [^\n]*self/sweep.json\n$"
+           sweep "${WORK}/self/sweep.json" --lights 1 --method focused --out "${WORK}/self")
+file(GLOB written "${WORK}/self/*")
+file(READ "${WORK}/self/single_plane.json" kept)
+list(LENGTH written nWritten)
+if(NOT nWritten EQUAL 4 OR NOT kept STREQUAL goodText)
+    message(FATAL_ERROR "a refused --out changed ${WORK}/self: ${written}")
+endif()
+if(EXISTS "${WORK}/dup/out")
+    message(FATAL_ERROR "a refused run wrote ${WORK}/dup/out")
+endif()
+
+# ---- Issue 16: never nan in any format ----
+# The projection_aliasing plank without its floor: 5 and 10 decision pixels miss it, so the
+# low-resolution study's extra error is undefined there: "n/a" in text, empty in lowres.csv.
+file(MAKE_DIRECTORY "${WORK}/undecidable")
+foreach(f single_plane simple_geometry light_from_top)
+    file(COPY "${CASES}/flatland/${f}.json" DESTINATION "${WORK}/undecidable")
+endforeach()
+file(READ "${DATA}/lowres_undecidable.json" text)
+file(WRITE "${WORK}/undecidable/projection_aliasing.json" "${text}")
+expect_run(0 "\n5 +n/a +n/a +n/a\n10 +n/a +n/a +n/a\n20 " "^$"
+           lowres "${WORK}/undecidable/projection_aliasing.json")
+expect_run(0 "" "^$" tables --cases "${WORK}/undecidable" --out "${WORK}/undecidable/out")
+file(READ "${WORK}/undecidable/out/lowres.csv" csv)
+if(NOT csv MATCHES "\nprojection_aliasing,5,,,\nprojection_aliasing,10,,,\nprojection_aliasing,20,[-0-9]")
+    message(FATAL_ERROR "lowres.csv: expected empty fields at K = 5 and 10:\n${csv}")
+endif()
+foreach(f lowres.csv tables.csv tables.md)
+    file(READ "${WORK}/undecidable/out/${f}" text)
+    string(TOLOWER "${text}" text)
+    if(text MATCHES "(^|[^a-z])-?nan([^a-z]|$)")
+        message(FATAL_ERROR "${WORK}/undecidable/out/${f} prints nan:\n${text}")
+    endif()
+endforeach()
+
+# ---- Issue 16: every command-line error is one line, exit 2 ----
+set(oneLine "^lexel: error: [^\n]+\n$")
+expect_run(2 "^$" "^lexel: error: cases: File does not exist: [^\n]*does_not_exist.json\n$"
+           run "${WORK}/does_not_exist.json")
+expect_run(2 "^$" "${oneLine}" run "${WORK}")  # a directory as the case
+expect_run(2 "^$" "${oneLine}" sweep "${DATA}/spatial_small.json" --lights 0)
+expect_run(2 "^$" "${oneLine}" timing "${DATA}/spatial_small.json" --frames 0)
+expect_run(2 "^$" "^lexel: error: [^\n]*--frobnicate[^\n]*\n$" run "${good}" --frobnicate)
+expect_run(2 "^$" "${oneLine}" run "${good}" --format xml)
+expect_run(2 "^$" "${oneLine}" run)
+expect_run(2 "^$" "${oneLine}")
+expect_run(2 "^$" "${oneLine}" nope)
+expect_run(0 "Case files" "^$" run --help)
+
+# ---- Issue 16: a stdout that cannot be written is a failed run (exit 1, one line) ----
+if(EXISTS /dev/full)
+    execute_process(COMMAND "${LEXEL}" run "${good}" --method normal OUTPUT_FILE /dev/full
+                    RESULT_VARIABLE code ERROR_VARIABLE err)
+    if(NOT code EQUAL 1 OR NOT err STREQUAL "lexel: error: cannot write to standard output\n")
+        message(FATAL_ERROR "lexel run > /dev/full: exit ${code}, stderr '${err}'")
+    endif()
 endif()
 
 # ---- 3D cases: lexel run and lexel sweep on a small floor-and-box scene ----
@@ -242,8 +355,8 @@ expect_run(2 "^$" "^lexel: error: [^\n]*unknown 3D method 'nope'[^\n]*\n$"
            sweep "${small}" --methods focused --methods nope --out "${WORK}/bad3d")
 expect_run(2 "^$" "^lexel: error: [^\n]*unknown 3D method 'nope'[^\n]*\n$"
            run "${small}" --method nope --out "${WORK}/bad3d")
-expect_run(2 "" "" sweep "${small}" --format xml --out "${WORK}/bad3d")
-expect_run(2 "" "" sweep "${small}" --lights 0 --out "${WORK}/bad3d")
+expect_run(2 "^$" "^lexel: error: --format: xml not in [^\n]*\n$" sweep "${small}" --format xml --out "${WORK}/bad3d")
+expect_run(2 "^$" "^lexel: error: --lights: Value 0 not in range 1 to 100000\n$" sweep "${small}" --lights 0 --out "${WORK}/bad3d")
 expect_run(2 "^$" "^lexel: error: run: give one 3D case at a time \\(got 2 files\\)\n$"
            run "${small}" "${small}" --out "${WORK}/bad3d")
 expect_run(2 "^$" "^lexel: error: [^\n]*single_plane.json: this is a flatland case[^\n]*\n$"
@@ -347,7 +460,7 @@ expect_run(0 "^method,frame,total_ms,camera_pass_ms,readback_ms,extraction_ms,hu
 expect_run(2 "^$" "^lexel: error: [^\n]*spatial_no_sweep.json: /lights: --lights 2 needs 2 lights; the case has 1 and no light_sweep\n$"
            timing "${DATA}/spatial_no_sweep.json" --lights 2)
 # --backend: cpu or gl, 3D cases only.
-expect_run(2 "" "--backend: vulkan not in \\{cpu,gl\\}" run "${DATA}/spatial_small.json" --backend vulkan)
+expect_run(2 "^$" "^lexel: error: --backend: vulkan not in \\{cpu,gl\\}\n$" run "${DATA}/spatial_small.json" --backend vulkan)
 expect_run(2 "^$" "^lexel: error: --backend: flatland cases have no renderer; --backend applies to 3D cases\n$"
            run "${good}" --backend gl)
 expect_run(0 "^lexel [0-9.]+\ncpu \\([0-9]+ threads\\)\ngl: " "^$" info)
