@@ -11,10 +11,10 @@
 //
 // This program prints each cascade's interval, map, points, pixels and h for `sdsm` and
 // `sdsm-optimal`, and writes one figure: the four maps of each (rows 1–2; green: the visible
-// points a cascade serves, red: its boundary samples) and the error images of optimal (one map), sdsm and sdsm-optimal
-// (row 3; red: false shadow, blue: missed shadow). The checks: the intervals tile the camera's
-// depth range, each cascade's h under Algorithm 1 is at most SDSM's (it starts from SDSM's box),
-// and the cascades' texels add up to at most the single map's.
+// points a cascade serves, red: its boundary samples) and the error images of optimal (one map),
+// sdsm and sdsm-optimal (row 3; red: false shadow, blue: missed shadow). The checks: the intervals
+// tile the camera's depth range, each cascade's h under Algorithm 1 is at most SDSM's (it starts
+// from SDSM's box), and the cascades' texels add up to at most the single map's.
 //
 // Public API: lexel::spatial (partitions.h, cascades.h). The scene, rendering, exact shadow rays
 // and images: lexel's test bench (lexel::harness, lexel::cases).

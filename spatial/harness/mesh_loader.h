@@ -10,9 +10,9 @@ namespace lexel::spatial {
 
 // Loads every triangle of the file's scene, with node transforms baked in (Assimp's
 // aiProcess_PreTransformVertices) and identical vertices joined; polygons are triangulated, and
-// point and line primitives are dropped. Throws DomainError (Subject::kGeometry), naming the file, when it is missing,
-// when Assimp cannot read it (Assimp's reason, on one line), when it holds no triangles, or when
-// a coordinate is not finite. Prints nothing.
+// point and line primitives are dropped. Throws DomainError (Subject::kGeometry), naming the file,
+// when it is missing, when Assimp cannot read it (Assimp's reason, on one line), when it holds no
+// triangles, or when a coordinate is not finite. Prints nothing.
 TriangleMesh LoadMesh(const std::filesystem::path& path);
 
 }  // namespace lexel::spatial
