@@ -53,8 +53,9 @@ enum class CascadeAllocation {
 // The cascades' resolutions for a budget of total.Count() texels. For kLagrange, costs[i] = c_i ≥
 // 0 (h_i · N_i measured at any resolution: h scales as 1/N for square maps): integer texel counts
 // summing to the budget, each cascade with c_i > 0 at least 1 texel, laid out as the squarest
-// map w × h ≤ N_i. A cascade with c_i = 0 (an empty partition) gets the 1 × 1 map. kEqual ignores
-// costs. std::invalid_argument for no cascades or negative or non-finite costs.
+// map w × h ≤ N_i. A cascade with c_i = 0 (an empty partition, or one without boundary samples)
+// gets the 1 × 1 map. kEqual ignores costs. std::invalid_argument for no cascades or negative or
+// non-finite costs.
 std::vector<Resolution> AllocateCascadeMaps(Resolution total, std::span<const double> costs,
                                             CascadeAllocation allocation);
 
