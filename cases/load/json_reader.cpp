@@ -3,7 +3,10 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
+#include <system_error>
+#include <vector>
 
 #include "lexel/solvers/errors.h"
 
@@ -44,9 +47,72 @@ std::string FormatNumber(double value) {
     return out.str();
 }
 
+namespace {
+
+// Refuses a repeated key in any object (nlohmann keeps the last silently), naming its JSON pointer.
+// Tracks the pointer of the value being parsed: per open object its last key, per open array the
+// number of elements begun.
+class DuplicateKeyCheck {
+  public:
+    explicit DuplicateKeyCheck(const std::string& sourceName) : sourceName_(sourceName) {}
+
+    bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using Event = nlohmann::json::parse_event_t;
+        switch (event) {
+            case Event::object_start:
+            case Event::array_start:
+                BeginElement();
+                frames_.push_back({event == Event::array_start, 0, {}, {}});
+                break;
+            case Event::object_end:
+            case Event::array_end:
+                frames_.pop_back();
+                break;
+            case Event::key: {
+                Frame& object = frames_.back();
+                const std::string key = parsed.get<std::string>();
+                if (!object.keys.insert(key).second)
+                    throw InputError(sourceName_ + ": " + Pointer() + "/" + EscapeKey(key) +
+                                     ": duplicate key (each key may appear once)");
+                object.key = key;
+                break;
+            }
+            case Event::value:
+                BeginElement();
+                break;
+        }
+        return true;
+    }
+
+  private:
+    struct Frame {
+        bool array;
+        std::size_t elements;
+        std::set<std::string> keys;
+        std::string key;
+    };
+
+    void BeginElement() {
+        if (!frames_.empty() && frames_.back().array) ++frames_.back().elements;
+    }
+    // The pointer of the innermost open object or array.
+    std::string Pointer() const {
+        std::string pointer;
+        for (std::size_t i = 0; i + 1 < frames_.size(); ++i)
+            pointer += "/" + (frames_[i].array ? std::to_string(frames_[i].elements - 1)
+                                               : EscapeKey(frames_[i].key));
+        return pointer;
+    }
+
+    const std::string& sourceName_;
+    std::vector<Frame> frames_;
+};
+
+}  // namespace
+
 nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceName) {
     try {
-        return nlohmann::json::parse(text);
+        return nlohmann::json::parse(text, DuplicateKeyCheck(sourceName));
     } catch (const nlohmann::json::parse_error& e) {
         // Line and column of the offending byte (nlohmann reports a 1-based byte count).
         std::size_t line = 1, column = 1;
@@ -74,11 +140,23 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceN
 }
 
 nlohmann::json ParseJsonFile(const std::filesystem::path& path) {
+    // Only a regular file of bounded size: /dev/zero would be read without end, a FIFO would block.
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(path, error);
+    if (error || !std::filesystem::exists(status))
+        throw InputError(path.string() + ": cannot open the case file");
+    if (!std::filesystem::is_regular_file(status))
+        throw InputError(path.string() + ": not a regular file (a case is a JSON file)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string() + ": cannot open the case file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return ParseJsonText(text.str(), path.string());
+    std::string text(kMaxCaseFileBytes + 1, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxCaseFileBytes)
+        throw InputError(path.string() + ": larger than " +
+                         std::to_string(kMaxCaseFileBytes >> 20) +
+                         " MiB, the most a case file may be");
+    return ParseJsonText(text, path.string());
 }
 
 void JsonField::Fail(const std::string& reason) const {

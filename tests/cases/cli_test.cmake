@@ -507,3 +507,12 @@ expect_run(0 "^Measured storage factor beside[^\n]*spatial_small: camera fov_y 6
            "^$" storage --case "${small}" --method focused --method lispsm --method zp-lispsm)
 expect_run(0 "^light,method,maps,texels,max_perspective_aliasing,storage_factor,storage_factor_p99,scheme,scheme_storage_camera,scheme_storage_visible,optimal_camera,optimal_visible\n0,optimal,1,16384,[^\n]*,best single map,"
            "^$" storage --case "${small}" --method optimal --format csv)
+
+# Only regular files are read as cases: /dev/zero would be read without end (exit 2, one line).
+expect_run(2 "^$" "^lexel: error: /dev/zero: not a regular file \\(a case is a JSON file\\)\n$"
+           run /dev/zero --out "${WORK}/bad_dev")
+expect_run(2 "^$" "^lexel: error: /dev/zero: not a regular file \\(a case is a JSON file\\)\n$"
+           sweep /dev/zero --out "${WORK}/bad_dev")
+if(EXISTS "${WORK}/bad_dev")
+    message(FATAL_ERROR "a refused /dev/zero left ${WORK}/bad_dev behind")
+endif()

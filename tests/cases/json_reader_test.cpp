@@ -1,7 +1,11 @@
 #include "lexel/cases/load/json_reader.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
 #include <limits>
 
 #include "lexel/solvers/errors.h"
@@ -22,6 +26,48 @@ TEST(JsonReader, ParseErrorsNameLineAndColumn) {
     const std::string text = "{\n  \"a\": 1,\n  \"b\": [1, 2,,]\n}";
     const std::string message = ErrorOf([&] { ParseJsonText(text, "case.json"); });
     EXPECT_EQ(message.rfind("case.json:3:14: invalid JSON: ", 0), 0u) << message;
+}
+
+TEST(JsonReader, DuplicateKeysAreNamedByTheirPointer) {
+    EXPECT_EQ(ErrorOf([] { ParseJsonText(R"({"name": "a", "name": "b"})", "case.json"); }),
+              "case.json: /name: duplicate key (each key may appear once)");
+    EXPECT_EQ(ErrorOf([] {
+                  ParseJsonText(R"({"a": [1, {"b": 1, "c": [{"x": 1}, {"x": 2, "x": 3}]}]})",
+                                "case.json");
+              }),
+              "case.json: /a/1/c/1/x: duplicate key (each key may appear once)");
+    // The same key in different objects is fine; the pointer escapes "/" and "~" (RFC 6901).
+    EXPECT_EQ(
+        ErrorOf([] { ParseJsonText(R"({"a": {"x": 1}, "b": {"x": 2}, "x": [{"x": 1}]})", "c"); }),
+        "no error");
+    EXPECT_EQ(ErrorOf([] { ParseJsonText(R"({"a/b": {"~": 1, "~": 2}})", "c"); }),
+              "c: /a~1b/~0: duplicate key (each key may appear once)");
+}
+
+TEST(JsonReader, ReadsOnlyRegularFilesOfBoundedSize) {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("lexel_json_reader_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(ErrorOf([] { ParseJsonFile("/dev/zero"); }),
+              "/dev/zero: not a regular file (a case is a JSON file)");
+    const auto fifo = dir / "fifo.json";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(ErrorOf([&] { ParseJsonFile(fifo); }),
+              fifo.string() + ": not a regular file (a case is a JSON file)");
+    EXPECT_EQ(ErrorOf([&] { ParseJsonFile(dir); }),
+              dir.string() + ": not a regular file (a case is a JSON file)");
+    EXPECT_EQ(ErrorOf([&] { ParseJsonFile(dir / "missing.json"); }),
+              (dir / "missing.json").string() + ": cannot open the case file");
+    const auto big = dir / "big.json";
+    {
+        std::ofstream out(big, std::ios::binary);
+        out << "[" << std::string(kMaxCaseFileBytes, ' ') << "]";
+    }
+    EXPECT_EQ(ErrorOf([&] { ParseJsonFile(big); }),
+              big.string() + ": larger than 16 MiB, the most a case file may be");
+    std::filesystem::resize_file(big, kMaxCaseFileBytes - 1);  // "[" and spaces: cut, not too big
+    EXPECT_NE(ErrorOf([&] { ParseJsonFile(big); }).find("invalid JSON"), std::string::npos);
+    std::filesystem::remove_all(dir);
 }
 
 TEST(JsonReader, FieldsNameTheirPointer) {
