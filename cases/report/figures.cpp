@@ -636,6 +636,39 @@ void DrawLinearXTicks(cairo_t* cr, const PxRect& plot, double lo, double hi) {
     }
 }
 
+// Linear y axis [0, yHi] with about 6 ticks at round values.
+template <class PxY>
+void DrawLinearYTicks(cairo_t* cr, const PxRect& plot, double yHi, PxY pxY) {
+    const double yStep = NiceStep(yHi / 6);
+    for (double y = 0; y <= yHi + 1e-9; y += yStep) {
+        if (y > 0) GridLine(cr, plot.x, pxY(y), plot.Right(), pxY(y));
+        TickMark(cr, plot.x - 6, pxY(y), plot.x, pxY(y));
+        ShowText(cr, plot.x - 10, pxY(y), FormatTick(y), 1, 0.5);
+    }
+}
+
+// The figure's guide line and curves clipped to the plot, then its frame and legend;
+// drawOne(curve, colour) draws one curve.
+template <class PxY, class DrawOne>
+void DrawCurvesInFrame(cairo_t* cr, const PxRect& plot, const CurvePlot& figure, PxY pxY,
+                       DrawOne drawOne) {
+    cairo_save(cr);
+    cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
+    cairo_clip(cr);
+    if (figure.guideY) DrawGuide(cr, plot, pxY(*figure.guideY), figure.guideLabel);
+    std::vector<std::string> labels;
+    std::vector<Rgb> colours;
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (std::size_t c = 0; c < figure.curves.size(); ++c) {
+        labels.push_back(figure.curves[c].label);
+        colours.push_back(MethodColour(c));
+        drawOne(figure.curves[c], colours.back());
+    }
+    cairo_restore(cr);
+    DrawAxesFrame(cr, plot, figure.xLabel, figure.yLabel);
+    DrawLegend(cr, plot, labels, colours, true);
+}
+
 // The same plot with a linear x or a log y axis (WriteCurvePlot's other cases).
 void WriteCurvePlotScaled(const std::string& pngPath, const CurvePlot& figure) {
     constexpr int kPxWidth = 900, kPxHeight = 600;
@@ -680,29 +713,15 @@ void WriteCurvePlotScaled(const std::string& pngPath, const CurvePlot& figure) {
         if (figure.logY) {
             DrawLogYTicks(cr, plot, static_cast<int>(yLo), static_cast<int>(yHi));
         } else {
-            const double yStep = NiceStep(yHi / 6);
-            for (double y = 0; y <= yHi + 1e-9; y += yStep) {
-                if (y > 0) GridLine(cr, plot.x, pxY(y), plot.Right(), pxY(y));
-                TickMark(cr, plot.x - 6, pxY(y), plot.x, pxY(y));
-                ShowText(cr, plot.x - 10, pxY(y), FormatTick(y), 1, 0.5);
-            }
+            DrawLinearYTicks(cr, plot, yHi, pxY);
         }
         SetFont(cr, 13);
         if (figure.logX)
             DrawXTicks(cr, plot, logX, figure.xTicks);
         else
             DrawLinearXTicks(cr, plot, xMin, xMax);
-        cairo_save(cr);
-        cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
-        cairo_clip(cr);
-        if (figure.guideY) DrawGuide(cr, plot, pxY(*figure.guideY), figure.guideLabel);
-        std::vector<std::string> labels;
-        std::vector<Rgb> colours;
-        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-        for (std::size_t c = 0; c < figure.curves.size(); ++c) {
-            labels.push_back(figure.curves[c].label);
-            colours.push_back(MethodColour(c));
-            PlotCurve drawable = figure.curves[c];
+        DrawCurvesInFrame(cr, plot, figure, pxY, [&](const PlotCurve& curve, Rgb colour) {
+            PlotCurve drawable = curve;
             // DrawCurve skips x ≤ 0; on a linear x axis shift by the axis origin instead.
             if (!figure.logX)
                 for (double& x : drawable.x) x = x - xMin + 1.0;
@@ -712,11 +731,8 @@ void WriteCurvePlotScaled(const std::string& pngPath, const CurvePlot& figure) {
             if (figure.logY)
                 for (double& y : drawable.y)
                     if (!(y > 0)) y = std::numeric_limits<double>::quiet_NaN();
-            DrawCurve(cr, drawable, colours.back(), pxShifted, pxY);
-        }
-        cairo_restore(cr);
-        DrawAxesFrame(cr, plot, figure.xLabel, figure.yLabel);
-        DrawLegend(cr, plot, labels, colours, true);
+            DrawCurve(cr, drawable, colour, pxShifted, pxY);
+        });
     });
 }
 
@@ -751,28 +767,11 @@ void WriteCurvePlot(const std::string& pngPath, const CurvePlot& figure) {
         cairo_set_source_rgb(cr, 0, 0, 0);
         ShowText(cr, kPxWidth / 2.0, 16, figure.title, 0.5, 0);
         SetFont(cr, 13);
-        const double yStep = NiceStep(yMax / 6);
-        for (double y = 0; y <= yMax + 1e-9; y += yStep) {
-            if (y > 0) GridLine(cr, plot.x, pxY(y), plot.Right(), pxY(y));
-            TickMark(cr, plot.x - 6, pxY(y), plot.x, pxY(y));
-            ShowText(cr, plot.x - 10, pxY(y), FormatTick(y), 1, 0.5);
-        }
+        DrawLinearYTicks(cr, plot, yMax, pxY);
         DrawXTicks(cr, plot, axis, figure.xTicks);
-        cairo_save(cr);
-        cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
-        cairo_clip(cr);
-        if (figure.guideY) DrawGuide(cr, plot, pxY(*figure.guideY), figure.guideLabel);
-        std::vector<std::string> labels;
-        std::vector<Rgb> colours;
-        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-        for (std::size_t c = 0; c < figure.curves.size(); ++c) {
-            labels.push_back(figure.curves[c].label);
-            colours.push_back(MethodColour(c));
-            DrawCurve(cr, figure.curves[c], colours.back(), pxX, pxY);
-        }
-        cairo_restore(cr);
-        DrawAxesFrame(cr, plot, figure.xLabel, figure.yLabel);
-        DrawLegend(cr, plot, labels, colours, true);
+        DrawCurvesInFrame(cr, plot, figure, pxY, [&](const PlotCurve& curve, Rgb colour) {
+            DrawCurve(cr, curve, colour, pxX, pxY);
+        });
     });
 }
 
