@@ -16,11 +16,13 @@
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
 //   lexel fit-thesis [--case NAME] [--out DIR] [--seed S] [--samples N] [--starts K] [--explain]
-// Exit status: 0 success, 2 bad input (one line on stderr naming the field and the reason),
-// 1 an I/O failure while writing results.
+// Exit status: 0 success, 2 bad input (one line on stderr naming the field and the reason) or
+// too little memory for it, 1 an I/O failure while writing results. Every failure is one line
+// "lexel: error: ...".
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "lexel/cases/app/commands.h"
 #include "lexel/solvers/errors.h"
@@ -32,13 +34,13 @@
 
 namespace {
 
-// A parser error as the one line every failure prints (CLI11's own message, newlines folded).
-int ParseFailure(const CLI::ParseError& e) {
-    std::string message = e.what();
+// Prints the one line every failure prints (newlines of a library's message folded) and returns
+// the exit status.
+int Failure(std::string message, int status) {
     for (char& c : message)
         if (c == '\n' || c == '\r') c = ' ';
     std::cerr << "lexel: error: " << message << '\n';
-    return 2;
+    return status;
 }
 
 int RunLexel(int argc, char** argv) {
@@ -201,7 +203,7 @@ int RunLexel(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        return ParseFailure(e);
+        return Failure(e.what(), 2);
     }
     using namespace lexel;
     try {
@@ -218,14 +220,17 @@ int RunLexel(int argc, char** argv) {
         if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);
         if (*fitThesis) return cases::FitThesisCommand(fitFlags);
     } catch (const InputError& e) {
-        std::cerr << "lexel: error: " << e.what() << '\n';
-        return 2;
+        return Failure(e.what(), 2);
     } catch (const DomainError& e) {  // a domain error no command translated: still bad input
-        std::cerr << "lexel: error: " << e.what() << '\n';
-        return 2;
+        return Failure(e.what(), 2);
+    } catch (const std::bad_alloc&) {
+        // The loaders refuse cases over the memory budget; this is a machine with less to give.
+        return Failure(
+            "out of memory: this machine could not give the case what it needs (see "
+            "the memory budget in README.md)",
+            2);
     } catch (const std::exception& e) {
-        std::cerr << "lexel: failed: " << e.what() << '\n';
-        return 1;
+        return Failure(e.what(), 1);
     }
     return 0;
 }

@@ -1,5 +1,6 @@
 #include "lexel/cases/load/json_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -108,6 +109,98 @@ class DuplicateKeyCheck {
     std::vector<Frame> frames_;
 };
 
+// nlohmann's exception id for a number literal that overflows a double.
+constexpr int kNumberOverflow = 406;
+
+struct NumberOverflow {
+    std::size_t line = 0, column = 0;  // 1-based, of the literal's first character
+    std::string pointer;               // JSON pointer of the value, "/" for the root
+    std::string token;                 // the literal as written
+};
+
+// A SAX handler that follows the JSON pointer of the value being parsed and records where the
+// parser gives up (nlohmann calls parse_error with the lexer's position for an overflow).
+class PointerTracker : public nlohmann::json::json_sax_t {
+  public:
+    bool null() override { return BeginValue(); }
+    bool boolean(bool) override { return BeginValue(); }
+    bool number_integer(number_integer_t) override { return BeginValue(); }
+    bool number_unsigned(number_unsigned_t) override { return BeginValue(); }
+    bool number_float(number_float_t, const string_t&) override { return BeginValue(); }
+    bool string(string_t&) override { return BeginValue(); }
+    bool binary(binary_t&) override { return BeginValue(); }
+    bool start_object(std::size_t) override { return BeginContainer(false); }
+    bool key(string_t& key) override {
+        frames_.back().key = key;
+        return true;
+    }
+    bool end_object() override { return EndContainer(); }
+    bool start_array(std::size_t) override { return BeginContainer(true); }
+    bool end_array() override { return EndContainer(); }
+    bool parse_error(std::size_t position, const std::string& token,
+                     const nlohmann::json::exception&) override {
+        error_.pointer = NextPointer();
+        error_.token = token;
+        end_ = position;
+        return false;
+    }
+
+    // The pointer of the value that would begin next (the one that failed).
+    std::string NextPointer() const {
+        std::string pointer;
+        for (std::size_t i = 0; i < frames_.size(); ++i) {
+            const Frame& f = frames_[i];
+            const bool last = i + 1 == frames_.size();
+            pointer += "/" + (f.array ? std::to_string(last ? f.elements : f.elements - 1)
+                                      : EscapeKey(f.key));
+        }
+        return pointer.empty() ? "/" : pointer;
+    }
+    const NumberOverflow& Error() const { return error_; }
+    std::size_t ErrorEnd() const { return end_; }  // bytes read up to the end of the bad token
+
+  private:
+    struct Frame {
+        bool array = false;
+        std::size_t elements = 0;
+        std::string key;
+    };
+    bool BeginValue() {
+        if (!frames_.empty() && frames_.back().array) ++frames_.back().elements;
+        return true;
+    }
+    bool BeginContainer(bool array) {
+        BeginValue();
+        frames_.push_back({array, 0, {}});
+        return true;
+    }
+    bool EndContainer() {
+        frames_.pop_back();
+        return true;
+    }
+
+    std::vector<Frame> frames_;
+    NumberOverflow error_;
+    std::size_t end_ = 0;
+};
+
+// Where the first overflowing number literal of `text` is: its line, column and pointer.
+NumberOverflow LocateNumberOverflow(const std::string& text) {
+    PointerTracker tracker;
+    nlohmann::json::sax_parse(text, &tracker);
+    NumberOverflow where = tracker.Error();
+    // The literal's first byte: the parser's position is just past it.
+    const std::size_t begin = tracker.ErrorEnd() - std::min(tracker.ErrorEnd(), where.token.size());
+    where.line = 1, where.column = 1;
+    for (std::size_t i = 0; i < begin && i < text.size(); ++i) {
+        if (text[i] == '\n')
+            ++where.line, where.column = 1;
+        else
+            ++where.column;
+    }
+    return where;
+}
+
 }  // namespace
 
 nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceName) {
@@ -130,12 +223,14 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceN
             reason = reason.substr(colon + 2);
         throw InputError(sourceName + ":" + std::to_string(line) + ":" + std::to_string(column) +
                          ": invalid JSON: " + reason);
-    } catch (const nlohmann::json::exception& e) {
-        // A literal that does not fit a double (1e999) fails after parsing, with no position.
-        std::string reason = e.what();
-        if (const auto bracket = reason.find("] "); bracket != std::string::npos)
-            reason = reason.substr(bracket + 2);
-        throw InputError(sourceName + ": invalid JSON: " + reason + " (numbers must be finite)");
+    } catch (const nlohmann::json::out_of_range& e) {
+        // A literal that does not fit a double (1e400): nlohmann's DOM parser drops its position,
+        // so a second, SAX pass finds the line, column and pointer of the number.
+        if (e.id != kNumberOverflow) throw;
+        const NumberOverflow where = LocateNumberOverflow(text);
+        throw InputError(sourceName + ":" + std::to_string(where.line) + ":" +
+                         std::to_string(where.column) + ": " + where.pointer + ": number " +
+                         where.token + " does not fit a double (numbers must be finite)");
     }
 }
 

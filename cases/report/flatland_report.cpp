@@ -67,16 +67,13 @@ std::string RunCsv(std::span<const flatland::CaseReport> reports) {
            "solve_ms,frusta,note\n";
     for (const auto& r : reports)
         for (const auto& m : r.methods) {
-            std::string note = m.note;
-            for (char& c : note)
-                if (c == ',' || c == '"') c = ';';
             const auto num = [](double v) { return CsvNumber(v, 17); };  // NaN: empty
-            out << r.caseName << ',' << m.method << ',' << num(m.lexelPlaneDeg) << ','
-                << num(m.stats.worst()) << ',' << num(m.stats.average) << ','
+            out << CsvText(r.caseName) << ',' << CsvText(m.method) << ',' << num(m.lexelPlaneDeg)
+                << ',' << num(m.stats.worst()) << ',' << num(m.stats.average) << ','
                 << num(m.stats.meanPlusSigma) << ',' << num(m.stats.median) << ','
                 << num(m.stats.l1) << ',' << num(m.stats.l2) << ',' << num(m.stats.linf) << ','
                 << m.stats.count << ',' << num(m.solveMs) << ','
-                << (m.frusta.empty() ? 1 : m.frusta.size()) << ',' << note << '\n';
+                << (m.frusta.empty() ? 1 : m.frusta.size()) << ',' << CsvText(m.note) << '\n';
         }
     return out.str();
 }

@@ -39,8 +39,8 @@ std::string LowresText(const std::string& caseName, const std::vector<LowresRow>
 
 std::string LowresMarkdown(const std::string& caseName, const std::vector<LowresRow>& rows) {
     return "### Low-resolution decision: " + caseName + "\n\n" +
-           LowresTable(rows).RenderMarkdown() + "\n![lowres " + caseName + "](lowres_" + caseName +
-           ".png)\n\n";
+           LowresTable(rows).RenderMarkdown() + "\n![lowres " + caseName + "](" +
+           MarkdownLinkTarget("lowres_" + caseName + ".png") + ")\n\n";
 }
 
 std::string LowresCsv(const std::vector<std::pair<std::string, std::vector<LowresRow>>>& studies) {
@@ -48,8 +48,9 @@ std::string LowresCsv(const std::vector<std::pair<std::string, std::vector<Lowre
     out << "case,decision_pixels,l1_extra_percent,l2_extra_percent,linf_extra_percent\n";
     for (const auto& [name, rows] : studies)
         for (const auto& row : rows)
-            out << name << ',' << row.decisionPixels << ',' << CsvNumber(row.extraPercent[0]) << ','
-                << CsvNumber(row.extraPercent[1]) << ',' << CsvNumber(row.extraPercent[2]) << '\n';
+            out << CsvText(name) << ',' << row.decisionPixels << ','
+                << CsvNumber(row.extraPercent[0]) << ',' << CsvNumber(row.extraPercent[1]) << ','
+                << CsvNumber(row.extraPercent[2]) << '\n';
     return out.str();
 }
 

@@ -98,7 +98,7 @@ std::string TablesMarkdown(const std::vector<TableResult>& results) {
         out << "## " << r.thesis.title << "\n\n"
             << SceneLine(r) << ".\n\n"
             << ComparisonTable(r).RenderMarkdown() << "\n![" << r.thesis.title << "]("
-            << fs::path(r.thesis.file).stem().string() << ".png)\n\n";
+            << MarkdownLinkTarget(fs::path(r.thesis.file).stem().string() + ".png") << ")\n\n";
     return out.str();
 }
 
@@ -113,8 +113,8 @@ std::string TablesCsv(const std::vector<TableResult>& results) {
             const auto& m = r.Method(method);
             const ThesisRow* p = r.thesis.RowFor(method);
             const auto num = [](double v) { return CsvNumber(v, 17); };  // NaN: empty
-            out << fs::path(r.thesis.file).stem().string() << ',' << label << ',' << method << ','
-                << num(m.lexelPlaneDeg) << ',' << num(m.stats.worst()) << ','
+            out << CsvText(fs::path(r.thesis.file).stem().string()) << ',' << label << ',' << method
+                << ',' << num(m.lexelPlaneDeg) << ',' << num(m.stats.worst()) << ','
                 << num(m.stats.average) << ',' << num(m.stats.meanPlusSigma) << ',';
             if (p)
                 out << p->angle << ',' << p->worst << ',' << p->average << ',' << p->meanPlusSigma

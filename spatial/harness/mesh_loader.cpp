@@ -10,9 +10,9 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <system_error>
 
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/mesh_file_check.h"
 
 namespace lexel::spatial {
 namespace {
@@ -29,9 +29,7 @@ std::string OneLine(std::string text) {
 
 TriangleMesh LoadMesh(const std::filesystem::path& path) {
     const std::string name = path.string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw DomainError(Subject::kGeometry, name + ": mesh file not found");
+    CheckMeshFile(path);  // size, format and declared counts, before Assimp allocates for them
 
     Assimp::Importer importer;
     // Points and lines are removed by aiProcess_SortByPType rather than kept as degenerate meshes.

@@ -1,5 +1,5 @@
-// Reading triangle meshes from model files (OBJ, PLY, STL, and the other formats Assimp reads) for
-// the `mesh` geometry entries of 3D case files (cases/README.md).
+// Reading triangle meshes from model files (OBJ, OFF, PLY, STL, through Assimp) for the `mesh`
+// geometry entries of 3D case files (cases/README.md).
 #pragma once
 
 #include <filesystem>
@@ -11,7 +11,8 @@ namespace lexel::spatial {
 // Loads every triangle of the file's scene, with node transforms baked in (Assimp's
 // aiProcess_PreTransformVertices) and identical vertices joined; polygons are triangulated, and
 // point and line primitives are dropped. Throws DomainError (Subject::kGeometry), naming the file,
-// when it is missing, when Assimp cannot read it (Assimp's reason, on one line), when it holds no
+// when it fails CheckMeshFile (missing, too large, another format, counts its size cannot hold),
+// when Assimp cannot read it (Assimp's reason, on one line), when it holds no
 // triangles, or when a coordinate is not finite. Prints nothing.
 TriangleMesh LoadMesh(const std::filesystem::path& path);
 

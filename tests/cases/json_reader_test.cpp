@@ -99,7 +99,23 @@ TEST(JsonReader, NonFiniteNumbersAreRejected) {
     EXPECT_NE(ErrorOf([] { ParseJsonText(R"({"x": NaN})", "c.json"); }).find("c.json:1:"),
               std::string::npos);
     EXPECT_EQ(ErrorOf([] { ParseJsonText(R"({"x": 1e999})", "c.json"); }),
-              "c.json: invalid JSON: number overflow parsing '1e999' (numbers must be finite)");
+              "c.json:1:7: /x: number 1e999 does not fit a double (numbers must be finite)");
+}
+
+TEST(JsonReader, NumberOverflowNamesPointerLineAndColumn) {
+    // The literal's own line and column, and the pointer of the value inside nested arrays and
+    // objects; a string holding the same characters earlier is not mistaken for it.
+    const std::string text =
+        "{\n  \"description\": \"-1e400\",\n  \"geometry\": [[[0, 1], [2, 3]],\n"
+        "               [[4, 5], [6, -1e400]]]\n}\n";
+    EXPECT_EQ(ErrorOf([&] { ParseJsonText(text, "c.json"); }),
+              "c.json:4:29: /geometry/1/1/1: number -1e400 does not fit a double (numbers must "
+              "be finite)");
+    EXPECT_EQ(ErrorOf([] { ParseJsonText("1e400", "c.json"); }),
+              "c.json:1:1: /: number 1e400 does not fit a double (numbers must be finite)");
+    EXPECT_EQ(ErrorOf([] { ParseJsonText(R"({"a": {"b": [1, {"c": 2E+309}]}})", "c.json"); }),
+              "c.json:1:23: /a/b/1/c: number 2E+309 does not fit a double (numbers must be "
+              "finite)");
     // A document built in memory can still hold infinity; the reader refuses it.
     nlohmann::json doc;
     doc["x"] = std::numeric_limits<double>::infinity();

@@ -38,5 +38,30 @@ TEST(ReportNumbers, LowresCsvLeavesAnUndecidableResolutionEmpty) {
               "c,10,1.5,2.5,0.25\n");
 }
 
+// A case name is a file stem, so it may hold ',' and '"' (issue 16): CSV quotes such fields
+// (RFC 4180) and Markdown links percent-encode the file name.
+TEST(ReportNumbers, CsvQuotesNamesWithCommasAndQuotes) {
+    EXPECT_EQ(CsvText("plain name"), "plain name");
+    EXPECT_EQ(CsvText("a,b"), "\"a,b\"");
+    EXPECT_EQ(CsvText("say \"hi\""), "\"say \"\"hi\"\"\"\"");
+    EXPECT_EQ(CsvText(""), "");
+    LowresRow row;
+    row.decisionPixels = 4;
+    row.extraPercent[0] = 1.0;
+    row.extraPercent[1] = 2.0;
+    row.extraPercent[2] = 3.0;
+    EXPECT_EQ(LowresCsv({{"x,\"y\"", {row}}}),
+              "case,decision_pixels,l1_extra_percent,l2_extra_percent,linf_extra_percent\n"
+              "\"x,\"\"y\"\"\",4,1,2,3\n");
+}
+
+TEST(ReportNumbers, MarkdownLinksEncodeFileNames) {
+    EXPECT_EQ(MarkdownLinkTarget("lowres_single_plane.png"), "lowres_single_plane.png");
+    EXPECT_EQ(MarkdownLinkTarget("lowres_a b(1).png"), "lowres_a%20b%281%29.png");
+    EXPECT_EQ(MarkdownLinkTarget("σ.png"), "%CF%83.png");
+    const std::string markdown = LowresMarkdown("a b", {});
+    EXPECT_NE(markdown.find("](lowres_a%20b.png)"), std::string::npos) << markdown;
+}
+
 }  // namespace
 }  // namespace lexel::cases

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/mesh_file_check.h"
 
 namespace lexel::spatial {
 namespace {
@@ -147,7 +150,7 @@ TEST(MeshLoader, MissingFileAndGarbage) {
               "/nonexistent-dir/model.obj: mesh file not found");
     EXPECT_EQ(LoadError(std::filesystem::temp_directory_path()),
               std::filesystem::temp_directory_path().string() + ": mesh file not found");
-    const auto garbage = std::filesystem::temp_directory_path() / "lexel_mesh_loader_garbage.xyzq";
+    const auto garbage = std::filesystem::temp_directory_path() / "lexel_mesh_loader_garbage.ply";
     std::ofstream(garbage) << "this is not a model\nat all\n";
     const std::string message = LoadError(garbage);
     EXPECT_EQ(message.rfind(garbage.string() + ": cannot read mesh: ", 0), 0u) << message;
@@ -171,6 +174,58 @@ TEST(MeshLoader, RejectsNonFiniteCoordinates) {
                   path.string() + ": vertex 2 of mesh 0 has a non-finite coordinate");
         std::filesystem::remove(path);
     }
+}
+
+// Assimp allocates what a header declares: its own invalid/OutOfMemory.off (3.5e11 vertices in
+// 309 bytes) took gigabytes in seconds (issue 16). The declared counts are held against the size.
+TEST(MeshLoader, RefusesDeclaredCountsTheFileCannotHold) {
+    if (!ModelsInstalled()) return;
+    const auto oom = kModels / "invalid/OutOfMemory.off";
+    EXPECT_EQ(LoadError(oom), oom.string() +
+                                  ": declares 353535235358 vertices and 6 faces, more than its 309 "
+                                  "bytes can hold (a truncated or corrupt file)");
+    const auto dir = std::filesystem::temp_directory_path();
+    const std::pair<const char*, std::string> files[] = {
+        {"lexel_mesh_check.ply",
+         "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
+         "end_header\n0000"},
+        {"lexel_mesh_check_ascii.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nelement face 1000\n"
+         "property list uchar int vertex_indices\nend_header\n0\n0\n0\n3 0 1 2\n"},
+    };
+    const std::string reasons[] = {"declares 4000000000 elements, more than its 94 bytes",
+                                   "declares 1003 elements, more than its 137 bytes"};
+    for (int k = 0; k < 2; ++k) {
+        const auto path = dir / files[k].first;
+        std::ofstream(path, std::ios::binary) << files[k].second;
+        EXPECT_EQ(LoadError(path).rfind(path.string() + ": " + reasons[k], 0), 0u)
+            << LoadError(path);
+        std::filesystem::remove(path);
+    }
+    // A binary STL whose facet count (at byte 80) is 10^9 with one facet's bytes.
+    std::string stl(84 + 50, '\0');
+    const std::uint32_t facets = 1000000000;
+    std::memcpy(stl.data() + 80, &facets, sizeof facets);
+    const auto stlPath = dir / "lexel_mesh_check.stl";
+    std::ofstream(stlPath, std::ios::binary) << stl;
+    EXPECT_EQ(LoadError(stlPath), stlPath.string() +
+                                      ": declares 1000000000 facets, more than its 134 bytes can "
+                                      "hold (a truncated or corrupt file)");
+    std::filesystem::remove(stlPath);
+}
+
+TEST(MeshLoader, RefusesOtherFormatsAndOversizedFiles) {
+    if (!ModelsInstalled()) return;
+    const auto threeDs = kModels / "invalid/empty.3ds";
+    EXPECT_EQ(LoadError(threeDs),
+              threeDs.string() + ": format '.3ds' is not read (mesh formats: obj, off, ply, stl)");
+    // A sparse file one byte over the cap: refused from its size, never read.
+    const auto big = std::filesystem::temp_directory_path() / "lexel_mesh_check_big.obj";
+    std::ofstream(big, std::ios::binary).close();
+    std::filesystem::resize_file(big, kMaxMeshFileBytes + 1);
+    EXPECT_EQ(LoadError(big),
+              big.string() + ": is 67108865 bytes, larger than the 64 MiB a mesh file may be");
+    std::filesystem::remove(big);
 }
 
 }  // namespace

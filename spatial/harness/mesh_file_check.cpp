@@ -1,0 +1,141 @@
+// Declared counts against file size (see mesh_file_check.h). Each element a header declares needs
+// at least a few bytes in the body; a header declaring more than the body can hold is refused
+// before Assimp reserves memory for it.
+#include "lexel/spatial/harness/mesh_file_check.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+#include <vector>
+
+#include "lexel/solvers/errors.h"
+
+namespace lexel::spatial {
+namespace {
+
+// The header bytes inspected (PLY and OFF headers are a few hundred bytes).
+constexpr std::size_t kHeaderBytes = 64 * 1024;
+
+// Fewest bytes one ASCII element can take: a vertex "0 0 0\n" (6), an OFF face "3 0 1 2\n" (8), a
+// PLY element of one property "0\n" (2). A binary PLY element takes at least 1 byte a property
+// (char), a binary STL facet exactly 50.
+constexpr double kMinOffVertexBytes = 6, kMinOffFaceBytes = 8, kMinPlyAsciiBytes = 2;
+constexpr double kStlFacetBytes = 50, kStlHeaderBytes = 84;
+
+[[noreturn]] void Refuse(const std::filesystem::path& path, const std::string& reason) {
+    throw DomainError(Subject::kGeometry, path.string() + ": " + reason);
+}
+
+std::string ReadHead(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) Refuse(path, "cannot open the mesh file");
+    std::string head(kHeaderBytes, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    return head;
+}
+
+void CheckDeclared(const std::filesystem::path& path, double neededBytes, std::uintmax_t size,
+                   const std::string& what) {
+    if (neededBytes > static_cast<double>(size))
+        Refuse(path, "declares " + what + ", more than its " + std::to_string(size) +
+                         " bytes can hold (a truncated or corrupt file)");
+}
+
+// OFF: "[ST][C][N][4][n]OFF" then, after comments, "vertices faces edges".
+void CheckOff(const std::filesystem::path& path, const std::string& head, std::uintmax_t size) {
+    std::istringstream lines(head);
+    std::string line;
+    std::getline(lines, line);  // the keyword line (Assimp also allows counts on it)
+    std::istringstream keywordLine(line);
+    std::string keyword;
+    keywordLine >> keyword;
+    double vertices = 0, faces = 0;
+    if (!(keywordLine >> vertices >> faces)) {
+        while (std::getline(lines, line)) {
+            const auto first = line.find_first_not_of(" \t\r");
+            if (first == std::string::npos || line[first] == '#') continue;
+            std::istringstream counts(line);
+            if (!(counts >> vertices >> faces)) return;  // Assimp reports a malformed header
+            break;
+        }
+    }
+    if (!(vertices >= 0 && faces >= 0)) return;
+    CheckDeclared(path, vertices * kMinOffVertexBytes + faces * kMinOffFaceBytes, size,
+                  std::to_string(static_cast<unsigned long long>(vertices)) + " vertices and " +
+                      std::to_string(static_cast<unsigned long long>(faces)) + " faces");
+}
+
+// PLY: "element NAME COUNT" lines up to "end_header"; each element has at least one property.
+void CheckPly(const std::filesystem::path& path, const std::string& head, std::uintmax_t size) {
+    std::istringstream lines(head);
+    std::string line;
+    bool ascii = false;
+    double neededBytes = 0, elements = 0;
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        std::string word;
+        words >> word;
+        if (word == "format") {
+            std::string kind;
+            words >> kind;
+            ascii = kind == "ascii";
+        } else if (word == "element") {
+            std::string name;
+            double count = 0;
+            if (!(words >> name >> count) || !(count >= 0)) return;  // Assimp's error then
+            elements += count;
+            neededBytes += count;  // binary: ≥ 1 byte each; ASCII adjusted below
+        } else if (word == "end_header") {
+            break;
+        }
+    }
+    if (ascii) neededBytes = elements * kMinPlyAsciiBytes;
+    CheckDeclared(path, neededBytes, size,
+                  std::to_string(static_cast<unsigned long long>(elements)) + " elements");
+}
+
+// Binary STL: an 80-byte header, a 32-bit facet count, 50 bytes a facet. An ASCII STL ("solid"
+// followed by text) declares nothing.
+void CheckStl(const std::filesystem::path& path, const std::string& head, std::uintmax_t size) {
+    const bool ascii =
+        head.rfind("solid", 0) == 0 &&
+        std::none_of(head.begin(), head.begin() + std::min<std::size_t>(head.size(), 512),
+                     [](char c) { return c == '\0'; });
+    if (ascii || head.size() < kStlHeaderBytes) return;  // Assimp reports a short file
+    std::uint32_t facets = 0;
+    std::memcpy(&facets, head.data() + 80, sizeof facets);  // little-endian on x86-64
+    CheckDeclared(path, kStlHeaderBytes + kStlFacetBytes * facets, size,
+                  std::to_string(facets) + " facets");
+}
+
+std::string LowerExtension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+}  // namespace
+
+void CheckMeshFile(const std::filesystem::path& path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) Refuse(path, "mesh file not found");
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (error) Refuse(path, "cannot read the mesh file's size");
+    if (size > kMaxMeshFileBytes)
+        Refuse(path, "is " + std::to_string(size) + " bytes, larger than the " +
+                         std::to_string(kMaxMeshFileBytes >> 20) + " MiB a mesh file may be");
+    const std::string extension = LowerExtension(path);
+    if (extension != ".obj" && extension != ".off" && extension != ".ply" && extension != ".stl")
+        Refuse(path, "format '" + extension +
+                         "' is not read (mesh formats: " + std::string(kMeshFormats) + ")");
+    const std::string head = ReadHead(path);
+    if (extension == ".off") CheckOff(path, head, size);
+    if (extension == ".ply") CheckPly(path, head, size);
+    if (extension == ".stl") CheckStl(path, head, size);
+}
+
+}  // namespace lexel::spatial

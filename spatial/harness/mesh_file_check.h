@@ -1,0 +1,26 @@
+// Limits on the model files a 3D case may name, checked before Assimp reads a byte: Assimp
+// allocates what a file's header declares (its own test file invalid/OutOfMemory.off declares
+// 3.5e11 vertices in 309 bytes and takes gigabytes in seconds), so the declared counts are held
+// against what the file's size can hold.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace lexel::spatial {
+
+// The largest mesh file read (bytes). The meshes lexel ships or names are at most a few MiB;
+// Assimp's memory grows with the file (about 10-30 bytes per byte of OBJ), so this bounds it.
+inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{64} << 20;
+
+// The formats read: those whose declared counts are checked here (OFF, PLY, binary STL) or that
+// declare none (OBJ, ASCII STL), so memory stays proportional to the file.
+inline constexpr const char* kMeshFormats = "obj, off, ply, stl";
+
+// Throws DomainError (Subject::kGeometry) naming the file and the reason when it is not a regular
+// file, is larger than kMaxMeshFileBytes, has an extension outside kMeshFormats, or declares
+// more vertices, faces or elements than its size can hold.
+void CheckMeshFile(const std::filesystem::path& path);
+
+}  // namespace lexel::spatial
