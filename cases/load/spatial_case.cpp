@@ -1,15 +1,22 @@
 // 3D case files (see spatial_case.h and cases/README.md).
 #include "lexel/cases/load/spatial_case.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <utility>
 
 #include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/json_reader.h"
+#include "lexel/cases/load/memory_budget.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/generator.h"
+#include "lexel/spatial/harness/memory_estimate.h"
 #include "lexel/spatial/harness/mesh_loader.h"
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/primitives.h"
 #include "lexel/spatial/light_space.h"
 
@@ -149,6 +156,41 @@ spatial::PartitionOptions ReadPartitions(const JsonField& field) {
     return options;
 }
 
+// The evaluation's memory for the scene's sizes so far (every method, images kept, the report's
+// truth map: the most a run or sweep holds per light) against lexel's budget; the error names the
+// field whose size needs the most.
+void CheckEvaluationMemory(const spatial::Scene& scene) {
+    spatial::EvaluationSizes sizes;
+    sizes.frame = scene.camera.resolution;
+    sizes.readback = scene.readback;
+    sizes.shadowMap = scene.shadowMap;
+    sizes.triangles = scene.geometry.triangles.size();
+    sizes.methods = static_cast<int>(spatial::SpatialMethodNames().size());
+    sizes.truthMapSize = spatial::EvaluationOptions{}.truthMapSize;
+    const double bytes = spatial::EstimateEvaluationMemory(sizes).Total(1);
+    auto size = [](const spatial::Resolution& r) {
+        return std::to_string(r.width) + "x" + std::to_string(r.height);
+    };
+    std::string what = "camera " + size(sizes.frame) + ", readback " + size(sizes.readback) +
+                       ", shadow map " + size(sizes.shadowMap);
+    if (sizes.triangles > 0) what += ", " + std::to_string(sizes.triangles) + " triangles";
+    const std::string excess = MemoryBudgetExcess(bytes, what);
+    if (excess.empty()) return;
+    // The field to change: the one whose share of the estimate is largest.
+    const auto share = [&](spatial::EvaluationSizes only) {
+        only.methods = sizes.methods;
+        only.truthMapSize = 0;
+        return spatial::EstimateEvaluationMemory(only).Total(1);
+    };
+    const std::pair<double, const char*> shares[] = {
+        {share({sizes.frame, {}, {}, 0}), "/camera"},
+        {share({{}, sizes.readback, {}, 0}), "/readback"},
+        {share({{}, {}, sizes.shadowMap, 0}), "/shadow_map"},
+        {share({{}, {}, {}, sizes.triangles}), "/geometry"}};
+    const char* field = std::max_element(std::begin(shares), std::end(shares))->second;
+    throw InputError(std::string(field) + ": the case " + excess);
+}
+
 }  // namespace
 
 spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
@@ -195,6 +237,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
 
     if (root.Has("shadow_map")) scene.shadowMap = ReadResolution(root["shadow_map"]);
     if (root.Has("readback")) scene.readback = ReadResolution(root["readback"]);
+    CheckEvaluationMemory(scene);
 
     if (root.Has("geometry")) {
         for (const JsonField& entry : root["geometry"].Array()) {
@@ -232,6 +275,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
                 }
             }
             scene.geometry.Append(spatial::TransformMesh(osMesh, transform));
+            CheckEvaluationMemory(scene);  // many entries of one large mesh add up
         }
     }
 
@@ -246,6 +290,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
             generator["seed"].Integer(0, std::numeric_limits<long long>::max()));
         glm::dvec4 floor;
         scene.geometry.Append(spatial::FloorObjects(count, seed, &floor));
+        CheckEvaluationMemory(scene);
         // A plane primitive, when there is one, is the floor the case author chose.
         if (!scene.floorPlane) scene.floorPlane = floor;
     }

@@ -1,16 +1,20 @@
 #include "lexel/cases/run/sweep.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
+#include "lexel/cases/load/memory_budget.h"
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/generator.h"
+#include "lexel/spatial/harness/memory_estimate.h"
 
 namespace lexel::cases {
 
@@ -34,6 +38,26 @@ std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights,
     return spatial::SweepLights(sweep, scene.geometry.ComputeBounds().Center());
 }
 
+namespace {
+
+// Lights evaluated at once: every hardware thread, unless their buffers together would exceed the
+// memory budget (memory_budget.h); at least one (the loader refused cases where one does not fit).
+int LightsInFlight(const spatial::Scene& scene, std::size_t methods) {
+    spatial::EvaluationSizes sizes;
+    sizes.frame = scene.camera.resolution;
+    sizes.readback = scene.readback;
+    sizes.shadowMap = scene.shadowMap;
+    sizes.triangles = scene.geometry.triangles.size();
+    sizes.methods = static_cast<int>(methods);
+    sizes.keepBuffers = false;
+    const spatial::EvaluationMemory memory = spatial::EstimateEvaluationMemory(sizes);
+    const double fit = std::floor((kMemoryBudgetBytes - memory.shared) / memory.perLight);
+    const int threads = tbb::this_task_arena::max_concurrency();
+    return static_cast<int>(std::clamp(fit, 1.0, static_cast<double>(threads)));
+}
+
+}  // namespace
+
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
                      const std::vector<Light>& lights, const std::function<void()>& onLightDone,
                      BackendKind backendKind) {
@@ -48,30 +72,34 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     r.receiverPixels.assign(lights.size(), 0);
     spatial::EvaluationOptions options;
     options.methods = methods;
-    tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
-        spatial::LightOutcome outcome;
-        try {
-            outcome = evaluator->Evaluate(lights[l], options);
-        } catch (const DomainError& e) {
-            const std::string light = "light " + std::to_string(l) + " " + LightLabel(lights[l]);
-            throw InputError(SpatialErrorField(e, light) + ": " + e.what());
-        }
-        for (std::size_t m = 0; m < methods.size(); ++m) {
-            const spatial::MethodOutcome& o = outcome.methods[m];
-            r.cells[l][m] = {o.misclassified,
-                             o.h,
-                             o.ms,
-                             o.hGrazing,
-                             o.winner,
-                             o.footprintMean,
-                             o.footprintMax,
-                             o.uncovered,
-                             std::max(1, static_cast<int>(o.cascades.size())),
-                             o.emptyPartitions,
-                             o.storageFactor};
-        }
-        r.receiverPixels[l] = outcome.receiverPixels;
-        if (onLightDone) onLightDone();
+    tbb::task_arena arena(LightsInFlight(scene, methods.size()));
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
+            spatial::LightOutcome outcome;
+            try {
+                outcome = evaluator->Evaluate(lights[l], options);
+            } catch (const DomainError& e) {
+                const std::string light =
+                    "light " + std::to_string(l) + " " + LightLabel(lights[l]);
+                throw InputError(SpatialErrorField(e, light) + ": " + e.what());
+            }
+            for (std::size_t m = 0; m < methods.size(); ++m) {
+                const spatial::MethodOutcome& o = outcome.methods[m];
+                r.cells[l][m] = {o.misclassified,
+                                 o.h,
+                                 o.ms,
+                                 o.hGrazing,
+                                 o.winner,
+                                 o.footprintMean,
+                                 o.footprintMax,
+                                 o.uncovered,
+                                 std::max(1, static_cast<int>(o.cascades.size())),
+                                 o.emptyPartitions,
+                                 o.storageFactor};
+            }
+            r.receiverPixels[l] = outcome.receiverPixels;
+            if (onLightDone) onLightDone();
+        });
     });
     r.seconds = timer.Ms() / 1000.0;
     return r;

@@ -503,3 +503,26 @@ expect_run(2 "^$" "^lexel: error: /dev/zero: not a regular file \\(a case is a J
 if(EXISTS "${WORK}/bad_dev")
     message(FATAL_ERROR "a refused /dev/zero left ${WORK}/bad_dev behind")
 endif()
+
+# Issue 16: a number that overflows a double names its line, column and JSON pointer.
+file(WRITE "${WORK}/overflow/overflow.json" "{\"name\": \"x\",\n \"camera\": {\"position\": [0, 1e400]}}")
+expect_run(2 "^$" "^lexel: error: [^\n]*overflow.json:2:29: /camera/position/1: number 1e400 does not fit a double \\(numbers must be finite\\)\n$"
+           run "${WORK}/overflow/overflow.json" --out "${WORK}/overflow/out")
+# A 3D case whose sizes need more than the 8 GiB budget is refused before anything is allocated,
+# naming the field whose size needs the most and the estimate.
+string(REPLACE "\"width\": 160, \"height\": 120" "\"width\": 16384, \"height\": 16384" text "${smallText}")
+file(WRITE "${WORK}/memory/camera.json" "${text}")
+expect_run(2 "^$" "^lexel: error: [^\n]*camera.json: /camera: the case needs about [0-9.]+ GiB \\(camera 16384x16384, readback 64x64, shadow map 128x128\\), above lexel's memory budget of 8 GiB\n$"
+           run "${WORK}/memory/camera.json" --out "${WORK}/memory/out")
+string(REPLACE "\"shadow_map\": {\"width\": 128, \"height\": 128}" "\"shadow_map\": {\"width\": 16384, \"height\": 16384}" text "${smallText}")
+file(WRITE "${WORK}/memory/map.json" "${text}")
+expect_run(2 "^$" "^lexel: error: [^\n]*map.json: /shadow_map: the case needs about [0-9.]+ GiB "
+           sweep "${WORK}/memory/map.json" --out "${WORK}/memory/out")
+# Assimp's own invalid/OutOfMemory.off (3.5e11 vertices declared in 309 bytes) as a mesh.
+string(REPLACE "{\"primitive\": \"box\"" "{\"mesh\": \"/usr/share/assimp/models/invalid/OutOfMemory.off\"" text "${smallText}")
+file(WRITE "${WORK}/memory/oom_mesh.json" "${text}")
+expect_run(2 "^$" "^lexel: error: [^\n]*oom_mesh.json: /geometry/1/mesh: /usr/share/assimp/models/invalid/OutOfMemory.off: declares 353535235358 vertices and 6 faces, more than its 309 bytes can hold \\(a truncated or corrupt file\\)\n$"
+           run "${WORK}/memory/oom_mesh.json" --out "${WORK}/memory/out")
+if(EXISTS "${WORK}/overflow/out" OR EXISTS "${WORK}/memory/out")
+    message(FATAL_ERROR "a refused case left an output directory behind")
+endif()
