@@ -198,7 +198,8 @@ void OutputSet::VerifyAndSync() const {
         if (const auto text = textSizes_.find(name); text != textSizes_.end()) {
             std::error_code error;
             const std::uintmax_t size = fs::file_size(path, error);
-            if (error || size != text->second)
+            if (error) throw std::runtime_error(shown + ": " + error.message());
+            if (size != text->second)
                 throw std::runtime_error(shown + ": " + std::to_string(size) + " bytes on disk, " +
                                          std::to_string(text->second) + " written");
         } else if (path.extension() == ".png") {

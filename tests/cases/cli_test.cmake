@@ -203,6 +203,19 @@ file(READ "${WORK}/full/old/lowres_single_plane.md" kept)
 if(NOT written STREQUAL "${WORK}/full/old;${WORK}/full/old/lowres_single_plane.md" OR NOT kept STREQUAL "old")
     message(FATAL_ERROR "a run that failed to write left: ${written}")
 endif()
+# 3D images are written by OpenImageIO, which reports no error for a PNG cut short (it returned
+# success for a 2048-byte errors.png); the check before publishing finds it.
+execute_process(COMMAND sh -c "ulimit -f 4; trap '' XFSZ; exec \"$0\" \"$@\""
+                        "${LEXEL}" run "${DATA}/spatial_small.json" --method focused --no-map-truth
+                        --out "${WORK}/full/images"
+                RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT code EQUAL 1 OR NOT err MATCHES "^lexel: [a-z]+: [^\n]*full/images/spatial_small_light0_focused_[a-z]+\\.png: [^\n]+\n$")
+    message(FATAL_ERROR "run --out into a full disk: exit ${code}, stderr '${err}'")
+endif()
+file(GLOB_RECURSE written LIST_DIRECTORIES true "${WORK}/full/*")
+if(NOT written STREQUAL "${WORK}/full/old;${WORK}/full/old/lowres_single_plane.md")
+    message(FATAL_ERROR "a 3D run that failed to write left: ${written}")
+endif()
 # Eight runs at once into one --out, existing or not: none fails (before, all wrote one
 # <file>.partial and 5 of 20 runs failed), and only the two files remain.
 file(MAKE_DIRECTORY "${WORK}/together/existing")
