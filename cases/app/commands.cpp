@@ -491,8 +491,7 @@ std::vector<ThesisTable> SelectThesisTables(const std::vector<ThesisTable>& tabl
 }
 
 // fit-thesis writes <case>.json (the family, named by the case file's stem) and parameters.json
-// into --out: none of them may replace one of
-// the thesis case files it reads (e.g. --out cases/flatland).
+// into --out: none of them may replace a thesis case file it reads (e.g. --out cases/flatland).
 void RefuseOverwritingThesisCases(const fs::path& outDir, const fs::path& casesDir,
                                   const std::vector<ThesisTable>& selected) {
     std::vector<std::string> inputs;
