@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "lexel/cases/app/output_guard.h"
@@ -135,6 +136,8 @@ int RunSpatial(const RunFlags& flags) {
             return file == name + ".json" || file == name + ".csv" ||
                    (file.starts_with(name + "_light") && file.ends_with(".png"));
         });
+    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    if (!flags.outDir.empty()) out.emplace(flags.outDir);
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
     if (flags.format == "json")
         std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
@@ -142,13 +145,12 @@ int RunSpatial(const RunFlags& flags) {
         std::cout << SpatialRunCsv(run);
     else
         std::cout << SpatialRunText(scene, run);
-    if (flags.outDir.empty()) return 0;
-    const fs::path dir(flags.outDir);
-    fs::create_directories(dir);
-    const int images = WriteSpatialImages(dir, scene, run);
-    WriteFileAtomically((dir / (scene.name + ".json")).string(),
-                        SpatialRunJson(scene, run).dump(2) + "\n");
-    WriteFileAtomically((dir / (scene.name + ".csv")).string(), SpatialRunCsv(run));
+    if (!out) return 0;
+    const int images =
+        out->Writing([&] { return WriteSpatialImages(out->StagingDir(), scene, run); });
+    out->WriteText(scene.name + ".json", SpatialRunJson(scene, run).dump(2) + "\n");
+    out->WriteText(scene.name + ".csv", SpatialRunCsv(run));
+    out->Commit();
     std::cerr << "lexel: wrote " << images << " images and " << scene.name << ".json/.csv to "
               << flags.outDir << '\n';
     return 0;
@@ -181,6 +183,8 @@ int RunFlatland(const RunFlags& flags) {
     std::vector<flatland::FlatScene> scenes;
     for (const auto& path : flags.cases) scenes.push_back(LoadFlatScene(path));
     if (!flags.outDir.empty()) RefuseFlatlandOutputClashes(flags, scenes);
+    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    if (!flags.outDir.empty()) out.emplace(flags.outDir);
     std::vector<flatland::CaseReport> reports;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         try {
@@ -196,14 +200,13 @@ int RunFlatland(const RunFlags& flags) {
     else
         for (std::size_t i = 0; i < reports.size(); ++i)
             std::cout << (i ? "\n" : "") << CaseTable(reports[i]);
-    if (flags.outDir.empty()) return 0;
-    fs::create_directories(flags.outDir);
+    if (!out) return 0;
     for (const auto& r : reports) {
-        const std::string base = (fs::path(flags.outDir) / r.caseName).string();
-        WriteFileAtomically(base + ".json", CaseReportJson(r).dump(2) + "\n");
-        WriteFileAtomically(base + ".csv", RunCsv(std::span(&r, 1)));
-        WriteFileAtomically(base + ".md", CaseMarkdown(r));
+        out->WriteText(r.caseName + ".json", CaseReportJson(r).dump(2) + "\n");
+        out->WriteText(r.caseName + ".csv", RunCsv(std::span(&r, 1)));
+        out->WriteText(r.caseName + ".md", CaseMarkdown(r));
     }
+    out->Commit();
     std::cerr << "lexel: wrote " << reports.size() * 3 << " files to " << flags.outDir << '\n';
     return 0;
 }
@@ -252,6 +255,8 @@ int SweepCommand(const SweepFlags& flags) {
         });
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
+    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    if (!flags.outDir.empty()) out.emplace(flags.outDir);
     std::optional<spatial::Light::Type> type;
     if (!flags.lightType.empty())
         type = flags.lightType == "point" ? spatial::Light::Type::kPoint
@@ -280,22 +285,24 @@ int SweepCommand(const SweepFlags& flags) {
     else
         std::cout << SweepTable(r, report) << "sweep: " << Fixed(r.seconds, 1) << " s for "
                   << r.lights.size() << " lights\n";
-    if (flags.outDir.empty()) return 0;
-    const fs::path dir(flags.outDir);
-    fs::create_directories(dir);
-    WriteFileAtomically((dir / "table1.md").string(), SweepMarkdown(r, report));
-    WriteFileAtomically((dir / "table1.csv").string(), SweepCsv(r, report));
-    WriteFileAtomically((dir / "sweep.json").string(), SweepJson(r).dump(2) + "\n");
-    WriteFileAtomically((dir / "lights.csv").string(), SweepLightsCsv(r));
+    if (!out) return 0;
+    out->WriteText("table1.md", SweepMarkdown(r, report));
+    out->WriteText("table1.csv", SweepCsv(r, report));
+    out->WriteText("sweep.json", SweepJson(r).dump(2) + "\n");
+    out->WriteText("lights.csv", SweepLightsCsv(r));
     std::string also;
     if (study) {
-        WriteFileAtomically((dir / "cascades.csv").string(), CascadeStudyCsv(*study));
-        WriteCascadeStudyPlot((dir / "cascades.png").string(), *study, r);
-        const int images =
-            WithCaseName(casePath, [&] { return WriteFirstLightCascades(dir, scene, r, backend); });
+        out->WriteText("cascades.csv", CascadeStudyCsv(*study));
+        out->Writing(
+            [&] { WriteCascadeStudyPlot(out->Staged("cascades.png").string(), *study, r); });
+        const int images = WithCaseName(casePath, [&] {
+            return out->Writing(
+                [&] { return WriteFirstLightCascades(out->StagingDir(), scene, r, backend); });
+        });
         also = ", cascades.csv, cascades.png and " + std::to_string(images) +
                " images of the first light";
     }
+    out->Commit();
     std::cerr << "lexel: wrote table1.md, table1.csv, sweep.json, lights.csv" << also << " to "
               << flags.outDir << '\n';
     return 0;
@@ -344,6 +351,8 @@ int CaseStorageCommand(const StorageFlags& flags) {
     const fs::path casePath = flags.casePath;
     const spatial::Scene scene = LoadSpatialScene(casePath);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
+    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    if (!flags.outDir.empty()) out.emplace(flags.outDir);
     const CaseStorage result =
         WithCaseName(casePath, [&] { return RunCaseStorage(scene, methods); });
     if (flags.format == "json")
@@ -352,12 +361,11 @@ int CaseStorageCommand(const StorageFlags& flags) {
         std::cout << CaseStorageCsv(result);
     else
         std::cout << CaseStorageText(result);
-    if (flags.outDir.empty()) return 0;
-    const fs::path dir(flags.outDir);
-    fs::create_directories(dir);
+    if (!out) return 0;
     const std::string stem = "storage_" + scene.name;
-    WriteFileAtomically((dir / (stem + ".json")).string(), CaseStorageJson(result).dump(2) + "\n");
-    WriteFileAtomically((dir / (stem + ".csv")).string(), CaseStorageCsv(result));
+    out->WriteText(stem + ".json", CaseStorageJson(result).dump(2) + "\n");
+    out->WriteText(stem + ".csv", CaseStorageCsv(result));
+    out->Commit();
     std::cerr << "lexel: wrote " << stem << ".json/.csv to " << flags.outDir << '\n';
     return 0;
 }
@@ -368,19 +376,22 @@ int StorageCommand(const StorageFlags& flags) {
     if (!flags.casePath.empty()) return CaseStorageCommand(flags);
     if (!flags.methods.empty())
         throw InputError("--method: applies with --case (the measured storage factor)");
-    const StorageStudy study = RunStorageStudy(StorageFrustum(flags));
+    const spatial::ViewFrustum frustum = StorageFrustum(flags);
+    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    if (!flags.outDir.empty()) out.emplace(flags.outDir);
+    const StorageStudy study = RunStorageStudy(frustum);
     if (flags.format == "json")
         std::cout << StorageJson(study).dump(2) << '\n';
     else if (flags.format == "csv")
         std::cout << StorageCsv(study);
     else
         std::cout << StorageText(study);
-    if (flags.outDir.empty()) return 0;
-    const fs::path dir(flags.outDir);
-    fs::create_directories(dir);
-    WriteFileAtomically((dir / "storage.json").string(), StorageJson(study).dump(2) + "\n");
-    WriteFileAtomically((dir / "storage.csv").string(), StorageCsv(study));
-    const std::vector<std::string> figures = WriteStorageFigures(dir, study);
+    if (!out) return 0;
+    out->WriteText("storage.json", StorageJson(study).dump(2) + "\n");
+    out->WriteText("storage.csv", StorageCsv(study));
+    const std::vector<std::string> figures =
+        out->Writing([&] { return WriteStorageFigures(out->StagingDir(), study); });
+    out->Commit();
     std::cerr << "lexel: wrote storage.json, storage.csv and " << figures.size() << " figures to "
               << flags.outDir << '\n';
     return 0;
@@ -400,6 +411,7 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
     const std::vector<ThesisTable> tables =
         LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
     const fs::path dir = casesDir.empty() ? DataDirectory() / "flatland" : fs::path(casesDir);
+    OutputSet out(outDir);  // checked before anything is computed
     const std::vector<TableResult> results = RunThesisTables(tables, dir);
     std::vector<std::vector<LowresRow>> lowres;
     std::vector<std::pair<std::string, std::vector<LowresRow>>> studies;
@@ -412,22 +424,24 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
     const std::string summary = LowresSummary(results, lowres);
     std::cout << summary;
 
-    fs::create_directories(outDir);
     std::string markdown =
         TablesMarkdown(results) + "## Low-resolution decision (thesis 4.1.1, Fig. 4.1)\n\n";
     for (std::size_t i = 0; i < results.size(); ++i) {
         const std::string& name = results[i].scene.name;
         const std::string stem = fs::path(results[i].thesis.file).stem().string();
-        WriteCaseFigure((fs::path(outDir) / (stem + ".png")).string(), results[i].scene,
-                        results[i].report);
-        WriteLowresPlot((fs::path(outDir) / ("lowres_" + name + ".png")).string(),
-                        "Low-resolution decision: " + name, LowresCurves(lowres[i]));
+        out.Writing([&] {
+            WriteCaseFigure(out.Staged(stem + ".png").string(), results[i].scene,
+                            results[i].report);
+            WriteLowresPlot(out.Staged("lowres_" + name + ".png").string(),
+                            "Low-resolution decision: " + name, LowresCurves(lowres[i]));
+        });
         markdown += LowresMarkdown(name, lowres[i]);
     }
     markdown += summary;
-    WriteFileAtomically((fs::path(outDir) / "tables.md").string(), markdown);
-    WriteFileAtomically((fs::path(outDir) / "tables.csv").string(), TablesCsv(results));
-    WriteFileAtomically((fs::path(outDir) / "lowres.csv").string(), LowresCsv(studies));
+    out.WriteText("tables.md", markdown);
+    out.WriteText("tables.csv", TablesCsv(results));
+    out.WriteText("lowres.csv", LowresCsv(studies));
+    out.Commit();
     std::cout << "\nlexel: wrote tables.md, tables.csv, lowres.csv and " << 2 * results.size()
               << " figures to " << fs::absolute(outDir).string() << '\n';
     return 0;
@@ -440,6 +454,8 @@ int LowresCommand(const std::string& casePath, const std::string& outDir) {
             return file == "lowres_" + scene.name + ".md" ||
                    file == "lowres_" + scene.name + ".png";
         });
+    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    if (!outDir.empty()) out.emplace(outDir);
     std::vector<LowresRow> rows;
     try {
         rows = RunLowresStudy(scene);
@@ -447,12 +463,13 @@ int LowresCommand(const std::string& casePath, const std::string& outDir) {
         throw FlatlandInputError(casePath, e);
     }
     std::cout << LowresText(scene.name, rows);
-    if (outDir.empty()) return 0;
-    fs::create_directories(outDir);
-    WriteFileAtomically((fs::path(outDir) / ("lowres_" + scene.name + ".md")).string(),
-                        LowresMarkdown(scene.name, rows));
-    WriteLowresPlot((fs::path(outDir) / ("lowres_" + scene.name + ".png")).string(),
-                    "Low-resolution decision: " + scene.name, LowresCurves(rows));
+    if (!out) return 0;
+    out->WriteText("lowres_" + scene.name + ".md", LowresMarkdown(scene.name, rows));
+    out->Writing([&] {
+        WriteLowresPlot(out->Staged("lowres_" + scene.name + ".png").string(),
+                        "Low-resolution decision: " + scene.name, LowresCurves(rows));
+    });
+    out->Commit();
     return 0;
 }
 
@@ -473,22 +490,38 @@ std::vector<ThesisTable> SelectThesisTables(const std::vector<ThesisTable>& tabl
     return selected;
 }
 
+// fit-thesis writes <case>.json (the family, named by the case file's stem) and parameters.json
+// into --out: none of them may replace a thesis case file it reads (e.g. --out cases/flatland).
+void RefuseOverwritingThesisCases(const fs::path& outDir, const fs::path& casesDir,
+                                  const std::vector<ThesisTable>& selected) {
+    std::vector<std::string> inputs;
+    for (const ThesisTable& thesis : selected) inputs.push_back((casesDir / thesis.file).string());
+    RefuseOverwritingInputs(outDir, inputs, [&](const std::string& file) {
+        if (file == "parameters.json") return true;
+        for (const ThesisTable& thesis : selected)
+            if (file == fs::path(thesis.file).stem().string() + ".json") return true;
+        return false;
+    });
+}
+
 }  // namespace
 
 int FitThesisCommand(const FitThesisFlags& flags) {
     const std::vector<ThesisTable> tables =
         LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
     const std::vector<ThesisTable> selected = SelectThesisTables(tables, flags.caseName);
+    const fs::path casesDir = DataDirectory() / "flatland";
+    RefuseOverwritingThesisCases(flags.outDir, casesDir, selected);
+    OutputSet out(flags.outDir);  // checked before anything is fitted
     // Everything is fitted before anything is written.
     const std::vector<CaseFit> fits =
-        FitThesisCases(selected, DataDirectory() / "flatland", flags.options,
+        FitThesisCases(selected, casesDir, flags.options,
                        [](const CaseFit& fit) { std::cout << FitText(fit) << std::flush; });
     const fs::path outDir(flags.outDir);
     const std::vector<StoredFit> stored = MergeStoredFits(outDir / "parameters.json", fits, tables);
-    fs::create_directories(outDir);
-    for (const CaseFit& fit : fits)
-        WriteFileAtomically((outDir / (fit.family->name + ".json")).string(), FittedCaseJson(fit));
-    WriteFileAtomically((outDir / "parameters.json").string(), StoredFitsJson(stored));
+    for (const CaseFit& fit : fits) out.WriteText(fit.family->name + ".json", FittedCaseJson(fit));
+    out.WriteText("parameters.json", StoredFitsJson(stored));
+    out.Commit();
     std::cout << "lexel: wrote " << fits.size() << " fitted case file"
               << (fits.size() == 1 ? "" : "s") << " and parameters.json to "
               << fs::absolute(outDir).string() << '\n';

@@ -23,7 +23,9 @@ Image MakeImage(int width, int height, int channels, float fill = 0.0f);
 
 // The format follows the extension (.png writes 8 bits per channel, .exr floats). Throws
 // std::runtime_error with OpenImageIO's message on failure. Written through a temporary file and
-// a rename, so a failed write leaves nothing behind.
+// a rename, so a failed write leaves nothing behind. OpenImageIO's PNG writer does not report
+// every short write (a full disk left a truncated PNG and no error): files that must be complete
+// are checked after writing (cases::OutputSet does so for every --out image).
 void WriteImage(const std::string& path, const Image& image);
 Image ReadImage(const std::string& path);
 

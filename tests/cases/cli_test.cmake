@@ -166,6 +166,96 @@ if(EXISTS /dev/full)
     endif()
 endif()
 
+# ---- Issue 16: a run with --out leaves all its files or none ----
+# A successful run leaves no staging directory (nor *.partial) beside or inside --out.
+file(GLOB leftovers "${WORK}/.lexel-staging-*" "${WORK}/out/.lexel-staging-*" "${WORK}/out/*partial*")
+if(leftovers)
+    message(FATAL_ERROR "a successful run left ${leftovers}")
+endif()
+# An --out that cannot hold files is bad input, refused before anything is computed (stdout stays
+# empty) and without a file written.
+file(WRITE "${WORK}/outfile/plain" "x")
+expect_run(2 "^$" "^lexel: error: --out: [^\n]*outfile/plain: not a directory\n$"
+           lowres "${good}" --out "${WORK}/outfile/plain")
+expect_run(2 "^$" "^lexel: error: --out: [^\n]*outfile/plain/sub: cannot create the directory \\(Not a directory\\)\n$"
+           run "${good}" --out "${WORK}/outfile/plain/sub")
+expect_run(2 "^$" "^lexel: error: --out: [^\n]*outfile/plain: not a directory\n$"
+           tables --out "${WORK}/outfile/plain")
+file(GLOB_RECURSE written LIST_DIRECTORIES true "${WORK}/outfile/*")
+if(NOT written STREQUAL "${WORK}/outfile/plain")
+    message(FATAL_ERROR "a refused --out wrote: ${written}")
+endif()
+# A full disk, made real by a file size limit: write(2) fails with EFBIG where a full disk fails
+# with ENOSPC (root included). Before, lowres published a cut-off lowres_<case>.md and PNG under
+# their final names; now the run fails (exit 1, one line), publishes nothing and keeps the old
+# files of an existing --out.
+file(WRITE "${WORK}/full/old/lowres_single_plane.md" "old")
+foreach(dir new old)
+    execute_process(COMMAND sh -c "ulimit -f 1; trap '' XFSZ; exec \"$0\" \"$@\""
+                            "${LEXEL}" lowres "${good}" --out "${WORK}/full/${dir}"
+                    RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
+    if(NOT code EQUAL 1 OR NOT err MATCHES "^lexel: [a-z]+: [^\n]*full/${dir}/lowres_single_plane\\.(md|png): [^\n]+\n$")
+        message(FATAL_ERROR "lowres --out into a full disk: exit ${code}, stderr '${err}'")
+    endif()
+endforeach()
+file(GLOB_RECURSE written LIST_DIRECTORIES true "${WORK}/full/*")
+file(READ "${WORK}/full/old/lowres_single_plane.md" kept)
+if(NOT written STREQUAL "${WORK}/full/old;${WORK}/full/old/lowres_single_plane.md" OR NOT kept STREQUAL "old")
+    message(FATAL_ERROR "a run that failed to write left: ${written}")
+endif()
+# 3D images are written by OpenImageIO, which reports no error for a PNG cut short (it returned
+# success for a 2048-byte errors.png); the check before publishing finds it.
+execute_process(COMMAND sh -c "ulimit -f 4; trap '' XFSZ; exec \"$0\" \"$@\""
+                        "${LEXEL}" run "${DATA}/spatial_small.json" --method focused --no-map-truth
+                        --out "${WORK}/full/images"
+                RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT code EQUAL 1 OR NOT err MATCHES "^lexel: [a-z]+: [^\n]*full/images/spatial_small_light0_focused_[a-z]+\\.png: [^\n]+\n$")
+    message(FATAL_ERROR "run --out into a full disk: exit ${code}, stderr '${err}'")
+endif()
+file(GLOB_RECURSE written LIST_DIRECTORIES true "${WORK}/full/*")
+if(NOT written STREQUAL "${WORK}/full/old;${WORK}/full/old/lowres_single_plane.md")
+    message(FATAL_ERROR "a 3D run that failed to write left: ${written}")
+endif()
+# Eight runs at once into one --out, existing or not: none fails (before, all wrote one
+# <file>.partial and 5 of 20 runs failed), and only the two files remain.
+file(MAKE_DIRECTORY "${WORK}/together/existing")
+foreach(dir existing absent)
+    execute_process(COMMAND sh -c "pids=''; for i in 1 2 3 4 5 6 7 8; do \"$0\" lowres \"$1\" --out \"$2\" > /dev/null & pids=\"$pids $!\"; done; failed=0; for p in $pids; do wait $p || failed=$((failed + 1)); done; echo $failed"
+                            "${LEXEL}" "${good}" "${WORK}/together/${dir}"
+                    OUTPUT_VARIABLE failed ERROR_VARIABLE err)
+    file(GLOB_RECURSE written LIST_DIRECTORIES true RELATIVE "${WORK}/together/${dir}" "${WORK}/together/${dir}/*")
+    if(NOT failed STREQUAL "0\n" OR NOT err STREQUAL "" OR NOT written STREQUAL "lowres_single_plane.md;lowres_single_plane.png")
+        message(FATAL_ERROR "8 concurrent runs into ${dir}: ${failed} failed: ${err}; left ${written}")
+    endif()
+endforeach()
+file(GLOB leftovers "${WORK}/together/.lexel-staging-*")
+if(leftovers)
+    message(FATAL_ERROR "concurrent runs left ${leftovers}")
+endif()
+
+# ---- Issue 16: fit-thesis never writes over the thesis cases it reads ----
+# An installed layout in WORK (<prefix>/bin/lexel reads <prefix>/share/lexel/cases), so that the
+# test cannot touch the source tree's cases/flatland even if the guard failed.
+set(prefix "${WORK}/installed")
+file(COPY "${LEXEL}" DESTINATION "${prefix}/bin")
+file(COPY "${CASES}/published" "${CASES}/flatland" DESTINATION "${prefix}/share/lexel/cases")
+get_filename_component(exeName "${LEXEL}" NAME)
+set(sourceLexel "${LEXEL}")
+set(LEXEL "${prefix}/bin/${exeName}")
+set(shipped "${prefix}/share/lexel/cases/flatland")
+file(GLOB_RECURSE casesBefore LIST_DIRECTORIES true "${shipped}/*")
+file(SHA256 "${shipped}/single_plane.json" shaBefore)
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*flatland/single_plane.json would overwrite the case file [^\n]*flatland/single_plane.json\n$"
+           fit-thesis --case single_plane --samples 0 --starts 0 --out "${shipped}")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*flatland/[a-z_]+.json would overwrite the case file [^\n]*flatland/[a-z_]+.json\n$"
+           fit-thesis --samples 0 --starts 0 --out "${shipped}/")
+file(GLOB_RECURSE casesAfter LIST_DIRECTORIES true "${shipped}/*")
+file(SHA256 "${shipped}/single_plane.json" shaAfter)
+if(NOT casesAfter STREQUAL casesBefore OR NOT shaAfter STREQUAL shaBefore)
+    message(FATAL_ERROR "a refused fit-thesis changed ${shipped}: ${casesAfter}")
+endif()
+set(LEXEL "${sourceLexel}")
+
 # ---- 3D cases: lexel run and lexel sweep on a small floor-and-box scene ----
 set(small "${DATA}/spatial_small.json")
 set(methods3d optimal optimal-refined focused-tight lispsm-tight psm-tight plane-optimal normal
