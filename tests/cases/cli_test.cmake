@@ -194,7 +194,7 @@ foreach(dir new old)
     execute_process(COMMAND sh -c "ulimit -f 1; trap '' XFSZ; exec \"$0\" \"$@\""
                             "${LEXEL}" lowres "${good}" --out "${WORK}/full/${dir}"
                     RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
-    if(NOT code EQUAL 1 OR NOT err MATCHES "^lexel: [a-z]+: [^\n]*full/${dir}/lowres_single_plane\\.(md|png): [^\n]+\n$")
+    if(NOT code EQUAL 1 OR NOT err MATCHES "^lexel: error: [^\n]*full/${dir}/lowres_single_plane\\.(md|png): [^\n]+\n$")
         message(FATAL_ERROR "lowres --out into a full disk: exit ${code}, stderr '${err}'")
     endif()
 endforeach()
@@ -209,7 +209,7 @@ execute_process(COMMAND sh -c "ulimit -f 4; trap '' XFSZ; exec \"$0\" \"$@\""
                         "${LEXEL}" run "${DATA}/spatial_small.json" --method focused --no-map-truth
                         --out "${WORK}/full/images"
                 RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
-if(NOT code EQUAL 1 OR NOT err MATCHES "^lexel: [a-z]+: [^\n]*full/images/spatial_small_light0_focused_[a-z]+\\.png: [^\n]+\n$")
+if(NOT code EQUAL 1 OR NOT err MATCHES "^lexel: error: [^\n]*full/images/spatial_small_light0_focused_[a-z]+\\.png: [^\n]+\n$")
     message(FATAL_ERROR "run --out into a full disk: exit ${code}, stderr '${err}'")
 endif()
 file(GLOB_RECURSE written LIST_DIRECTORIES true "${WORK}/full/*")
