@@ -22,6 +22,9 @@ constexpr double kFramePerLightBytes = 33, kShadeBytes = 1;
 // Per shadow-map texel: the rasterizer's scratch (8) once, per kept map its linear light depth
 // (float, 4).
 constexpr double kTexelScratchBytes = 8, kTexelBytes = 4;
+// Kept buffers become images one at a time (images.h, RGB float: 12 bytes a pixel): the frame
+// and its error map per frame pixel, the shadow map's picture per texel.
+constexpr double kImageBytes = 12;
 // Per triangle: the mesh (3 vertices 36, indices 12) and Embree's BVH (about 100 in its
 // high-quality build) with world-space copies for the CPU rasterizer (72).
 constexpr double kTriangleBytes = 220;
@@ -40,9 +43,11 @@ EvaluationMemory EstimateEvaluationMemory(const EvaluationSizes& s) {
     EvaluationMemory m;
     m.shared = kHeadroom * (kFrameBytes * frame + kReadbackBytes * readback +
                             kTriangleBytes * static_cast<double>(s.triangles));
-    m.perLight =
-        kHeadroom * (kReadbackPerLightBytes * readback + kFramePerLightBytes * frame * keptMethods +
-                     kTexelBytes * (texels * (keptMethods + 1) + truthTexels));
+    m.perLight = kHeadroom * (kReadbackPerLightBytes * readback +
+                              (kFramePerLightBytes + kShadeBytes * keptMethods) * frame +
+                              (kTexelScratchBytes + kTexelBytes * keptMethods) * texels +
+                              (kTexelScratchBytes + kTexelBytes) * truthTexels);
+    if (s.keepBuffers) m.perLight += kHeadroom * kImageBytes * (2 * frame + texels);
     return m;
 }
 

@@ -43,7 +43,7 @@ TEST(ReportNumbers, LowresCsvLeavesAnUndecidableResolutionEmpty) {
 TEST(ReportNumbers, CsvQuotesNamesWithCommasAndQuotes) {
     EXPECT_EQ(CsvText("plain name"), "plain name");
     EXPECT_EQ(CsvText("a,b"), "\"a,b\"");
-    EXPECT_EQ(CsvText("say \"hi\""), "\"say \"\"hi\"\"\"\"");
+    EXPECT_EQ(CsvText("say \"hi\""), "\"say \"\"hi\"\"\"");
     EXPECT_EQ(CsvText(""), "");
     LowresRow row;
     row.decisionPixels = 4;

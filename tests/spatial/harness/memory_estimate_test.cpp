@@ -95,8 +95,11 @@ TEST(MemoryEstimate, BoundsTheMeasuredPeakOfOneLight) {
         peak = StatusBytes("VmHWM");
     }
     const double used = peak - before;
+    const EvaluationMemory parts = EstimateEvaluationMemory(sizes);
     std::cout << "measured peak " << used / (1 << 20) << " MiB, estimate " << estimate / (1 << 20)
-              << " MiB\n";
+              << " MiB (shared " << parts.shared / (1 << 20) << ", per light "
+              << parts.perLight / (1 << 20) << "; " << sizes.triangles << " triangles, "
+              << sizes.methods << " methods)\n";
     EXPECT_LE(used, estimate);
     EXPECT_GE(used, estimate / 4) << "the estimate is too loose to be useful";
 }
