@@ -55,8 +55,11 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
     camera.ExpectObject({"position", "direction", "fov_deg", "pixels"}, {"near", "far"});
     scene.camera.wsPosition = camera["position"].Vec2();
     const Eigen::Vector2d direction = camera["direction"].Vec2();
-    if (!(direction.norm() > 0.0)) camera["direction"].Fail("must be a non-zero vector");
-    scene.camera.wsDirection = direction.normalized();
+    // Divided by its largest |component| first, so that [1e200, 0] neither overflows nor
+    // underflows when normalized.
+    const double largest = direction.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) camera["direction"].Fail("must be a non-zero vector");
+    scene.camera.wsDirection = (direction / largest).normalized();
     scene.camera.fovDeg = camera["fov_deg"].NumberIn(0.0, 180.0, true, true);
     scene.camera.pixels = static_cast<int>(camera["pixels"].Integer(1, kMaxPixels));
     if (camera.Has("near")) scene.camera.near = camera["near"].Positive();
