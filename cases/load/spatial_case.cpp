@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <vector>
 
 #include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/flatland_case.h"
@@ -41,9 +43,11 @@ glm::dvec3 CheckCoordinates(const JsonField& field, const glm::dvec3& v) {
     return v;
 }
 
-// v / its largest |component|: a direction whose length neither overflows nor underflows when
-// normalized ([1e200, 0, 0] would otherwise normalize to 0); zero stays zero.
+// v / its largest |component| when v's squared length overflows or underflows (normalizing
+// [1e200, 0, 0] directly gives 0), else v as given; zero stays zero.
 glm::dvec3 ScaledDirection(const glm::dvec3& v) {
+    const double squared = glm::dot(v, v);
+    if (std::isfinite(squared) && squared >= std::numeric_limits<double>::min()) return v;
     const double largest = LargestMagnitude(v);
     return largest > 0.0 && std::isfinite(largest) ? v / largest : v;
 }
@@ -202,16 +206,25 @@ spatial::PartitionOptions ReadPartitions(const JsonField& field) {
     return options;
 }
 
-// Refuses a camera shut inside closed geometry (containment.h). Point lights inside the
-// geometry's bounds are refused and directional lights come from outside them, so such a camera
-// sees only the inside of walls that no light reaches: every counted pixel would be shadowed.
-void CheckCameraOutside(const spatial::TriangleMesh& wsGeometry, const spatial::Camera& camera,
+// Refuses a camera shut inside one closed geometry entry (containment.h), each entry tested on
+// its own: `entryEnd[k]` ends entry k's triangles in wsGeometry (the generator's objects, which
+// stand on their own floor, are not tested). Point lights inside the geometry's bounds are refused
+// and directional lights come from outside them, so such a camera sees only the inside of walls
+// that no light reaches: every counted pixel would be shadowed.
+void CheckCameraOutside(const spatial::TriangleMesh& wsGeometry,
+                        const std::vector<std::size_t>& entryEnd, const spatial::Camera& camera,
                         const JsonField& field) {
-    if (spatial::InsideClosedGeometry(wsGeometry, camera.position))
+    const std::span<const glm::uvec3> all(wsGeometry.triangles);
+    std::size_t begin = 0;
+    for (std::size_t k = 0; k < entryEnd.size(); ++k) {
+        const auto triangles = all.subspan(begin, entryEnd[k] - begin);
+        begin = entryEnd[k];
+        if (!spatial::InsideClosedGeometry(wsGeometry, triangles, camera.position)) continue;
         field["position"].Fail("the camera " + FormatVec(camera.position) +
-                               " is inside closed geometry (rays from it cross the surface an odd "
-                               "number of times in every direction tried); no light outside can "
-                               "reach what it sees");
+                               " is inside closed geometry (/geometry/" + std::to_string(k) +
+                               "; rays from it cross that surface an odd number of times in "
+                               "every direction tried); no light outside can reach what it sees");
+    }
 }
 
 }  // namespace
@@ -262,6 +275,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     if (root.Has("shadow_map")) scene.shadowMap = ReadResolution(root["shadow_map"]);
     if (root.Has("readback")) scene.readback = ReadResolution(root["readback"]);
 
+    std::vector<std::size_t> entryEnd;  // per geometry entry: the end of its triangles
     if (root.Has("geometry")) {
         for (const JsonField& entry : root["geometry"].Array()) {
             entry.ExpectObject({}, {"mesh", "primitive", "transform"});
@@ -300,6 +314,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
             spatial::TriangleMesh wsMesh = spatial::TransformMesh(osMesh, transform);
             CheckEntryExtent(entry, osMesh, transform, wsMesh);
             scene.geometry.Append(wsMesh);
+            entryEnd.push_back(scene.geometry.triangles.size());
         }
     }
 
@@ -333,11 +348,11 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     if (wsBounds.Empty())
         throw InputError(std::string(root.Has("geometry") ? "/geometry" : "/") +
                          ": the scene has no geometry (give geometry entries or a generator)");
-    CheckCameraOutside(scene.geometry, scene.camera, root["camera"]);
+    CheckCameraOutside(scene.geometry, entryEnd, scene.camera, root["camera"]);
     if (root.Has("camera_path")) {
         const auto poses = root["camera_path"].Array(1);
         for (std::size_t k = 0; k < poses.size(); ++k)
-            CheckCameraOutside(scene.geometry, scene.cameraPath[k], poses[k]);
+            CheckCameraOutside(scene.geometry, entryEnd, scene.cameraPath[k], poses[k]);
     }
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {
         const spatial::Light& light = scene.lights[k];

@@ -29,10 +29,10 @@ double CrossingT(const glm::dvec3& origin, const glm::dvec3& direction, const gl
 
 }  // namespace
 
-RayCrossings CastThrough(const TriangleMesh& wsMesh, const glm::dvec3& wsOrigin,
-                         const glm::dvec3& wsDirection) {
+RayCrossings CastThrough(const TriangleMesh& wsMesh, std::span<const glm::uvec3> triangles,
+                         const glm::dvec3& wsOrigin, const glm::dvec3& wsDirection) {
     RayCrossings out;
-    for (const glm::uvec3& tri : wsMesh.triangles) {
+    for (const glm::uvec3& tri : triangles) {
         double det = 0.0;
         const double t = CrossingT(wsOrigin, wsDirection, glm::dvec3(wsMesh.positions[tri.x]),
                                    glm::dvec3(wsMesh.positions[tri.y]),
@@ -47,7 +47,8 @@ RayCrossings CastThrough(const TriangleMesh& wsMesh, const glm::dvec3& wsOrigin,
     return out;
 }
 
-bool InsideClosedGeometry(const TriangleMesh& wsMesh, const glm::dvec3& wsPoint) {
+bool InsideClosedGeometry(const TriangleMesh& wsMesh, std::span<const glm::uvec3> triangles,
+                          const glm::dvec3& wsPoint) {
     // Unit directions with irrational-looking components: no axis, no primitive's edge direction.
     static const std::array<glm::dvec3, 3> kDirections = {
         glm::normalize(glm::dvec3(0.5377, 0.8324, 0.1347)),
@@ -55,7 +56,7 @@ bool InsideClosedGeometry(const TriangleMesh& wsMesh, const glm::dvec3& wsPoint)
         glm::normalize(glm::dvec3(0.2113, -0.5921, -0.7775)),
     };
     for (const glm::dvec3& wsDirection : kDirections) {
-        const RayCrossings crossings = CastThrough(wsMesh, wsPoint, wsDirection);
+        const RayCrossings crossings = CastThrough(wsMesh, triangles, wsPoint, wsDirection);
         if (crossings.count % 2 == 0 || !crossings.nearestIsBackFace) return false;
     }
     return true;

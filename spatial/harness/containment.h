@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 #include <limits>
+#include <span>
 
 #include "lexel/spatial/harness/scene.h"
 
@@ -20,15 +21,19 @@ struct RayCrossings {
     double nearestT = std::numeric_limits<double>::infinity();
     bool nearestIsBackFace = false;
 };
-RayCrossings CastThrough(const TriangleMesh& wsMesh, const glm::dvec3& wsOrigin,
-                         const glm::dvec3& wsDirection);
+// `triangles` index wsMesh.positions (a part of wsMesh.triangles: one object of a merged scene).
+RayCrossings CastThrough(const TriangleMesh& wsMesh, std::span<const glm::uvec3> triangles,
+                         const glm::dvec3& wsOrigin, const glm::dvec3& wsDirection);
 
 // True when rays from wsPoint in three fixed, non-axis directions each cross the mesh an odd
 // number of times and each leaves through a back face first: wsPoint is enclosed by an outward-
 // wound closed surface (the primitives' and TransformMesh's winding). Asking three rays to agree
 // keeps a ray through a shared edge or vertex (counted twice or not at all) from deciding alone;
 // the back-face witness keeps a point between open sheets (a floor and a ceiling plane, each
-// crossed once) outside. Costs 3 · triangles ray-triangle tests.
-bool InsideClosedGeometry(const TriangleMesh& wsMesh, const glm::dvec3& wsPoint);
+// crossed once) outside. Test one closed object at a time (`triangles`, a part of
+// wsMesh.triangles): a box standing on a floor shares its bottom's plane with the floor, and a
+// ray through both would count two crossings. Costs 3 · triangles ray-triangle tests.
+bool InsideClosedGeometry(const TriangleMesh& wsMesh, std::span<const glm::uvec3> triangles,
+                          const glm::dvec3& wsPoint);
 
 }  // namespace lexel::spatial

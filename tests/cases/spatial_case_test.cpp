@@ -322,13 +322,13 @@ TEST(SpatialCase, OutOfRangeScenesGiveTheRealReason) {
 
     // A camera shut in the box (centre [1, 0, 1]) or a camera_path pose in the sphere.
     EXPECT_EQ(replace("/camera/position", "[1, 0, 1]"),
-              "/camera/position: the camera [1, 0, 1] is inside closed geometry (rays from it "
-              "cross the surface an odd number of times in every direction tried); no light "
-              "outside can reach what it sees");
+              "/camera/position: the camera [1, 0, 1] is inside closed geometry (/geometry/1; "
+              "rays from it cross that surface an odd number of times in every direction tried); "
+              "no light outside can reach what it sees");
     EXPECT_EQ(replace("/camera_path/0/position", "[-3, 0.1, 0.1]"),
-              "/camera_path/0/position: the camera [-3, 0.1, 0.1] is inside closed geometry (rays "
-              "from it cross the surface an odd number of times in every direction tried); no "
-              "light outside can reach what it sees");
+              "/camera_path/0/position: the camera [-3, 0.1, 0.1] is inside closed geometry "
+              "(/geometry/2; rays from it cross that surface an odd number of times in every "
+              "direction tried); no light outside can reach what it sees");
     // Between the floor (y = -1) and a ceiling plane as wide (y = 5), every ray crosses one sheet:
     // odd, but the floor is met from its front, so the camera is not inside.
     EXPECT_EQ(replace("/geometry/4/transform", R"({"scale": 20, "translate": [0, 5, 0]})"),
