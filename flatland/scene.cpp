@@ -105,11 +105,18 @@ std::optional<DomainError> FindSceneGeometryDefect(const FlatScene& scene) {
             const std::string seg =
                 "segment " + std::to_string(j) + " of polyline " + std::to_string(i);
             const std::array<int, 2> at = {poly, static_cast<int>(j)};
-            if ((polyline[j + 1] - polyline[j]).norm() <= onEps)
+            const double length = Length(polyline[j + 1] - polyline[j]);
+            if (length <= onEps) {
+                const std::string points =
+                    "points " + std::to_string(j) + " and " + std::to_string(j + 1);
                 return DomainError(Subject::kSegment,
-                                   "zero-length segment (points " + std::to_string(j) + " and " +
-                                       std::to_string(j + 1) + " coincide)",
+                                   length == 0.0 ? "zero-length segment (" + points + " coincide)"
+                                                 : "zero-length segment (" + points + " are " +
+                                                       FormatCoordinate(length) +
+                                                       " apart, within 1e-12 of the scene's size " +
+                                                       FormatCoordinate(size) + ")",
                                    at);
+            }
             if (DistanceToSegment(scene.wsLight, polyline[j], polyline[j + 1]) <= onEps)
                 return DomainError(Subject::kLight, "the light lies on " + seg, at);
             if (DistanceToSegment(scene.camera.wsPosition, polyline[j], polyline[j + 1]) <= onEps)

@@ -87,27 +87,35 @@ TEST(FlatlandCase, OutOfRangeScenesGiveTheRealReason) {
               "/camera/position: coordinate too large: |x| = 1e+300, must be at most 1e+15");
     EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/light/position", "value": [-3, 1e300]}])"),
               "/light/position: coordinate too large: |x| = 1e+300, must be at most 1e+15");
-    // The bound itself is accepted, a coordinate above it is not.
+    // "Zero" is relative: a segment 2 long in a scene 1.4e15 across is zero-length (1e-12 of the
+    // size is 1414), and the message says so.
     EXPECT_EQ(
         ErrorFor(
             R"([{"op": "replace", "path": "/geometry/0", "value": [[-1e15, -1e15], [-1e15, 1e15]]}])"),
-        "no error");
+        "/geometry/1/0: zero-length segment (points 0 and 1 are 2 apart, within 1e-12 of the "
+        "scene's size 1.41421e+15)");
+    // A coordinate above the bound is refused; kGood scaled by 5e12 reaches it (200 · 5e12 = 1e15)
+    // and loads.
     EXPECT_EQ(
         ErrorFor(R"([{"op": "replace", "path": "/geometry/0", "value": [[-1.5e15, 0], [1, 0]]}])"),
         "/geometry/0/0: coordinate too large: |x| = 1.5e+15, must be at most 1e+15");
+    const auto scaled = [](double factor) {
+        nlohmann::json doc = nlohmann::json::parse(kGood);
+        const auto scale = [factor](nlohmann::json& point) {
+            for (auto& x : point) x = x.get<double>() * factor;
+        };
+        scale(doc["camera"]["position"]);
+        scale(doc["light"]["position"]);
+        for (auto& polyline : doc["geometry"])
+            for (auto& point : polyline) scale(point);
+        return doc;
+    };
+    EXPECT_NO_THROW(FlatSceneFromJson(scaled(5e12), "x"));
 
     // kGood scaled by 1e-300: the size is |camera - (200, 0) · 1e-300| = √(200² + 2²) · 1e-300.
-    nlohmann::json tiny = nlohmann::json::parse(kGood);
-    const auto scale = [](nlohmann::json& point) {
-        for (auto& x : point) x = x.get<double>() * 1e-300;
-    };
-    scale(tiny["camera"]["position"]);
-    scale(tiny["light"]["position"]);
-    for (auto& polyline : tiny["geometry"])
-        for (auto& point : polyline) scale(point);
     std::string error = "no error";
     try {
-        FlatSceneFromJson(tiny, "x");
+        FlatSceneFromJson(scaled(1e-300), "x");
     } catch (const InputError& e) {
         error = e.what();
     }
@@ -115,15 +123,7 @@ TEST(FlatlandCase, OutOfRangeScenesGiveTheRealReason) {
               "/geometry: the scene is too small: its size (the largest distance from the camera "
               "to the light or a geometry point) is 2.0001e-298, must be at least 1e-15");
     // The same scene at 1e-10 is inside the bounds and loads: "zero" is relative to the size.
-    tiny = nlohmann::json::parse(kGood);
-    const auto scale10 = [](nlohmann::json& point) {
-        for (auto& x : point) x = x.get<double>() * 1e-10;
-    };
-    scale10(tiny["camera"]["position"]);
-    scale10(tiny["light"]["position"]);
-    for (auto& polyline : tiny["geometry"])
-        for (auto& point : polyline) scale10(point);
-    EXPECT_NO_THROW(FlatSceneFromJson(tiny, "x"));
+    EXPECT_NO_THROW(FlatSceneFromJson(scaled(1e-10), "x"));
 }
 
 // A camera direction of any finite non-zero size normalizes (|[1e200, 0]|² overflows and
