@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -45,20 +46,58 @@ bool InsideClosed(const Vec2& p, const std::vector<Vec2>& polyline) {
     return inside;
 }
 
+// |v| without overflow or underflow of the squares (a scene scaled by 1e-300 has a size).
+double Length(const Vec2& v) { return std::hypot(v.x(), v.y()); }
+
 double SceneScale(const FlatScene& scene) {
-    double scale = (scene.camera.wsPosition - scene.wsLight).norm();
+    double scale = Length(scene.camera.wsPosition - scene.wsLight);
     for (const auto& polyline : scene.geometry)
-        for (const Vec2& p : polyline)
-            scale = std::max(scale, (p - scene.camera.wsPosition).norm());
-    return std::max(scale, 1e-300);
+        for (const Vec2& p : polyline) scale = std::max(scale, Length(p - scene.camera.wsPosition));
+    return scale;
+}
+
+std::string FormatCoordinate(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", x);
+    return text;
+}
+
+// The first point with a coordinate beyond kMaxCoordinate (or not finite), as the error to throw.
+std::optional<DomainError> FindCoordinateTooLarge(const FlatScene& scene) {
+    const auto tooLarge = [](const Vec2& p) {
+        return !(p.cwiseAbs().maxCoeff() <= kMaxCoordinate);
+    };
+    const auto reason = [](const Vec2& p) {
+        return "coordinate too large: |x| = " + FormatCoordinate(p.cwiseAbs().maxCoeff()) +
+               ", must be at most " + FormatCoordinate(kMaxCoordinate);
+    };
+    if (tooLarge(scene.camera.wsPosition))
+        return DomainError(Subject::kCamera, reason(scene.camera.wsPosition));
+    if (tooLarge(scene.wsLight)) return DomainError(Subject::kLight, reason(scene.wsLight));
+    for (std::size_t i = 0; i < scene.geometry.size(); ++i)
+        for (std::size_t j = 0; j < scene.geometry[i].size(); ++j)
+            if (tooLarge(scene.geometry[i][j]))
+                return DomainError(Subject::kGeometry, reason(scene.geometry[i][j]),
+                                   {static_cast<int>(i), static_cast<int>(j)});
+    return std::nullopt;
 }
 
 }  // namespace
 
 std::optional<DomainError> FindSceneGeometryDefect(const FlatScene& scene) {
+    // Bounded coordinates first: beyond them the squared lengths below overflow or underflow and
+    // every segment would look zero-length.
+    if (std::optional<DomainError> defect = FindCoordinateTooLarge(scene)) return defect;
+    const double size = SceneScale(scene);
+    if (!(size >= kMinSceneSize))
+        return DomainError(Subject::kGeometry,
+                           "the scene is too small: its size (the largest distance from the "
+                           "camera to the light or a geometry point) is " +
+                               FormatCoordinate(size) + ", must be at least " +
+                               FormatCoordinate(kMinSceneSize));
     // Distances below 1e-12 of the scene's size are "on" a segment: at double precision such a
     // point cannot be told apart from one lying on it.
-    const double onEps = 1e-12 * SceneScale(scene);
+    const double onEps = 1e-12 * size;
     for (std::size_t i = 0; i < scene.geometry.size(); ++i) {
         const auto& polyline = scene.geometry[i];
         const int poly = static_cast<int>(i);
@@ -66,11 +105,18 @@ std::optional<DomainError> FindSceneGeometryDefect(const FlatScene& scene) {
             const std::string seg =
                 "segment " + std::to_string(j) + " of polyline " + std::to_string(i);
             const std::array<int, 2> at = {poly, static_cast<int>(j)};
-            if ((polyline[j + 1] - polyline[j]).norm() <= onEps)
+            const double length = Length(polyline[j + 1] - polyline[j]);
+            if (length <= onEps) {
+                const std::string points =
+                    "points " + std::to_string(j) + " and " + std::to_string(j + 1);
                 return DomainError(Subject::kSegment,
-                                   "zero-length segment (points " + std::to_string(j) + " and " +
-                                       std::to_string(j + 1) + " coincide)",
+                                   length == 0.0 ? "zero-length segment (" + points + " coincide)"
+                                                 : "zero-length segment (" + points + " are " +
+                                                       FormatCoordinate(length) +
+                                                       " apart, within 1e-12 of the scene's size " +
+                                                       FormatCoordinate(size) + ")",
                                    at);
+            }
             if (DistanceToSegment(scene.wsLight, polyline[j], polyline[j + 1]) <= onEps)
                 return DomainError(Subject::kLight, "the light lies on " + seg, at);
             if (DistanceToSegment(scene.camera.wsPosition, polyline[j], polyline[j + 1]) <= onEps)

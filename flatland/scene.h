@@ -52,9 +52,21 @@ struct FlatSegment {
 
 std::vector<FlatSegment> Segments(const FlatScene& scene);
 
-// Geometric sanity of a scene: zero-length segments, the light or the camera on a segment or
-// inside a closed polyline. Throws DomainError: Subject::kSegment (index {polyline, segment}) for
-// a zero-length segment; kLight or kCamera, with the segment's or polyline's index, for the rest.
+// The range of scene sizes lexel accepts (world units). Every coordinate of the camera, the light
+// and the geometry is at most kMaxCoordinate in magnitude, and the scene's size (the largest
+// distance from the camera to the light or to a geometry point) is at least kMinSceneSize. Inside
+// these bounds squared lengths and the solvers' products of up to four lengths stay normal
+// doubles (1e±60 ≪ 1e±308), so "zero-length" and "on a segment" mean what they say.
+inline constexpr double kMaxCoordinate = 1e15;
+inline constexpr double kMinSceneSize = 1e-15;
+
+// Geometric sanity of a scene: coordinates beyond kMaxCoordinate, a scene smaller than
+// kMinSceneSize, zero-length segments, the light or the camera on a segment or inside a closed
+// polyline. "Zero" and "on" are relative: within 1e-12 of the scene's size. Throws DomainError:
+// kCamera / kLight (index {-1, -1}) or kGeometry (index {polyline, point}) for a coordinate too
+// large; kGeometry (whole) for a scene too small; Subject::kSegment (index {polyline, segment})
+// for a zero-length segment; kLight or kCamera, with the segment's or polyline's index, for the
+// rest.
 void CheckSceneGeometry(const FlatScene& scene);
 // The same without throwing: the error CheckSceneGeometry would throw, or nullopt.
 std::optional<DomainError> FindSceneGeometryDefect(const FlatScene& scene);

@@ -1,5 +1,8 @@
 #include "lexel/cases/load/flatland_case.h"
 
+#include <cmath>
+#include <limits>
+
 #include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/solvers/errors.h"
@@ -55,8 +58,15 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
     camera.ExpectObject({"position", "direction", "fov_deg", "pixels"}, {"near", "far"});
     scene.camera.wsPosition = camera["position"].Vec2();
     const Eigen::Vector2d direction = camera["direction"].Vec2();
-    if (!(direction.norm() > 0.0)) camera["direction"].Fail("must be a non-zero vector");
-    scene.camera.wsDirection = direction.normalized();
+    // A direction whose squared length overflows or underflows ([1e200, 0], [1e-300, 0]) is
+    // divided by its largest |component| before it is normalized; others are normalized as given.
+    const double largest = direction.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) camera["direction"].Fail("must be a non-zero vector");
+    const double squared = direction.squaredNorm();
+    const bool representable =
+        std::isfinite(squared) && squared >= std::numeric_limits<double>::min();
+    scene.camera.wsDirection =
+        (representable ? direction : Eigen::Vector2d(direction / largest)).normalized();
     scene.camera.fovDeg = camera["fov_deg"].NumberIn(0.0, 180.0, true, true);
     scene.camera.pixels = static_cast<int>(camera["pixels"].Integer(1, kMaxPixels));
     if (camera.Has("near")) scene.camera.near = camera["near"].Positive();

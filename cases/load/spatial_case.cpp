@@ -6,6 +6,8 @@
 #include <iterator>
 #include <limits>
 #include <utility>
+#include <span>
+#include <vector>
 
 #include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/flatland_case.h"
@@ -13,6 +15,7 @@
 #include "lexel/cases/load/memory_budget.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/containment.h"
 #include "lexel/spatial/harness/generator.h"
 #include "lexel/spatial/harness/memory_estimate.h"
 #include "lexel/spatial/harness/mesh_loader.h"
@@ -31,6 +34,58 @@ glm::dvec3 ReadVec3(const JsonField& field) {
 std::string FormatVec(const glm::dvec3& v) {
     return std::string("[") + FormatNumber(v.x) + ", " + FormatNumber(v.y) + ", " +
            FormatNumber(v.z) + "]";
+}
+
+double LargestMagnitude(const glm::dvec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+// Refuses a point with a coordinate beyond kMaxCoordinate (see spatial_case.h).
+glm::dvec3 CheckCoordinates(const JsonField& field, const glm::dvec3& v) {
+    const double largest = LargestMagnitude(v);
+    if (!(largest <= kMaxCoordinate))
+        field.Fail("coordinate too large: |x| = " + FormatNumber(largest) + ", must be at most " +
+                   FormatNumber(kMaxCoordinate));
+    return v;
+}
+
+// v / its largest |component| when v's squared length overflows or underflows (normalizing
+// [1e200, 0, 0] directly gives 0), else v as given; zero stays zero.
+glm::dvec3 ScaledDirection(const glm::dvec3& v) {
+    const double squared = glm::dot(v, v);
+    if (std::isfinite(squared) && squared >= std::numeric_limits<double>::min()) return v;
+    const double largest = LargestMagnitude(v);
+    return largest > 0.0 && std::isfinite(largest) ? v / largest : v;
+}
+
+// Refuses a far plane more than kMaxFarOverNear times the near plane (see spatial_case.h); the
+// product, unlike the ratio, cannot overflow (near and far are at least the smallest double).
+void CheckDepthRange(const JsonField& field, const spatial::Camera& camera) {
+    if (camera.farPlane <= kMaxFarOverNear * camera.nearPlane) return;
+    field[field.Has("far") ? "far" : "near"].Fail(
+        "far (" + FormatNumber(camera.farPlane) + ") must be at most " +
+        FormatNumber(kMaxFarOverNear) + " × near (" + FormatNumber(camera.nearPlane) +
+        "): beyond that a depth buffer's step at far exceeds 0.6% of the distance");
+}
+
+// Refuses a geometry entry whose transformed vertices reach beyond kMaxCoordinate (a scale or
+// translate too large; measured in double, before the float vertices would overflow to inf) or
+// collapse to one point (a scale so small that every float vertex coincides).
+void CheckEntryExtent(const JsonField& entry, const spatial::TriangleMesh& osMesh,
+                      const spatial::Transform& transform, const spatial::TriangleMesh& wsMesh) {
+    const JsonField field = entry.Has("transform") ? entry["transform"] : entry;
+    const glm::dmat4 wsFromOs = transform.Matrix();
+    double largest = 0.0;
+    for (const glm::vec3& osPoint : osMesh.positions)
+        largest =
+            std::max(largest, LargestMagnitude(glm::dvec3(wsFromOs * glm::dvec4(osPoint, 1.0))));
+    if (!(largest <= kMaxCoordinate))
+        field.Fail("the transformed geometry reaches |x| = " + FormatNumber(largest) +
+                   ", coordinates must be at most " + FormatNumber(kMaxCoordinate));
+    const spatial::Bounds wsBounds = wsMesh.ComputeBounds();
+    if (!wsBounds.Empty() && !(wsBounds.Radius() > 0.0))
+        field.Fail("the transformed geometry collapses to the point " + FormatVec(wsBounds.lo) +
+                   " (its float vertices coincide)");
 }
 
 spatial::Resolution ReadResolution(const JsonField& field) {
@@ -60,9 +115,9 @@ void CheckPose(const spatial::Camera& camera, const JsonField& field) {
 
 // Reads position, target and optional up into `camera`.
 void ReadPose(const JsonField& field, spatial::Camera* camera) {
-    camera->position = ReadVec3(field["position"]);
-    camera->target = ReadVec3(field["target"]);
-    if (field.Has("up")) camera->up = ReadVec3(field["up"]);
+    camera->position = CheckCoordinates(field["position"], ReadVec3(field["position"]));
+    camera->target = CheckCoordinates(field["target"], ReadVec3(field["target"]));
+    if (field.Has("up")) camera->up = ScaledDirection(ReadVec3(field["up"]));
 }
 
 // The raw JSON under a field, for the one place the schema allows two types (`scale`).
@@ -117,6 +172,7 @@ void ReadCamera(const JsonField& field, spatial::Camera* camera) {
         field[field.Has("far") ? "far" : "near"].Fail("far (" + FormatNumber(camera->farPlane) +
                                                       ") must be greater than near (" +
                                                       FormatNumber(camera->nearPlane) + ")");
+    CheckDepthRange(field, *camera);
     CheckPose(*camera, field);
 }
 
@@ -126,11 +182,11 @@ spatial::Light ReadLight(const JsonField& field) {
     if (type == "point") {
         field.ExpectObject({"type", "position"});
         light.type = spatial::Light::Type::kPoint;
-        light.position = ReadVec3(field["position"]);
+        light.position = CheckCoordinates(field["position"], ReadVec3(field["position"]));
     } else if (type == "directional") {
         field.ExpectObject({"type", "direction"});
         light.type = spatial::Light::Type::kDirectional;
-        const glm::dvec3 direction = ReadVec3(field["direction"]);
+        const glm::dvec3 direction = ScaledDirection(ReadVec3(field["direction"]));
         if (!(glm::length(direction) > 0.0)) field["direction"].Fail("must be a non-zero vector");
         light.direction = glm::normalize(direction);
     } else {
@@ -191,6 +247,27 @@ void CheckEvaluationMemory(const spatial::Scene& scene) {
     throw InputError(std::string(field) + ": the case " + excess);
 }
 
+// Refuses a camera shut inside one closed geometry entry (containment.h), each entry tested on
+// its own: `entryEnd[k]` ends entry k's triangles in wsGeometry (the generator's objects, which
+// stand on their own floor, are not tested). Point lights inside the geometry's bounds are refused
+// and directional lights come from outside them, so such a camera sees only the inside of walls
+// that no light reaches: every counted pixel would be shadowed.
+void CheckCameraOutside(const spatial::TriangleMesh& wsGeometry,
+                        const std::vector<std::size_t>& entryEnd, const spatial::Camera& camera,
+                        const JsonField& field) {
+    const std::span<const glm::uvec3> all(wsGeometry.triangles);
+    std::size_t begin = 0;
+    for (std::size_t k = 0; k < entryEnd.size(); ++k) {
+        const auto triangles = all.subspan(begin, entryEnd[k] - begin);
+        begin = entryEnd[k];
+        if (!spatial::InsideClosedGeometry(wsGeometry, triangles, camera.position)) continue;
+        field["position"].Fail("the camera " + FormatVec(camera.position) +
+                               " is inside closed geometry (/geometry/" + std::to_string(k) +
+                               "; rays from it cross that surface an odd number of times in "
+                               "every direction tried); no light outside can reach what it sees");
+    }
+}
+
 }  // namespace
 
 spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
@@ -214,7 +291,8 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
         if (sweep.Has("seed"))
             lightSweep.seed = static_cast<std::uint64_t>(
                 sweep["seed"].Integer(0, std::numeric_limits<long long>::max()));
-        if (sweep.Has("radius")) lightSweep.radius = sweep["radius"].Positive();
+        if (sweep.Has("radius"))
+            lightSweep.radius = sweep["radius"].NumberIn(0.0, kMaxCoordinate, true, false);
         if (sweep.Has("type")) {
             const std::string type = sweep["type"].String();
             if (type != "point" && type != "directional")
@@ -239,6 +317,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     if (root.Has("readback")) scene.readback = ReadResolution(root["readback"]);
     CheckEvaluationMemory(scene);
 
+    std::vector<std::size_t> entryEnd;  // per geometry entry: the end of its triangles
     if (root.Has("geometry")) {
         for (const JsonField& entry : root["geometry"].Array()) {
             entry.ExpectObject({}, {"mesh", "primitive", "transform"});
@@ -274,8 +353,11 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
                                    "'");
                 }
             }
-            scene.geometry.Append(spatial::TransformMesh(osMesh, transform));
+            spatial::TriangleMesh wsMesh = spatial::TransformMesh(osMesh, transform);
+            CheckEntryExtent(entry, osMesh, transform, wsMesh);
+            scene.geometry.Append(wsMesh);
             CheckEvaluationMemory(scene);  // many entries of one large mesh add up
+            entryEnd.push_back(scene.geometry.triangles.size());
         }
     }
 
@@ -310,6 +392,12 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     if (wsBounds.Empty())
         throw InputError(std::string(root.Has("geometry") ? "/geometry" : "/") +
                          ": the scene has no geometry (give geometry entries or a generator)");
+    CheckCameraOutside(scene.geometry, entryEnd, scene.camera, root["camera"]);
+    if (root.Has("camera_path")) {
+        const auto poses = root["camera_path"].Array(1);
+        for (std::size_t k = 0; k < poses.size(); ++k)
+            CheckCameraOutside(scene.geometry, entryEnd, scene.cameraPath[k], poses[k]);
+    }
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {
         const spatial::Light& light = scene.lights[k];
         const std::string pointer = "/lights/" + std::to_string(k);
@@ -361,6 +449,25 @@ std::unique_ptr<spatial::Evaluator> MakeEvaluator(const spatial::Scene& scene,
     } catch (const DomainError& e) {
         throw InputError(SpatialErrorField(e, "/lights", camera) + ": " + e.what());
     }
+}
+
+void CheckLightFacesPixels(const spatial::Evaluator& evaluator, const spatial::Light& light,
+                           const std::string& field) {
+    std::int64_t counted = 0;
+    try {
+        counted = evaluator.CountedPixels(light);
+    } catch (const DomainError& e) {
+        throw InputError(SpatialErrorField(e, field) + ": " + e.what());
+    }
+    if (counted > 0) return;
+    const spatial::CameraBuffer& frame = evaluator.frame();
+    std::int64_t visible = 0;
+    for (std::size_t i = 0; i < frame.triangle.size(); ++i) visible += frame.Covered(i);
+    const bool point = light.type == spatial::Light::Type::kPoint;
+    throw InputError(field + (point ? "/position" : "/direction") +
+                     ": no visible pixel faces the light: all " + std::to_string(visible) +
+                     " pixels the camera sees have n·l <= 0 (the light lies in the plane of, or "
+                     "behind, every surface in view), so every count and h would be 0");
 }
 
 spatial::Scene LoadSpatialScene(const std::filesystem::path& path) {

@@ -17,6 +17,18 @@ namespace lexel::cases {
 // Screen, readback and shadow-map sides are at most this many pixels or texels.
 inline constexpr long long kMaxSide = 16384;
 
+// Every coordinate of the camera, its targets, the point lights and the transformed geometry is
+// at most this in magnitude (world units). Vertices are floats: within 1e15 their squares (1e30)
+// stay finite in float and the scene's products in double, so a bounding radius or a light
+// distance is a number, not inf.
+inline constexpr double kMaxCoordinate = 1e15;
+// far / near of the camera is at most this. With the standard perspective depth mapping and a
+// depth buffer whose steps near 1 are 2^-24 (24-bit fixed or 32-bit float), the depth step at a
+// distance z is about z · (z / near) · 2^-24: at far = 1e5 · near that is 0.6% of the distance,
+// beyond it depth tests and the methods' depth ranges lose their meaning. The shipped cases use
+// 1000 to 1500 (the default 0.1 .. 200 is 2000).
+inline constexpr double kMaxFarOverNear = 1e5;
+
 // Validates a parsed document; throws InputError naming the JSON pointer and the reason. Relative
 // mesh paths are resolved against baseDir (the case file's directory).
 spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
@@ -37,5 +49,13 @@ std::string CameraPathField(std::size_t pose);  // "/camera_path/<pose>"
 std::unique_ptr<spatial::Evaluator> MakeEvaluator(const spatial::Scene& scene,
                                                   const spatial::RenderBackend& backend,
                                                   const std::string& camera = "/camera");
+
+// Refuses a fixed light that no counted pixel faces (Evaluator::CountedPixels is 0: it lies in the
+// plane of, or behind, every surface the camera sees), before any method runs: every count and h
+// would be 0 and say nothing. `field` is the light's pointer ("/lights/k"); the error names its
+// position or direction. A light sweep does not call this: such a light is kept in the sweep with
+// receiver_pixels 0 (lights.csv), since one unlucky light should not abort the others.
+void CheckLightFacesPixels(const spatial::Evaluator& evaluator, const spatial::Light& light,
+                           const std::string& field);
 
 }  // namespace lexel::cases

@@ -16,6 +16,9 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
     evalOptions.methods = options.methods;
     evalOptions.mapTruth = options.mapTruth;
     evalOptions.keepBuffers = options.keepBuffers;
+    // Every fixed light must face some counted pixel; checked for all before any method runs.
+    for (std::size_t l = 0; l < scene.lights.size(); ++l)
+        CheckLightFacesPixels(*run.evaluator, scene.lights[l], LightField(l));
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
         try {
             run.outcomes.push_back(run.evaluator->Evaluate(scene.lights[l], evalOptions));

@@ -141,6 +141,8 @@ CaseStorage RunCaseStorage(const spatial::Scene& scene, const std::vector<std::s
     out.partitions = scene.partitions.count;
     const auto backend = MakeRenderBackend(BackendKind::kCpu, scene.geometry);
     const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
+    for (std::size_t l = 0; l < scene.lights.size(); ++l)
+        CheckLightFacesPixels(*evaluator, scene.lights[l], LightField(l));
     // The visible pixels' planar depth range and centroid.
     const spatial::CameraBuffer& frame = evaluator->frame();
     double zLo = std::numeric_limits<double>::infinity(), zHi = 0.0;

@@ -216,6 +216,16 @@ std::vector<Shade> Evaluator::ShadeFrame(const Light& light, const LightMatrix& 
                                 backend_.RenderShadowMap(lightSpace, matrix, scene_.shadowMap));
 }
 
+std::int64_t Evaluator::CountedPixels(const Light& light) const {
+    const LightSpace lightSpace(light, bounds_);
+    std::int64_t counted = 0;
+    for (std::size_t i = 0; i < frame_.triangle.size(); ++i)
+        counted +=
+            frame_.Covered(i) &&
+            glm::dot(frame_.wsNormal[i], lightSpace.DirectionToLight(frame_.wsPosition[i])) > 0.0;
+    return counted;
+}
+
 std::int64_t Evaluator::Misclassified(const Light& light, const LightMatrix& matrix) const {
     const LightSpace lightSpace(light, bounds_);
     return CountWrong(

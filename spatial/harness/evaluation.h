@@ -126,6 +126,11 @@ class Evaluator {
     // matrix can serve.
     LightOutcome Evaluate(const Light& light, const EvaluationOptions& options) const;
 
+    // The counted frame pixels for `light` (covered, n·l > 0) without evaluating anything: 0 when
+    // the light lies in the plane of, or behind, every surface the camera sees. Throws
+    // DomainError (Subject::kLight) when no light space can be built for it.
+    std::int64_t CountedPixels(const Light& light) const;
+
     // Misclassified counted pixels of any matrix for `light` (renders its map, traces the truth).
     std::int64_t Misclassified(const Light& light, const LightMatrix& matrix) const;
     // The frame's shades through one matrix, at the scene's shadow-map resolution.

@@ -484,6 +484,22 @@ expect_bad3d(spatial_sweep_only.json
              "${any}spatial_sweep_only.json: /lights: the case has no fixed lights; run `lexel sweep`${any}" run)
 expect_bad3d(spatial_no_sweep.json
              "${any}spatial_no_sweep.json: /light_sweep: the case has none${any}" sweep)
+# Issue 16: out-of-range 3D scenes name the field and the real reason.
+expect_bad3d(spatial_scale_overflow.json
+             "${any}spatial_scale_overflow.json: /geometry/1/transform: the transformed geometry reaches \\|x\\| = 5e\\+299, coordinates must be at most 1e\\+15")
+expect_bad3d(spatial_depth_range.json
+             "${any}spatial_depth_range.json: /camera/far: far \\(1e\\+300\\) must be at most 100000 × near \\(1e-300\\): beyond that a depth buffer's step at far exceeds 0\\.6% of the distance")
+# The box stands on the floor: its bottom and the floor share a plane, so each entry is tested alone.
+expect_bad3d(spatial_camera_in_box.json
+             "${any}spatial_camera_in_box.json: /camera/position: the camera \\[0, 2, -1\\] is inside closed geometry \\(/geometry/1; rays from it cross that surface an odd number of times in every direction tried\\); no light outside can reach what it sees")
+# Found once the camera is rendered, before any method runs: a fixed light in the floor's plane.
+expect_bad3d(spatial_light_in_floor.json
+             "${any}spatial_light_in_floor.json: /lights/0/position: no visible pixel faces the light: all [0-9]+ pixels the camera sees have n·l <= 0 \\(the light lies in the plane of, or behind, every surface in view\\), so every count and h would be 0" run)
+# Issue 16: flatland coordinates beyond the bounds, not "zero-length segment".
+expect_run(2 "^$" "^lexel: error: ${any}flat_huge_coordinate.json: /geometry/0/0: coordinate too large: \\|x\\| = 1e\\+200, must be at most 1e\\+15\n$"
+           run "${DATA}/flat_huge_coordinate.json" --out "${WORK}/bad")
+expect_run(2 "^$" "^lexel: error: ${any}flat_tiny_scene.json: /geometry: the scene is too small: its size \\(the largest distance from the camera to the light or a geometry point\\) is 4\\.0078e-299, must be at least 1e-15\n$"
+           lowres "${DATA}/flat_tiny_scene.json")
 # The mirror cases work.
 expect_run(0 "^The fair comparison [^\n]*spatial_sweep_only, 2 point lights" "^$"
            sweep "${DATA}/spatial_sweep_only.json" --lights 2 --method optimal)

@@ -73,6 +73,71 @@ TEST(FlatlandCase, BadFieldsAreNamed) {
               "/light: required key is missing");
 }
 
+// Issue 16: coordinates whose squared lengths overflow (±1e200, a camera or light at 1e300) or a
+// scene whose squared lengths underflow (scaled by 1e-300) were reported as "zero-length
+// segment"; each now names its field and the bound (flatland/scene.h).
+TEST(FlatlandCase, OutOfRangeScenesGiveTheRealReason) {
+    EXPECT_EQ(
+        ErrorFor(
+            R"([{"op": "replace", "path": "/geometry/0", "value": [[-1e200, 0], [1e200, 0]]}])"),
+        "/geometry/0/0: coordinate too large: |x| = 1e+200, must be at most 1e+15");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/geometry/1/2", "value": [8, -1e200]}])"),
+              "/geometry/1/2: coordinate too large: |x| = 1e+200, must be at most 1e+15");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/camera/position", "value": [1e300, 2]}])"),
+              "/camera/position: coordinate too large: |x| = 1e+300, must be at most 1e+15");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/light/position", "value": [-3, 1e300]}])"),
+              "/light/position: coordinate too large: |x| = 1e+300, must be at most 1e+15");
+    // "Zero" is relative: a segment 2 long in a scene 1.4e15 across is zero-length (1e-12 of the
+    // size is 1414), and the message says so.
+    EXPECT_EQ(
+        ErrorFor(
+            R"([{"op": "replace", "path": "/geometry/0", "value": [[-1e15, -1e15], [-1e15, 1e15]]}])"),
+        "/geometry/1/0: zero-length segment (points 0 and 1 are 2 apart, within 1e-12 of the "
+        "scene's size 1.41421e+15)");
+    // A coordinate above the bound is refused; kGood scaled by 5e12 reaches it (200 · 5e12 = 1e15)
+    // and loads.
+    EXPECT_EQ(
+        ErrorFor(R"([{"op": "replace", "path": "/geometry/0", "value": [[-1.5e15, 0], [1, 0]]}])"),
+        "/geometry/0/0: coordinate too large: |x| = 1.5e+15, must be at most 1e+15");
+    const auto scaled = [](double factor) {
+        nlohmann::json doc = nlohmann::json::parse(kGood);
+        const auto scale = [factor](nlohmann::json& point) {
+            for (auto& x : point) x = x.get<double>() * factor;
+        };
+        scale(doc["camera"]["position"]);
+        scale(doc["light"]["position"]);
+        for (auto& polyline : doc["geometry"])
+            for (auto& point : polyline) scale(point);
+        return doc;
+    };
+    EXPECT_NO_THROW(FlatSceneFromJson(scaled(5e12), "x"));
+
+    // kGood scaled by 1e-300: the size is |camera - (200, 0) · 1e-300| = √(200² + 2²) · 1e-300.
+    std::string error = "no error";
+    try {
+        FlatSceneFromJson(scaled(1e-300), "x");
+    } catch (const InputError& e) {
+        error = e.what();
+    }
+    EXPECT_EQ(error,
+              "/geometry: the scene is too small: its size (the largest distance from the camera "
+              "to the light or a geometry point) is 2.0001e-298, must be at least 1e-15");
+    // The same scene at 1e-10 is inside the bounds and loads: "zero" is relative to the size.
+    EXPECT_NO_THROW(FlatSceneFromJson(scaled(1e-10), "x"));
+}
+
+// A camera direction of any finite non-zero size normalizes (|[1e200, 0]|² overflows and
+// |[1e-300, 0]|² underflows when normalized directly).
+TEST(FlatlandCase, HugeAndTinyDirectionsNormalize) {
+    for (const char* direction : {"[2e200, -0.5e200]", "[2e-300, -0.5e-300]"}) {
+        nlohmann::json doc = nlohmann::json::parse(kGood);
+        doc["camera"]["direction"] = nlohmann::json::parse(direction);
+        const auto scene = FlatSceneFromJson(doc, "x");
+        EXPECT_NEAR(scene.camera.wsDirection.x(), 2 / std::sqrt(4.25), 1e-15) << direction;
+        EXPECT_NEAR(scene.camera.wsDirection.y(), -0.5 / std::sqrt(4.25), 1e-15) << direction;
+    }
+}
+
 TEST(FlatlandCase, SpatialCasesAreRecognized) {
     EXPECT_TRUE(IsSpatialCase(nlohmann::json::parse(R"({"lights": []})")));
     EXPECT_FALSE(IsSpatialCase(nlohmann::json::parse(kGood)));

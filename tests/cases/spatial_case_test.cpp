@@ -258,7 +258,7 @@ TEST(SpatialCase, BadFieldsAreNamed) {
     EXPECT_EQ(replace("/light_sweep/count", "0"),
               "/light_sweep/count: must be in [1, 100000], got 0");
     EXPECT_EQ(replace("/light_sweep/radius", "-1"),
-              "/light_sweep/radius: must be in (0, inf), got -1");
+              "/light_sweep/radius: must be in (0, 1e+15], got -1");
     EXPECT_EQ(replace("/light_sweep/radius", "14"),  // √836 / 2 = 14.4568
               "/light_sweep/radius: must be larger than the geometry's bounding radius "
               "14.456832294801 (the sweep is centred on the bounds), got 14");
@@ -280,6 +280,66 @@ TEST(SpatialCase, BadFieldsAreNamed) {
     EXPECT_EQ(replace("/camera_path/1/up", "[0, -1.4, 20]"),
               "/camera_path/1/up: must not be parallel to the view direction (target - position "
               "= [0, -0.7, 10])");
+}
+
+// Issue 16: out-of-range scenes name the field and the real reason (spatial_case.h's bounds),
+// where a scale of 1e300 reported "bounding radius inf" and near 1e-300, far 1e300 was accepted.
+TEST(SpatialCase, OutOfRangeScenesGiveTheRealReason) {
+    auto replace = [](const std::string& path, const std::string& value) {
+        return ErrorFor(R"([{"op": "replace", "path": ")" + path + R"(", "value": )" + value +
+                        "}]");
+    };
+    // Coordinates: the unit sphere's poles scaled by 1e300 (measured before the float vertices
+    // overflow), a camera, a target, a point light, a sweep radius.
+    EXPECT_EQ(replace("/geometry/2/transform/scale", "1e300"),
+              "/geometry/2/transform: the transformed geometry reaches |x| = 1e+300, coordinates "
+              "must be at most 1e+15");
+    EXPECT_EQ(replace("/geometry/2/transform/translate", "[-3, 0, 2e15]"),
+              "/geometry/2/transform: the transformed geometry reaches |x| = 2e+15, coordinates "
+              "must be at most 1e+15");
+    EXPECT_EQ(replace("/camera/position", "[0, 1e300, -10]"),
+              "/camera/position: coordinate too large: |x| = 1e+300, must be at most 1e+15");
+    EXPECT_EQ(replace("/camera_path/1/target", "[1e16, 1, 2]"),
+              "/camera_path/1/target: coordinate too large: |x| = 1e+16, must be at most 1e+15");
+    EXPECT_EQ(replace("/lights/0/position", "[3, -1e300, -4]"),
+              "/lights/0/position: coordinate too large: |x| = 1e+300, must be at most 1e+15");
+    EXPECT_EQ(replace("/light_sweep/radius", "1e300"),
+              "/light_sweep/radius: must be in (0, 1e+15], got 1e+300");
+    // A scale so small that every float vertex of the sphere lands on its translate.
+    EXPECT_EQ(replace("/geometry/2/transform/scale", "1e-300"),
+              "/geometry/2/transform: the transformed geometry collapses to the point [-3, 0, 0] "
+              "(its float vertices coincide)");
+
+    // far / near: the bound (1e5) is accepted, anything above it is refused without overflow.
+    EXPECT_EQ(replace("/camera/far", "50000"), "no error");  // near 0.5
+    EXPECT_EQ(replace("/camera/far", "50001"),
+              "/camera/far: far (50001) must be at most 100000 × near (0.5): beyond that a depth "
+              "buffer's step at far exceeds 0.6% of the distance");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/camera/near", "value": 1e-300},
+                           {"op": "replace", "path": "/camera/far", "value": 1e300}])"),
+              "/camera/far: far (1e+300) must be at most 100000 × near (1e-300): beyond that a "
+              "depth buffer's step at far exceeds 0.6% of the distance");
+
+    // A camera shut in the box (centre [1, 0, 1]) or a camera_path pose in the sphere.
+    EXPECT_EQ(replace("/camera/position", "[1, 0, 1]"),
+              "/camera/position: the camera [1, 0, 1] is inside closed geometry (/geometry/1; "
+              "rays from it cross that surface an odd number of times in every direction tried); "
+              "no light outside can reach what it sees");
+    EXPECT_EQ(replace("/camera_path/0/position", "[-3, 0.1, 0.1]"),
+              "/camera_path/0/position: the camera [-3, 0.1, 0.1] is inside closed geometry "
+              "(/geometry/2; rays from it cross that surface an odd number of times in every "
+              "direction tried); no light outside can reach what it sees");
+    // Between the floor (y = -1) and a ceiling plane as wide (y = 5), every ray crosses one sheet:
+    // odd, but the floor is met from its front, so the camera is not inside.
+    EXPECT_EQ(replace("/geometry/4/transform", R"({"scale": 20, "translate": [0, 5, 0]})"),
+              "no error");
+
+    // Directions of any finite size normalize.
+    const spatial::Scene scene = FromPatch(
+        R"([{"op": "replace", "path": "/lights/1/direction", "value": [0, -2e200, 0]},
+            {"op": "replace", "path": "/camera/up", "value": [0, 1e-300, 0]}])");
+    EXPECT_EQ(scene.lights[1].direction, glm::dvec3(0.0, -1.0, 0.0));
+    EXPECT_EQ(scene.camera.up, glm::dvec3(0.0, 1.0, 0.0));
 }
 
 TEST(SpatialCase, CascadesBlockSetsThePartitionDefaults) {

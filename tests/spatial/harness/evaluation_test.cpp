@@ -38,6 +38,20 @@ TEST(Evaluation, FocusedTruthMapAgreesWithShadowRays) {
     }
 }
 
+// CountedPixels (what `run` checks before any method, issue 16) counts what Evaluate counts.
+TEST(Evaluation, CountedPixelsAreTheReceiverPixels) {
+    const Scene& scene = Walkthrough();
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Evaluator evaluator(scene, *backend);
+    EvaluationOptions options;
+    options.mapTruth = false;
+    for (const Light& light : scene.lights) {
+        const std::int64_t counted = evaluator.CountedPixels(light);
+        EXPECT_GT(counted, 100000);
+        EXPECT_EQ(counted, evaluator.Evaluate(light, options).receiverPixels);
+    }
+}
+
 TEST(Evaluation, EveryMethodCoversEveryVisibleSampleAndIsDeterministic) {
     const Scene& scene = Walkthrough();
     const auto backend = MakeCpuRenderer(scene.geometry);
