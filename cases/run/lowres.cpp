@@ -14,6 +14,9 @@ std::vector<int> LowresResolutions(int fullPixels) {
     return out;
 }
 
+// Memory: the reference run's at most 64 bytes per camera pixel (flatland/memory.h), the K = P row
+// reusing its pass, plus passes of at most 200 pixels: within the budget for every pixel count the
+// schema allows (64 · kMaxPixels ≈ 6 GiB).
 std::vector<LowresRow> RunLowresStudy(const flatland::FlatScene& scene) {
     static const std::vector<std::string> methods = {"optimal-l1", "optimal-l2", "optimal-linf"};
     auto errorOf = [](const FootprintStats& s, int metric) {

@@ -45,7 +45,7 @@ file(READ "${good}" goodText)
 string(REPLACE "\"pixels\": 1000" "\"pixels\": 100000000" bigText "${goodText}")
 string(REPLACE "\"decision_pixels\": 100" "\"decision_pixels\": 90000000" bigText "${bigText}")
 file(WRITE "${WORK}/big/single_plane.json" "${bigText}")
-expect_run(2 "^$" "^lexel: error: [^\n]*big/single_plane.json: /camera/pixels: needs about 8.38 GiB \\(100000000 camera pixels and 90000000 decision pixels in a second pass, [^\n]*\\), above lexel's memory budget of 8 GiB\n$"
+expect_run(2 "^$" "^lexel: error: [^\n]*big/single_plane.json: /camera/pixels: needs about 8.35 GiB \\(100000000 camera pixels and 90000000 decision pixels in a second pass, [^\n]*\\), above lexel's memory budget of 8 GiB\n$"
            run "${WORK}/big/single_plane.json")
 expect_run(2 "^$" "/light/position: the light lies on segment 0 of polyline 0 \\(/geometry/0/0\\)" run "${DATA}/light_on_segment.json" --out "${WORK}/bad")
 expect_run(2 "^$" "no lexel plane has them all in front" run "${DATA}/wide_sweep.json" --out "${WORK}/bad")
