@@ -25,6 +25,9 @@ inline double ProcStatusBytes(const std::string& field) {
 // used (then the benchmark reports no memory counter rather than a wrong one).
 template <typename Work>
 double PeakRssIncrease(Work&& work) {
+    // Blocks over 1 MiB always mapped (glibc otherwise raises the threshold to the largest block
+    // freed, and per-pixel arrays then reuse and fragment the heap): freed arrays leave the RSS.
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
     malloc_trim(0);
     {
         std::ofstream clear("/proc/self/clear_refs");
