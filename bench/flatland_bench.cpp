@@ -1,16 +1,21 @@
 // Flatland solver throughput (issue targets: optimal-l1 and exact optimal-l2 ≥ 100 M samples/s
 // on one core; they are moment sums), Newton (thesis Algorithm 1) time and its ratio to the
-// exact solver in the same run, and the sampling pass in pixels/s.
+// exact solver in the same run, and the sampling pass in pixels/s. BM_RunMemory: the memory a
+// `lexel run` of the single-plane case holds per camera pixel at 10⁶ pixels (issue 16: ≤ 64).
 //
 //   ./build/bench/flatland_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <numbers>
 #include <random>
 
 #include "lexel/flatland/angle_solvers.h"
+#include "lexel/flatland/memory.h"
+#include "lexel/flatland/methods.h"
 #include "lexel/flatland/sampling.h"
+#include "peak_rss.h"
 
 namespace {
 
@@ -101,6 +106,34 @@ void BM_SamplingPass(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * pixels);
 }
 BENCHMARK(BM_SamplingPass)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+// Every method on cases/flatland/single_plane.json's scene at 10⁶ camera pixels (94% visible),
+// the decision pass being the full one, as `lexel run` does. Counters: bytes_per_pixel, the peak
+// RSS increase over the run per camera pixel; estimate_per_pixel, FlatlandRunBytes per pixel.
+void BM_RunMemory(benchmark::State& state) {
+    FlatScene scene;
+    scene.name = "single_plane";
+    scene.camera.wsPosition = {0, 2};
+    scene.camera.wsDirection = Vec2(-1, -0.55).normalized();
+    scene.camera.fovDeg = 60;
+    scene.camera.pixels = static_cast<int>(state.range(0));
+    scene.camera.near = 0.1;
+    scene.camera.far = 100;
+    scene.wsLight = {-0.484, 10};
+    scene.lexels = 1000;
+    scene.geometry = {{{-60, 0}, {20, 0}}};
+    double peak = 0.0;
+    for (auto _ : state) {
+        const double bytes = lexel::bench::PeakRssIncrease([&] {
+            benchmark::DoNotOptimize(
+                RunFlatlandCase(scene, FlatlandMethodNames(), Metric::kL1).methods.size());
+        });
+        peak = std::max(peak, bytes);
+    }
+    if (peak > 0) state.counters["bytes_per_pixel"] = peak / scene.camera.pixels;
+    state.counters["estimate_per_pixel"] = FlatlandRunBytes(SizesOf(scene)) / scene.camera.pixels;
+}
+BENCHMARK(BM_RunMemory)->Arg(1'000'000)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 

@@ -27,7 +27,9 @@
 //     (per frame, without its 3D hull), hull3d_ms (per frame) and hull3d_ms_per_light_of_4
 //     (amortized over Table 3's 4 lights; timed once per 4 profiled lights), then per light
 //     sampling ms (step 1: standard map + readback shading + samples), hull_ms (the 2D hull),
-//     search_ms, refine_ms; optimal_with_hull3d_ms = optimal_ms + hull3d_ms_per_light_of_4.
+//     search_ms, refine_ms; optimal_with_hull3d_ms = optimal_ms + hull3d_ms_per_light_of_4;
+//   - BM_WalkthroughRunMemory: bytes per camera pixel that a run of the first light holds at
+//     its peak (issue 16; the flatland counterpart is flatland_bench's BM_RunMemory).
 //
 //   ./build/bench/spatial_bench --benchmark_counters_tabular=true
 //   ./build/bench/spatial_bench --benchmark_filter=Walkthrough --benchmark_min_time=0.2
@@ -46,6 +48,7 @@
 #include <vector>
 
 #include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/run/spatial_run.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/baselines.h"
 #include "lexel/spatial/harness/methods.h"
@@ -54,6 +57,7 @@
 #include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/samples.h"
+#include "peak_rss.h"
 
 namespace {
 
@@ -599,6 +603,30 @@ void BM_WalkthroughProfile(benchmark::State& state) {
     state.counters["candidates_rejected"] = rejected / calls;
 }
 BENCHMARK(BM_WalkthroughProfile)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Memory (issue 16): a `lexel run` of walkthrough.json's first light (every method, the focused
+// truth map, no camera path) on the CPU backend, at the case's camera resolution. Counter
+// bytes_per_pixel: the peak RSS increase over the run per camera pixel (the 4000² truth map and
+// the shadow maps are counted in it, since they are what a run at this resolution holds).
+void BM_WalkthroughRunMemory(benchmark::State& state) {
+    lexel::spatial::Scene scene =
+        lexel::cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
+    scene.lights.resize(1);
+    scene.cameraPath.clear();
+    lexel::cases::SpatialRunOptions options;
+    options.methods = SpatialMethodNames();
+    double peak = 0.0;
+    for (auto _ : state) {
+        const double bytes = lexel::bench::PeakRssIncrease([&] {
+            benchmark::DoNotOptimize(lexel::cases::RunSpatialCase(scene, options).outcomes.size());
+        });
+        peak = std::max(peak, bytes);
+    }
+    const double pixels = static_cast<double>(scene.camera.resolution.Count());
+    if (peak > 0) state.counters["bytes_per_pixel"] = peak / pixels;
+    state.counters["camera_pixels"] = pixels;
+}
+BENCHMARK(BM_WalkthroughRunMemory)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 

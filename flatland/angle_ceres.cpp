@@ -4,6 +4,7 @@
 // Ceres.
 #include <ceres/ceres.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lexel/flatland/angle_solvers.h"
@@ -12,30 +13,47 @@ namespace lexel::flatland {
 
 namespace {
 
-// Residual i is the remapped footprint f_i(x) = f0_i (1 + tan(x) T_i)² / ((1 + tan(x) T_hi)(1 +
-// tan(x) T_lo)) (lexel_remap.h, R2), templated so Ceres differentiates it with Jets.
-struct FootprintResiduals {
+// Samples per residual. One residual per sample costs Ceres about 60 bytes each (residual and
+// Jacobian copies in the evaluator, the minimizer and the dense QR); a chunk costs the same once.
+constexpr std::size_t kSamplesPerResidual = 4096;
+
+// Residual k is r_k = sqrt(Σ_{i in chunk k} f_i(x)²), with the remapped footprint
+// f_i(x) = f0_i (1 + tan(x) T_i)² / ((1 + tan(x) T_hi)(1 + tan(x) T_lo)) (lexel_remap.h, R2), so
+// ½Σ r_k² = ½ Σ f_i² = ½ L2 exactly as with one residual per sample. Templated so Ceres
+// differentiates it with Jets.
+struct ChunkResidual {
     const LexelSamples* samples;
+    std::size_t begin, end;
 
     template <typename T>
-    bool operator()(T const* const* parameters, T* residuals) const {
-        const T t = tan(parameters[0][0]);
+    bool operator()(const T* x, T* residual) const {
+        const T t = tan(x[0]);
         const T denom = (1.0 + t * samples->tanHigh) * (1.0 + t * samples->tanLow);
-        for (std::size_t i = 0; i < samples->size(); ++i) {
+        T sum = T(0.0);
+        for (std::size_t i = begin; i < end; ++i) {
             const T u = 1.0 + t * samples->tanOffset[i];
-            residuals[i] = samples->footprint0[i] * u * u / denom;
+            const T f = samples->footprint0[i] * u * u / denom;
+            sum += f * f;
         }
+        residual[0] = sqrt(sum);
         return true;
     }
-
-    static ceres::CostFunction* Create(const LexelSamples* samples) {
-        auto* cost = new ceres::DynamicAutoDiffCostFunction<FootprintResiduals, 1>(
-            new FootprintResiduals{samples});
-        cost->AddParameterBlock(1);
-        cost->SetNumResiduals(static_cast<int>(samples->size()));
-        return cost;
-    }
 };
+
+// Adds one residual block per chunk that holds a non-zero footprint (u > 0 on the valid
+// interval, so a chunk sums to zero only when every f0_i is zero; sqrt has no derivative there
+// and the chunk adds nothing to L2).
+void AddChunkResiduals(const LexelSamples& samples, double* x, ceres::Problem& problem) {
+    for (std::size_t begin = 0; begin < samples.size(); begin += kSamplesPerResidual) {
+        const std::size_t end = std::min(begin + kSamplesPerResidual, samples.size());
+        bool nonZero = false;
+        for (std::size_t i = begin; i < end && !nonZero; ++i) nonZero = samples.footprint0[i] > 0;
+        if (!nonZero) continue;
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ChunkResidual, 1, 1>(
+                                     new ChunkResidual{&samples, begin, end}),
+                                 nullptr, x);
+    }
+}
 
 }  // namespace
 
@@ -54,7 +72,8 @@ AngleSolution SolveL2Ceres(const LexelSamples& samples) {
     for (double start : starts) {
         double x = start;
         ceres::Problem problem;
-        problem.AddResidualBlock(FootprintResiduals::Create(&samples), nullptr, &x);
+        AddChunkResiduals(samples, &x, problem);
+        if (problem.NumResidualBlocks() == 0) break;  // every footprint is zero: any angle
         problem.SetParameterLowerBound(&x, 0, xLo + inset);
         problem.SetParameterUpperBound(&x, 0, xHi - inset);
         ceres::Solver::Options options;
@@ -72,6 +91,9 @@ AngleSolution SolveL2Ceres(const LexelSamples& samples) {
         const double value = AngleObjective(samples, Metric::kL2, t);
         if (value < best.objective) best = {t, WsAxisFromT(samples, t), value, 0, {}};
     }
+    if (!std::isfinite(best.objective))  // no residual block: every footprint is zero
+        best = {0.0, WsAxisFromT(samples, 0.0), AngleObjective(samples, Metric::kL2, 0.0), 0,
+                "every footprint is zero; initial angle"};
     best.iterations = iterations;
     return best;
 }

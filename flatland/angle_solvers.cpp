@@ -37,22 +37,41 @@ AngleSolution BoundaryFallback(const LexelSamples& samples, Metric metric) {
                     : MakeSolution(samples, b, fb, 2, "no interior critical point; boundary");
 }
 
+// The least objective over candidate t inside the valid interval, taken one at a time (nothing
+// stored per candidate; the first of equal values wins).
+class CandidateSearch {
+  public:
+    CandidateSearch(const LexelSamples& samples, Metric metric)
+        : samples_(samples), metric_(metric), valid_(ValidTInterval(samples)) {
+        best_.objective = kInf;
+    }
+    void Consider(double t) {
+        if (!valid_.Contains(t)) return;
+        const double value = AngleObjective(samples_, metric_, t);
+        ++evaluated_;
+        if (value < best_.objective) best_ = MakeSolution(samples_, t, value, evaluated_);
+    }
+    AngleSolution Result() const {
+        if (!std::isfinite(best_.objective)) return BoundaryFallback(samples_, metric_);
+        AngleSolution best = best_;
+        best.iterations = evaluated_;
+        return best;
+    }
+
+  private:
+    const LexelSamples& samples_;
+    Metric metric_;
+    ValidInterval valid_;
+    AngleSolution best_;
+    int evaluated_ = 0;
+};
+
 // Least objective over candidate roots inside the valid interval.
 AngleSolution BestCandidate(const LexelSamples& samples, Metric metric,
                             const std::vector<double>& candidates) {
-    const ValidInterval valid = ValidTInterval(samples);
-    AngleSolution best;
-    best.objective = kInf;
-    int evaluated = 0;
-    for (double t : candidates) {
-        if (!valid.Contains(t)) continue;
-        const double value = AngleObjective(samples, metric, t);
-        ++evaluated;
-        if (value < best.objective) best = MakeSolution(samples, t, value, evaluated);
-    }
-    if (!std::isfinite(best.objective)) return BoundaryFallback(samples, metric);
-    best.iterations = evaluated;
-    return best;
+    CandidateSearch search(samples, metric);
+    for (double t : candidates) search.Consider(t);
+    return search.Result();
 }
 
 }  // namespace
@@ -153,34 +172,37 @@ AngleSolution SolveLinfExact(const LexelSamples& samples) {
     // Upper envelope (convex hull trick): sort by slope; among equal slopes keep the highest.
     std::sort(lines.begin(), lines.end(),
               [](const Line& x, const Line& y) { return x.b < y.b || (x.b == y.b && x.a > y.a); });
-    std::vector<Line> hull;
+    // The hull is a stack kept in place as the prefix lines[0, h): h never passes the read index,
+    // so no second array per sample (flatland/memory.h).
     auto crossAt = [](const Line& x, const Line& y) { return (x.a - y.a) / (y.b - x.b); };
-    for (const Line& line : lines) {
-        if (!hull.empty() && hull.back().b == line.b) continue;  // lower duplicate slope
+    std::size_t h = 0;
+    for (std::size_t r = 0; r < lines.size(); ++r) {
+        const Line line = lines[r];
+        if (h > 0 && lines[h - 1].b == line.b) continue;  // lower duplicate slope
         // The top of the stack is hidden once the new line overtakes the one beneath it no later
         // than the top does.
-        while (hull.size() >= 2 &&
-               crossAt(hull[hull.size() - 2], line) <= crossAt(hull[hull.size() - 2], hull.back()))
-            hull.pop_back();
-        hull.push_back(line);
+        while (h >= 2 && crossAt(lines[h - 2], line) <= crossAt(lines[h - 2], lines[h - 1])) --h;
+        lines[h++] = line;
     }
+    lines.resize(h);
+    const std::vector<Line>& hull = lines;
     const ValidInterval valid = ValidTInterval(samples);
     const double p = samples.tanHigh + samples.tanLow, q = samples.tanHigh * samples.tanLow;
-    std::vector<double> candidates;
+    CandidateSearch search(samples, Metric::kLinf);
     for (std::size_t k = 0; k < hull.size(); ++k) {
         const double from = k == 0 ? -kInf : crossAt(hull[k - 1], hull[k]);
         const double to = k + 1 == hull.size() ? kInf : crossAt(hull[k], hull[k + 1]);
         const double lo = std::max(from, valid.lo), hi = std::min(to, valid.hi);
         if (!(lo < hi)) continue;
-        if (lo > valid.lo) candidates.push_back(lo);  // interior breakpoints
-        if (hi < valid.hi) candidates.push_back(hi);
+        if (lo > valid.lo) search.Consider(lo);  // interior breakpoints
+        if (hi < valid.hi) search.Consider(hi);
         const double denom = hull[k].b * p - 2.0 * hull[k].a * q;
         if (denom != 0.0) {
             const double t = (hull[k].a * p - 2.0 * hull[k].b) / denom;
-            if (t > lo && t < hi) candidates.push_back(t);
+            if (t > lo && t < hi) search.Consider(t);
         }
     }
-    return BestCandidate(samples, Metric::kLinf, candidates);
+    return search.Result();
 }
 
 AngleSolution SolveL2Newton(const LexelSamples& samples, const NewtonRestartOptions& options) {

@@ -68,9 +68,10 @@ struct NewtonRestartOptions {
 };
 AngleSolution SolveL2Newton(const LexelSamples& samples, const NewtonRestartOptions& options = {});
 
-// Ceres least squares over the angle x with residuals f_i(x) (so ½Σr² = ½L2), automatic
-// differentiation through the templated remap, x bounded to the valid interval, started from
-// x = 0 and from points spread over the valid interval; the least objective wins.
+// Ceres least squares over the angle x with one residual r_k = sqrt(Σ f_i(x)²) per chunk of 4096
+// samples (so ½Σr² = ½L2, as with a residual per sample, without Ceres's per-residual memory),
+// automatic differentiation through the templated remap, x bounded to the valid interval, started
+// from x = 0 and from points spread over the valid interval; the least objective wins.
 AngleSolution SolveL2Ceres(const LexelSamples& samples);
 
 // Brute-force reference: the metric at `cells` evenly spaced angles over the valid interval, then

@@ -49,8 +49,7 @@ BaselineAxis PsmAxisImpl(const FlatScene& scene, const SamplingPass& pass, PsmFi
     const double tanHalf = std::tan(Radians(0.5 * cam.fovDeg));
     double n = cam.near, f = cam.far;
     if (!(n > 0.0) || !std::isfinite(f)) {
-        n = INFINITY, f = 0.0;
-        for (const auto& s : pass.samples) n = std::min(n, s.depth), f = std::max(f, s.depth);
+        n = pass.depthNear, f = pass.depthFar;
         f = std::max(f, n * (1.0 + 1e-9));  // a single depth: keep the depth map invertible
     }
     // Camera projection to PPS (homogeneous): (x_c, y_c, 1) ↦ (y_c / tan(fov/2), A x_c − B, x_c),
@@ -67,28 +66,29 @@ BaselineAxis PsmAxisImpl(const FlatScene& scene, const SamplingPass& pass, PsmFi
     // light in front of the camera (w_L > 0) this is P − L'; behind it (w_L < 0) the ray passes
     // through infinity and arrives from the far side, L' − P; on the view plane (w_L = 0) the
     // light is directional in PPS.
-    std::vector<Vec2> pps(pass.samples.size());
-    std::vector<double> rayAngle(pass.samples.size());
-    double ref = 0.0;
-    for (std::size_t i = 0; i < pass.samples.size(); ++i) {
+    // Nothing per sample is stored (flatland/memory.h): the PPS points are recomputed per loop.
+    const auto ppsAt = [&](const FlatSample& s) {
         double X, Z, w;
-        toPps(pass.samples[i].wsPoint, X, Z, w);
-        pps[i] = {X / w, Z / w};
-        const Vec2 dir = lw * pps[i] - Vec2{lX, lZ};
+        toPps(s.wsPoint, X, Z, w);
+        return Vec2{X / w, Z / w};
+    };
+    double ref = 0.0, lo = INFINITY, hi = -INFINITY;
+    for (std::size_t i = 0; i < pass.samples.size(); ++i) {
+        const Vec2 dir = lw * ppsAt(pass.samples[i]) - Vec2{lX, lZ};
         const double angle = std::atan2(dir.y(), dir.x());
         if (i == 0) ref = angle;
-        rayAngle[i] = WrapAngle(angle - ref);
+        const double rayAngle = WrapAngle(angle - ref);
+        lo = std::min(lo, rayAngle), hi = std::max(hi, rayAngle);
     }
-    const auto [lo, hi] = std::minmax_element(rayAngle.begin(), rayAngle.end());
-    if (*hi - *lo >= std::numbers::pi)
+    if (hi - lo >= std::numbers::pi)
         return {pass.wsAxis0, "PPS rays span 180 degrees or more; normal axis used"};
-    const double axis = ref + 0.5 * (*lo + *hi);
+    const double axis = ref + 0.5 * (lo + hi);
     const Vec2 a{std::cos(axis), std::sin(axis)};
     const Vec2 cameraAxis = d;
     double c = INFINITY;
     if (film == PsmFilm::kNearPlane) {
         // Near plane as far forward as possible: through the first point the rays reach.
-        for (const Vec2& p : pps) c = std::min(c, a.dot(p));
+        for (const FlatSample& s : pass.samples) c = std::min(c, a.dot(ppsAt(s)));
     } else {
         // The pole: the PPS line through the light perpendicular to a. A light on the view plane
         // (w_L = 0, within 1e-12 of the scene's depth scale) has the line at infinity as its pole,

@@ -8,6 +8,7 @@
 #include "lexel/flatland/baselines.h"
 #include "lexel/flatland/frustum_split.h"
 #include "lexel/flatland/lexel_remap.h"
+#include "lexel/flatland/memory.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/flatland/sampling.h"
 #include "lexel/flatland/scene.h"

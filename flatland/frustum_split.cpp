@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -31,20 +32,26 @@ SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
         throw std::invalid_argument("frustum split: max and budget must be at least 1");
     const int exponent = options.metric == Metric::kL1 ? 1 : 2;
     const auto& samples = decision.samples;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const auto& s : samples) lo = std::min(lo, s.lsAngle), hi = std::max(hi, s.lsAngle);
+    const double lo = decision.lsLow, hi = decision.lsHigh;  // the samples' extreme lsAngle
     const int wedges = options.max;
     const double width = (hi - lo) / wedges;
-    // Bucket the samples by wedge.
-    std::vector<std::vector<std::size_t>> bucket(wedges);
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        const int w = std::clamp(static_cast<int>(std::floor((samples[i].lsAngle - lo) / width)), 0,
-                                 wedges - 1);
-        bucket[w].push_back(i);
+    // Bucket the samples by wedge (a counting sort: one 4-byte index per sample,
+    // flatland/memory.h).
+    const auto wedgeOf = [&](const FlatSample& s) {
+        return std::clamp(static_cast<int>(std::floor((s.lsAngle - lo) / width)), 0, wedges - 1);
+    };
+    std::vector<std::size_t> bucketStart(wedges + 1, 0);  // bucket w is [start[w], start[w+1])
+    for (const auto& s : samples) ++bucketStart[wedgeOf(s) + 1];
+    for (int w = 0; w < wedges; ++w) bucketStart[w + 1] += bucketStart[w];
+    std::vector<std::uint32_t> byWedge(samples.size());
+    {
+        std::vector<std::size_t> next(bucketStart.begin(), bucketStart.end() - 1);
+        for (std::size_t i = 0; i < samples.size(); ++i)
+            byWedge[next[wedgeOf(samples[i])]++] = static_cast<std::uint32_t>(i);
     }
     std::vector<int> occupied;
     for (int w = 0; w < wedges; ++w)
-        if (!bucket[w].empty()) occupied.push_back(w);
+        if (bucketStart[w + 1] > bucketStart[w]) occupied.push_back(w);
     const int n = static_cast<int>(occupied.size());
 
     // A group of occupied wedges [a, b] (indices into `occupied`), optimized at N = 1 and cached.
@@ -52,14 +59,20 @@ SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
     auto group = [&](int a, int b) -> const Group& {
         auto it = cache.find({a, b});
         if (it != cache.end()) return it->second;
+        // The wedges between occupied[a] and occupied[b] are contiguous in byWedge, in wedge
+        // order and, within a wedge, in sample order.
+        const std::size_t first = bucketStart[occupied[a]], last = bucketStart[occupied[b] + 1];
         std::vector<double> angle, g;
-        for (int k = a; k <= b; ++k)
-            for (std::size_t i : bucket[occupied[k]])
-                angle.push_back(samples[i].lsAngle), g.push_back(samples[i].dpdAngle);
+        angle.reserve(last - first), g.reserve(last - first);
+        for (std::size_t k = first; k < last; ++k) {
+            const FlatSample& s = samples[byWedge[k]];
+            angle.push_back(s.lsAngle), g.push_back(PixelsPerRadian(decision, s));
+        }
         // Outer bounds are the samples' own extremes, exactly; inner ones are wedge edges.
         const double gLow = occupied[a] == 0 ? lo : lo + occupied[a] * width;
         const double gHigh = occupied[b] == wedges - 1 ? hi : lo + (occupied[b] + 1) * width;
-        const LexelSamples ls = MakeLexelSamples(angle, g, decision.wsAxis0, 1.0, gLow, gHigh);
+        const LexelSamples ls =
+            MakeLexelSamples(std::move(angle), std::move(g), decision.wsAxis0, 1.0, gLow, gHigh);
         const AngleSolution sol = exponent == 1 ? SolveL1Exact(ls) : SolveL2Exact(ls);
         Group out{gLow, gHigh, sol.wsAxis, sol.objective, AllocationTerm(sol.objective, exponent)};
         return cache.emplace(std::make_pair(a, b), out).first->second;
@@ -130,10 +143,10 @@ SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
 }
 
 MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full,
-                           const SplitResult& split) {
+                           const SplitResult& split, bool keepFootprints) {
     const std::size_t count = split.frusta.size();
-    std::vector<SamplingPass> parts(count);
-    std::vector<std::vector<std::size_t>> partIndex(count);  // full-pass index of each part sample
+    // Full-pass indices of each frustum's samples: 4 bytes per sample (flatland/memory.h).
+    std::vector<std::vector<std::uint32_t>> partIndex(count);
     std::vector<double> low(count), high(count);
     for (std::size_t j = 0; j < count; ++j)
         low[j] = split.frusta[j].lsLow, high[j] = split.frusta[j].lsHigh;
@@ -148,8 +161,7 @@ MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full,
                                                             : 0.0;
             if (d < distance) distance = d, owner = j;
         }
-        parts[owner].samples.push_back(s);
-        partIndex[owner].push_back(i);
+        partIndex[owner].push_back(static_cast<std::uint32_t>(i));
         low[owner] = std::min(low[owner], rel);
         high[owner] = std::max(high[owner], rel);
     }
@@ -162,21 +174,25 @@ MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full,
         fr.wsRayHighDeg = Degrees(split.wsAxis0 + high[j]);
         fr.lexels = planned.lexels;
         double axis = planned.wsAxis;
-        auto f = FootprintsFromScratch(parts[j], scene.wsLight, axis, planned.lexels,
+        auto f = FootprintsFromScratch(full, partIndex[j], scene.wsLight, axis, planned.lexels,
                                        split.wsAxis0 + low[j], split.wsAxis0 + high[j]);
         if (!f) {  // widened bounds left the planned axis invalid: use the widened bisector
             axis = split.wsAxis0 + 0.5 * (low[j] + high[j]);
-            f = FootprintsFromScratch(parts[j], scene.wsLight, axis, planned.lexels,
+            f = FootprintsFromScratch(full, partIndex[j], scene.wsLight, axis, planned.lexels,
                                       split.wsAxis0 + low[j], split.wsAxis0 + high[j]);
             report.note = "a frustum's axis was reset to its bisector after widening";
         }
         fr.lexelPlaneDeg = LexelPlaneDegFromAxis(axis);
         fr.wsAxis = axis;
-        fr.stats = SummarizeFootprints(*f);
         for (std::size_t k = 0; k < f->size(); ++k) report.footprints[partIndex[j][k]] = (*f)[k];
+        fr.stats = SummarizeFootprintsInPlace(*f);
+        std::vector<std::uint32_t>().swap(partIndex[j]);  // released as soon as it is measured
         report.frusta.push_back(fr);
     }
-    report.stats = SummarizeFootprints(report.footprints);
+    if (keepFootprints)
+        report.stats = SummarizeFootprints(report.footprints);
+    else
+        report.stats = SummarizeFootprintsInPlace(report.footprints), report.footprints = {};
     report.lexelPlaneDeg = report.frusta.empty() ? 0.0 : report.frusta.front().lexelPlaneDeg;
     report.wsAxis = report.frusta.empty() ? 0.0 : report.frusta.front().wsAxis;
     return report;

@@ -50,8 +50,9 @@ SplitResult SplitLightFrustum(const SamplingPass& decision, int lexels,
 
 // Measures a planned split at full resolution: each full-resolution sample goes to the frustum
 // whose bounds hold its light angle (one in a gap goes to the nearer frustum, whose bound then
-// widens to include it), footprints are computed from scratch in world space.
+// widens to include it), footprints are computed from scratch in world space. The report keeps
+// the per-pixel footprints only with keepFootprints (as RunFlatlandCase).
 MethodReport EvaluateSplit(const FlatScene& scene, const SamplingPass& full,
-                           const SplitResult& split);
+                           const SplitResult& split, bool keepFootprints = false);
 
 }  // namespace lexel::flatland

@@ -17,32 +17,57 @@ LexelSamples MakeLexelSamples(std::span<const double> lsAngle, std::span<const d
 
 LexelSamples MakeLexelSamples(std::span<const double> lsAngle, std::span<const double> dpdAngle,
                               double wsAxisRef, double lexels, double lsLow, double lsHigh) {
+    return MakeLexelSamples(std::vector<double>(lsAngle.begin(), lsAngle.end()),
+                            std::vector<double>(dpdAngle.begin(), dpdAngle.end()), wsAxisRef,
+                            lexels, lsLow, lsHigh);
+}
+
+namespace {
+
+// θ0, T_lo, T_hi and N of a frustum spanning light angles [lsLow, lsHigh] relative to wsAxisRef.
+LexelSamples LexelFrame(double wsAxisRef, double lexels, double lsLow, double lsHigh) {
     LexelSamples out;
     out.lexels = lexels;
-    const double mid = 0.5 * (lsLow + lsHigh);
     const double half = 0.5 * (lsHigh - lsLow);
-    out.wsAxis0 = wsAxisRef + mid;
+    out.wsAxis0 = wsAxisRef + 0.5 * (lsLow + lsHigh);
     out.tanLow = -std::tan(half);
     out.tanHigh = std::tan(half);
+    return out;
+}
+
+}  // namespace
+
+LexelSamples MakeLexelSamples(std::vector<double>&& lsAngle, std::vector<double>&& dpdAngle,
+                              double wsAxisRef, double lexels, double lsLow, double lsHigh) {
+    LexelSamples out = LexelFrame(wsAxisRef, lexels, lsLow, lsHigh);
+    const double mid = 0.5 * (lsLow + lsHigh);
     const double width = out.tanHigh - out.tanLow;  // W(θ0)
-    out.tanOffset.resize(lsAngle.size());
-    out.footprint0.resize(lsAngle.size());
-    for (std::size_t i = 0; i < lsAngle.size(); ++i) {
-        const double a = lsAngle[i] - mid;
+    out.tanOffset = std::move(lsAngle);
+    out.footprint0 = std::move(dpdAngle);
+    for (std::size_t i = 0; i < out.tanOffset.size(); ++i) {
+        const double a = out.tanOffset[i] - mid;
         const double c = std::cos(a);
         out.tanOffset[i] = std::tan(a);
-        out.footprint0[i] = dpdAngle[i] * width * c * c / lexels;  // (R1) at θ = θ0
+        out.footprint0[i] = out.footprint0[i] * width * c * c / lexels;  // (R1) at θ = θ0
     }
     return out;
 }
 
 LexelSamples MakeLexelSamples(const SamplingPass& pass, double lexels) {
+    if (pass.samples.empty()) return LexelSamples{pass.wsAxis0, 0.0, 0.0, lexels, {}, {}};
     std::vector<double> angle(pass.samples.size()), g(pass.samples.size());
     for (std::size_t i = 0; i < pass.samples.size(); ++i) {
         angle[i] = pass.samples[i].lsAngle;
-        g[i] = pass.samples[i].dpdAngle;
+        g[i] = PixelsPerRadian(pass, pass.samples[i]);
     }
-    return MakeLexelSamples(angle, g, pass.wsAxis0, lexels);
+    // pass.lsLow/lsHigh are the extremes of the samples' lsAngle (sampling.h).
+    return MakeLexelSamples(std::move(angle), std::move(g), pass.wsAxis0, lexels, pass.lsLow,
+                            pass.lsHigh);
+}
+
+LexelSamples MakeLexelFrame(const SamplingPass& pass, double lexels) {
+    if (pass.samples.empty()) return LexelSamples{pass.wsAxis0, 0.0, 0.0, lexels, {}, {}};
+    return LexelFrame(pass.wsAxis0, lexels, pass.lsLow, pass.lsHigh);
 }
 
 double LexelCoordinate(const LexelSamples& samples, std::size_t i) {
@@ -76,25 +101,29 @@ std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pas
     return FootprintsFromScratch(pass, wsLight, wsAxis, lexels, NAN, NAN);
 }
 
-std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
-                                                         const Vec2& wsLight, double wsAxis,
-                                                         double lexels, double wsRayLow,
-                                                         double wsRayHigh) {
+namespace {
+
+// FootprintsFromScratch over all samples (subset false) or over pass.samples[indices[k]].
+std::optional<std::vector<double>> Footprints(const SamplingPass& pass, bool subset,
+                                              std::span<const std::uint32_t> indices,
+                                              const Vec2& wsLight, double wsAxis, double lexels,
+                                              double wsRayLow, double wsRayHigh) {
     const Vec2 a{std::cos(wsAxis), std::sin(wsAxis)};
     const Vec2 b{-a.y(), a.x()};
-    const std::size_t n = pass.samples.size();
-    std::vector<double> film(n), dFilmdLambda(n);
+    const std::size_t n = subset ? indices.size() : pass.samples.size();
+    const auto sampleAt = [&](std::size_t i) -> const FlatSample& {
+        return pass.samples[subset ? indices[i] : i];
+    };
+    // Pass 1: the film extent. Nothing but f is stored per sample (flatland/memory.h); pass 2
+    // recomputes d and its dot products by the same expressions.
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t i = 0; i < n; ++i) {
-        const auto& s = pass.samples[i];
-        const Vec2 d = s.wsPoint - wsLight;
+        const Vec2 d = sampleAt(i).wsPoint - wsLight;
         const double da = d.dot(a);
         if (!(da > 0.0)) return std::nullopt;
-        film[i] = d.dot(b) / da;
-        // d/dλ [(d·b)/(d·a)] with dd/dλ = e.
-        dFilmdLambda[i] = (s.wsTangent.dot(b) * da - d.dot(b) * s.wsTangent.dot(a)) / (da * da);
-        lo = std::min(lo, film[i]);
-        hi = std::max(hi, film[i]);
+        const double film = d.dot(b) / da;
+        lo = std::min(lo, film);
+        hi = std::max(hi, film);
     }
     if (!std::isnan(wsRayLow)) {
         // Film coordinates of the bounding rays: s = tan(β − θ); both must be in front.
@@ -107,9 +136,33 @@ std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pas
     }
     std::vector<double> f(n);
     const double lexelsPerFilm = lexels / (hi - lo);
-    for (std::size_t i = 0; i < n; ++i)
-        f[i] = std::abs(pass.samples[i].dpdLambda / (lexelsPerFilm * dFilmdLambda[i]));
+    for (std::size_t i = 0; i < n; ++i) {
+        const FlatSample& s = sampleAt(i);
+        const Vec2 d = s.wsPoint - wsLight;
+        const Vec2 e = SegmentTangent(pass, s);
+        const double da = d.dot(a);
+        // d/dλ [(d·b)/(d·a)] with dd/dλ = e.
+        const double dFilmdLambda = (e.dot(b) * da - d.dot(b) * e.dot(a)) / (da * da);
+        f[i] = std::abs(PixelsPerLambda(pass, s) / (lexelsPerFilm * dFilmdLambda));
+    }
     return f;
+}
+
+}  // namespace
+
+std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
+                                                         const Vec2& wsLight, double wsAxis,
+                                                         double lexels, double wsRayLow,
+                                                         double wsRayHigh) {
+    return Footprints(pass, false, {}, wsLight, wsAxis, lexels, wsRayLow, wsRayHigh);
+}
+
+std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
+                                                         std::span<const std::uint32_t> indices,
+                                                         const Vec2& wsLight, double wsAxis,
+                                                         double lexels, double wsRayLow,
+                                                         double wsRayHigh) {
+    return Footprints(pass, true, indices, wsLight, wsAxis, lexels, wsRayLow, wsRayHigh);
 }
 
 }  // namespace lexel::flatland

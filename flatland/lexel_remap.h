@@ -22,6 +22,7 @@
 // (α, g) of the wedge's samples is that rescaling done exactly (tests check the equivalence).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -45,9 +46,15 @@ struct LexelSamples {
 LexelSamples MakeLexelSamples(std::span<const double> lsAngle, std::span<const double> dpdAngle,
                               double wsAxisRef, double lexels);
 LexelSamples MakeLexelSamples(const SamplingPass& pass, double lexels);
+// MakeLexelSamples(pass, lexels) without the per-sample vectors: θ0, T_lo, T_hi and N only, for
+// ValidTInterval and WsAxisFromT on a pass whose samples need not be optimized over.
+LexelSamples MakeLexelFrame(const SamplingPass& pass, double lexels);
 // As above with the frustum's extents given as light angles [lsLow, lsHigh] (relative to
 // wsAxisRef) instead of the samples' own extremes; every angle must lie inside them.
 LexelSamples MakeLexelSamples(std::span<const double> lsAngle, std::span<const double> dpdAngle,
+                              double wsAxisRef, double lexels, double lsLow, double lsHigh);
+// The same, converting the two vectors in place into tanOffset and footprint0 (no copy).
+LexelSamples MakeLexelSamples(std::vector<double>&& lsAngle, std::vector<double>&& dpdAngle,
                               double wsAxisRef, double lexels, double lsLow, double lsHigh);
 
 // l_i at θ0, in [0, N].
@@ -81,6 +88,12 @@ std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pas
 // As above for a frustum bounded by the world rays at angles wsRayLow < wsRayHigh (radians)
 // rather than by its samples' extremes.
 std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
+                                                         const Vec2& wsLight, double wsAxis,
+                                                         double lexels, double wsRayLow,
+                                                         double wsRayHigh);
+// As above for the samples pass.samples[indices[k]] only (a frustum's), in that order.
+std::optional<std::vector<double>> FootprintsFromScratch(const SamplingPass& pass,
+                                                         std::span<const std::uint32_t> indices,
                                                          const Vec2& wsLight, double wsAxis,
                                                          double lexels, double wsRayLow,
                                                          double wsRayHigh);

@@ -37,7 +37,7 @@ namespace {
 // clamped one part in 1e3 of the valid range inside the nearer end, and the note says so.
 MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full,
                           const LexelSamples& fullSamples, std::string method, double wsAxis,
-                          std::string note, double solveMs) {
+                          std::string note, double solveMs, bool keepFootprints) {
     const ValidInterval valid = ValidTInterval(fullSamples);
     double t = std::tan(wsAxis - fullSamples.wsAxis0);
     if (!valid.Contains(t) || !std::isfinite(t)) {
@@ -50,13 +50,17 @@ MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full,
         note += (note.empty() ? "" : "; ") + std::string("angle clamped into the valid range");
     }
     const double axis = WsAxisFromT(fullSamples, t);
-    const auto footprints = FootprintsFromScratch(full, scene.wsLight, axis, scene.lexels);
+    auto footprints = FootprintsFromScratch(full, scene.wsLight, axis, scene.lexels);
     MethodReport report;
     report.method = std::move(method);
     report.lexelPlaneDeg = LexelPlaneDegFromAxis(axis);
-    report.stats = SummarizeFootprints(*footprints);
+    if (keepFootprints) {
+        report.stats = SummarizeFootprints(*footprints);
+        report.footprints = std::move(*footprints);
+    } else {
+        report.stats = SummarizeFootprintsInPlace(*footprints);
+    }
     report.wsAxis = axis;
-    report.footprints = std::move(*footprints);
     report.solveMs = solveMs;
     report.note = std::move(note);
     return report;
@@ -66,7 +70,7 @@ MethodReport EvaluateAxis(const FlatScene& scene, const SamplingPass& full,
 
 CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods,
                            Metric metric, std::shared_ptr<const SamplingPass> fullPass,
-                           const SamplingPass* decisionPass) {
+                           const SamplingPass* decisionPass, bool keepFootprints) {
     for (const auto& m : methods)
         if (!IsFlatlandMethod(m))
             throw std::invalid_argument("unknown flatland method '" + m + "'");
@@ -91,37 +95,44 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
     const SamplingPass& decision = decisionPass ? *decisionPass : coarse ? *coarse : full;
     report.samplingMs = timer.Ms();
     report.pixelsVisible = static_cast<int>(full.samples.size());
-    const LexelSamples fullSamples = MakeLexelSamples(full, scene.lexels);
-    const LexelSamples samples = MakeLexelSamples(decision, scene.lexels);
+    // Only the frame of the full pass is needed (the axis's validity); the decision samples are
+    // built when a single-frustum method first needs them and released before a split, whose
+    // planning builds its own per frustum (flatland/memory.h counts one set at a time).
+    const LexelSamples fullFrame = MakeLexelFrame(full, scene.lexels);
+    std::optional<LexelSamples> samples;
+    const auto decisionSamples = [&]() -> const LexelSamples& {
+        if (!samples) samples = MakeLexelSamples(decision, scene.lexels);
+        return *samples;
+    };
 
     for (const std::string& method : methods) {
         timer.Restart();
         if (method == "split-greedy" || method == "split-dp") {
+            samples.reset();
             const FrustaOptions options = scene.frusta.value_or(FrustaOptions{});
             const SplitResult split = SplitLightFrustum(
                 decision, scene.lexels, options,
                 method == "split-dp" ? SplitStrategy::kDynamicProgram : SplitStrategy::kGreedy);
             const double ms = timer.Ms();
-            MethodReport r = EvaluateSplit(scene, full, split);
+            MethodReport r = EvaluateSplit(scene, full, split, keepFootprints);
             r.method = method;
             r.solveMs = ms;
             report.methods.push_back(std::move(r));
             continue;
         }
         AngleSolution solution;
-        std::string note;
         if (method == "optimal-l1")
-            solution = SolveL1Exact(samples);
+            solution = SolveL1Exact(decisionSamples());
         else if (method == "optimal-l2")
-            solution = SolveL2Exact(samples);
+            solution = SolveL2Exact(decisionSamples());
         else if (method == "optimal-l2-newton")
-            solution = SolveL2Newton(samples);
+            solution = SolveL2Newton(decisionSamples());
         else if (method == "optimal-l2-ceres")
-            solution = SolveL2Ceres(samples);
+            solution = SolveL2Ceres(decisionSamples());
         else if (method == "optimal-linf")
-            solution = SolveLinfExact(samples);
+            solution = SolveLinfExact(decisionSamples());
         else if (method == "sweep")
-            solution = SolveSweep(samples, metric);
+            solution = SolveSweep(decisionSamples(), metric);
         else {
             BaselineAxis axis;
             if (method == "normal")
@@ -136,8 +147,8 @@ CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> 
             solution.note = axis.note;
         }
         const double ms = timer.Ms();
-        report.methods.push_back(
-            EvaluateAxis(scene, full, fullSamples, method, solution.wsAxis, solution.note, ms));
+        report.methods.push_back(EvaluateAxis(scene, full, fullFrame, method, solution.wsAxis,
+                                              solution.note, ms, keepFootprints));
     }
     return report;
 }

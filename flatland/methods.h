@@ -30,7 +30,8 @@ struct MethodReport {
     std::string note;                   // fallbacks and clamps, if any
     std::vector<FrustumReport> frusta;  // split methods only
     double wsAxis = 0.0;                // optical axis, world radians (first frustum's when split)
-    std::vector<double> footprints;     // f per visible full-resolution pixel, in fullPass order
+    std::vector<double> footprints;     // f per visible full-resolution pixel, in fullPass order,
+                                        // when RunFlatlandCase is asked to keep them
 };
 
 struct CaseReport {
@@ -51,8 +52,11 @@ bool IsFlatlandMethod(std::string_view name);
 // `fullPass`, when given, must be RunSamplingPass(scene, scene.camera.pixels), and
 // `decisionPass` RunSamplingPass(scene, scene.DecisionPixels()): callers that run one scene
 // repeatedly with different decision resolutions pass them to avoid recomputing them.
+// Each method's footprints are kept (8 bytes per visible pixel and method) only with
+// keepFootprints (figures need them); otherwise MethodReport::footprints is empty and the run
+// stays within FlatlandRunBytes (flatland/memory.h).
 CaseReport RunFlatlandCase(const FlatScene& scene, std::span<const std::string> methods,
                            Metric metric, std::shared_ptr<const SamplingPass> fullPass = nullptr,
-                           const SamplingPass* decisionPass = nullptr);
+                           const SamplingPass* decisionPass = nullptr, bool keepFootprints = false);
 
 }  // namespace lexel::flatland

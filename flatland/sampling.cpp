@@ -1,5 +1,6 @@
 #include "lexel/flatland/sampling.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -10,7 +11,15 @@
 
 namespace lexel::flatland {
 
-namespace {}  // namespace
+namespace {
+
+// dα/dλ = (d_L × e) / |d_L|², d_L = X − L: the light angle's rate along the segment.
+double LightAngleDerivative(const Vec2& wsLight, const Vec2& wsPoint, const Vec2& wsTangent) {
+    const Vec2 toPoint = wsPoint - wsLight;
+    return Cross(toPoint, wsTangent) / toPoint.squaredNorm();
+}
+
+}  // namespace
 
 std::optional<RayHit> CastPixelRay(const FlatCamera& camera,
                                    const std::vector<FlatSegment>& segments, int pixels, double p) {
@@ -47,34 +56,42 @@ double PixelDerivativeAlong(const FlatCamera& camera, int pixels, const Vec2& ws
     return scale * (wsTangent.dot(u) * xc - wsTangent.dot(d) * yc) / (xc * xc);
 }
 
+double PixelsPerLambda(const SamplingPass& pass, const FlatSample& s) {
+    return PixelDerivativeAlong(pass.camera, pass.pixels, s.wsPoint, SegmentTangent(pass, s));
+}
+
+double PixelsPerRadian(const SamplingPass& pass, const FlatSample& s) {
+    const Vec2 wsTangent = SegmentTangent(pass, s);
+    const double dpdLambda = PixelDerivativeAlong(pass.camera, pass.pixels, s.wsPoint, wsTangent);
+    return std::abs(dpdLambda / LightAngleDerivative(pass.wsLight, s.wsPoint, wsTangent));
+}
+
 std::optional<SamplingPass> TrySamplingPass(const FlatScene& scene, int pixels,
                                             std::optional<DomainError>* defect) {
     const auto fail = [&](DomainError error) -> std::optional<SamplingPass> {
         if (defect) defect->emplace(std::move(error));
         return std::nullopt;
     };
-    const std::vector<FlatSegment> segments = Segments(scene);
     SamplingPass pass;
     pass.pixels = pixels;
+    pass.camera = scene.camera;
+    pass.wsLight = scene.wsLight;
+    pass.segments = Segments(scene);
+    const std::vector<FlatSegment>& segments = pass.segments;
+    // Every pixel may be visible: reserving them all keeps growth from doubling the peak.
     pass.samples.reserve(pixels);
+    pass.depthNear = INFINITY;
     double wsRef = 0.0;  // world angle of the first visible point, to unwrap the others
+    double lo = 0.0, hi = 0.0;
     for (int k = 0; k < pixels; ++k) {
-        const double p = k + 0.5;
-        const auto hit = CastPixelRay(scene.camera, segments, pixels, p);
+        const auto hit = CastPixelRay(scene.camera, segments, pixels, k + 0.5);
         if (!hit) continue;
-        FlatSample s;
-        s.pixel = k;
-        s.p = p;
-        s.wsPoint = hit->wsPoint;
-        s.wsTangent = segments[hit->segment].b - segments[hit->segment].a;
-        s.depth = hit->depth;
-        s.segment = hit->segment;
-        s.dpdLambda = PixelDerivativeAlong(scene.camera, pixels, s.wsPoint, s.wsTangent);
-        const Vec2 toPoint = s.wsPoint - scene.wsLight;
-        const double dAlphadLambda = Cross(toPoint, s.wsTangent) / toPoint.squaredNorm();
+        const Vec2 wsTangent = segments[hit->segment].b - segments[hit->segment].a;
+        const Vec2 toPoint = hit->wsPoint - scene.wsLight;
+        const double dAlphadLambda = LightAngleDerivative(scene.wsLight, hit->wsPoint, wsTangent);
         // A light within 1e-12 rad per unit λ of the segment's line sees the segment edge-on: every
         // pixel on it maps to one lexel and its footprint is unbounded.
-        if (std::abs(dAlphadLambda) * toPoint.norm() <= 1e-12 * s.wsTangent.norm()) {
+        if (std::abs(dAlphadLambda) * toPoint.norm() <= 1e-12 * wsTangent.norm()) {
             const auto& seg = segments[hit->segment];
             return fail(
                 DomainError(Subject::kSegment,
@@ -82,10 +99,16 @@ std::optional<SamplingPass> TrySamplingPass(const FlatScene& scene, int pixels,
                             "dp/dl is unbounded",
                             {seg.polyline, seg.index}));
         }
-        s.dpdAngle = std::abs(s.dpdLambda / dAlphadLambda);
         const double wsAngle = std::atan2(toPoint.y(), toPoint.x());
         if (pass.samples.empty()) wsRef = wsAngle;
+        FlatSample s;
+        s.wsPoint = hit->wsPoint;
         s.lsAngle = WrapAngle(wsAngle - wsRef);  // exact unwrapping while the sweep is < 180°
+        s.pixel = k;
+        s.segment = hit->segment;
+        lo = std::min(lo, s.lsAngle), hi = std::max(hi, s.lsAngle);
+        pass.depthNear = std::min(pass.depthNear, hit->depth);
+        pass.depthFar = std::max(pass.depthFar, hit->depth);
         pass.samples.push_back(s);
     }
     if (pass.samples.empty())
@@ -94,8 +117,6 @@ std::optional<SamplingPass> TrySamplingPass(const FlatScene& scene, int pixels,
 
     // The sweep: with all angles taken relative to one visible point, a set that fits in an open
     // half-plane has relative angles spanning less than π, and one that does not spans at least π.
-    double lo = 0.0, hi = 0.0;
-    for (const auto& s : pass.samples) lo = std::min(lo, s.lsAngle), hi = std::max(hi, s.lsAngle);
     const double sweep = hi - lo;
     if (sweep >= std::numbers::pi * (1.0 - 1e-12))
         return fail(DomainError(
@@ -112,6 +133,8 @@ std::optional<SamplingPass> TrySamplingPass(const FlatScene& scene, int pixels,
     pass.wsAxis0 = WrapAngle(wsRef + mid);
     pass.halfSweep = 0.5 * sweep;
     for (auto& s : pass.samples) s.lsAngle -= mid;
+    // Rounding is monotone, so the extremes of the shifted angles are the shifted extremes.
+    pass.lsLow = lo - mid, pass.lsHigh = hi - mid;
     return pass;
 }
 

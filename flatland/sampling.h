@@ -23,24 +23,40 @@
 
 namespace lexel::flatland {
 
+// One visible pixel: 32 bytes (flatland/memory.h counts on it). Only what cannot be recomputed
+// cheaply is stored; dp/dλ and g = |dp/dα| follow from it and the pass (PixelsPerLambda,
+// PixelsPerRadian below), computed by the same expressions the pass used, so bit for bit.
 struct FlatSample {
-    int pixel = 0;           // k at this pass's resolution
-    double p = 0.0;          // continuous pixel coordinate of the center, k + ½
-    Vec2 wsPoint{0, 0};      // hit point
-    Vec2 wsTangent{0, 0};    // e = B − A of the hit segment
-    double depth = 0.0;      // x_c, distance along the camera direction
-    int segment = 0;         // index into Segments(scene)
-    double dpdLambda = 0.0;  // dp/dλ along e
+    Vec2 wsPoint{0, 0};    // hit point
     double lsAngle = 0.0;  // α − θ0: light angle relative to the pass's reference axis, radians
-    double dpdAngle = 0.0;  // g = |dp/dα|, pixels per radian of light angle
+    int pixel = 0;         // k at this pass's resolution; the pixel center is p = k + ½
+    int segment = 0;       // index into SamplingPass::segments (Segments(scene))
 };
+static_assert(sizeof(FlatSample) == 32, "flatland/memory.h assumes 32 bytes per visible pixel");
 
 struct SamplingPass {
     int pixels = 0;
     double wsAxis0 = 0.0;    // θ0: the normal shadow map's axis, bisecting the light's sweep
     double halfSweep = 0.0;  // Δ/2: half the angular sweep of the visible points from the light
-    std::vector<FlatSample> samples;
+    double lsLow = 0.0, lsHigh = 0.0;        // least and greatest lsAngle of the samples
+    double depthNear = 0.0, depthFar = 0.0;  // least and greatest hit depth x_c of the samples
+    FlatCamera camera;                       // the scene's camera and light, for the derivatives
+    Vec2 wsLight{0, 0};
+    std::vector<FlatSegment> segments;  // Segments(scene)
+    std::vector<FlatSample> samples;    // the visible pixels in pixel order
 };
+
+// p = k + ½, the continuous pixel coordinate of a sample's center.
+inline double PixelCenter(const FlatSample& s) { return s.pixel + 0.5; }
+// e = B − A of the sample's segment.
+inline Vec2 SegmentTangent(const SamplingPass& pass, const FlatSample& s) {
+    const FlatSegment& segment = pass.segments[s.segment];
+    return segment.b - segment.a;
+}
+// dp/dλ along the sample's segment (PixelDerivativeAlong).
+double PixelsPerLambda(const SamplingPass& pass, const FlatSample& s);
+// g = |dp/dα|, pixels per radian of light angle.
+double PixelsPerRadian(const SamplingPass& pass, const FlatSample& s);
 
 struct RayHit {
     Vec2 wsPoint;

@@ -12,8 +12,11 @@
 
 namespace lexel {
 
-FootprintStats SummarizeFootprints(std::span<const double> footprints,
-                                   std::span<const double> weights) {
+namespace {
+
+// Every column but the median.
+FootprintStats SummarizeWithoutMedian(std::span<const double> footprints,
+                                      std::span<const double> weights, long double& sumW) {
     const bool weighted = !weights.empty();
     if (weighted && weights.size() != footprints.size())
         throw std::invalid_argument("footprint weights: expected " +
@@ -22,7 +25,8 @@ FootprintStats SummarizeFootprints(std::span<const double> footprints,
     FootprintStats stats;
     // Pass 1: sums and max. Sums in long double: a million footprints of mixed magnitude must
     // not lose the last digit the thesis tables print.
-    long double sumW = 0, sumWF = 0, sumWF2 = 0;
+    long double sumWF = 0, sumWF2 = 0;
+    sumW = 0;
     for (std::size_t i = 0; i < footprints.size(); ++i) {
         const double f = footprints[i];
         const double w = weighted ? weights[i] : 1.0;
@@ -55,33 +59,53 @@ FootprintStats SummarizeFootprints(std::span<const double> footprints,
     }
     stats.sigma = static_cast<double>(std::sqrt(var / sumW));
     stats.meanPlusSigma = stats.average + stats.sigma;
+    return stats;
+}
 
-    // Median: for unit weights the usual middle (mean of the two middles for an even count);
-    // for general weights the smallest f whose cumulative weight reaches half the total.
+// The usual middle of unit-weight values (mean of the two middles for an even count); reorders f.
+double MedianInPlace(std::span<double> f) {
+    const std::size_t mid = f.size() / 2;
+    std::nth_element(f.begin(), f.begin() + mid, f.end());
+    double median = f[mid];
+    if (f.size() % 2 == 0) median = 0.5 * (median + *std::max_element(f.begin(), f.begin() + mid));
+    return median;
+}
+
+}  // namespace
+
+FootprintStats SummarizeFootprints(std::span<const double> footprints,
+                                   std::span<const double> weights) {
+    long double sumW = 0;
+    FootprintStats stats = SummarizeWithoutMedian(footprints, weights, sumW);
+    if (stats.count == 0) return stats;
+    if (weights.empty()) {
+        std::vector<double> f(footprints.begin(), footprints.end());
+        stats.median = MedianInPlace(f);
+        return stats;
+    }
+    // For general weights the median is the smallest f whose cumulative weight reaches half the
+    // total.
     std::vector<std::size_t> order;
     order.reserve(stats.count);
     for (std::size_t i = 0; i < footprints.size(); ++i)
-        if (!weighted || weights[i] > 0) order.push_back(i);
-    if (!weighted) {
-        std::vector<double> f(footprints.begin(), footprints.end());
-        const std::size_t mid = f.size() / 2;
-        std::nth_element(f.begin(), f.begin() + mid, f.end());
-        double median = f[mid];
-        if (f.size() % 2 == 0)
-            median = 0.5 * (median + *std::max_element(f.begin(), f.begin() + mid));
-        stats.median = median;
-    } else {
-        std::sort(order.begin(), order.end(),
-                  [&](std::size_t a, std::size_t b) { return footprints[a] < footprints[b]; });
-        long double cumulative = 0;
-        for (std::size_t i : order) {
-            cumulative += weights[i];
-            if (cumulative >= 0.5L * sumW) {
-                stats.median = footprints[i];
-                break;
-            }
+        if (weights[i] > 0) order.push_back(i);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return footprints[a] < footprints[b]; });
+    long double cumulative = 0;
+    for (std::size_t i : order) {
+        cumulative += weights[i];
+        if (cumulative >= 0.5L * sumW) {
+            stats.median = footprints[i];
+            break;
         }
     }
+    return stats;
+}
+
+FootprintStats SummarizeFootprintsInPlace(std::span<double> footprints) {
+    long double sumW = 0;
+    FootprintStats stats = SummarizeWithoutMedian(footprints, {}, sumW);
+    if (stats.count > 0) stats.median = MedianInPlace(footprints);
     return stats;
 }
 

@@ -46,6 +46,8 @@ struct FootprintStats {
 // negative footprint, a negative weight, or mismatched lengths. An empty input gives all zeros.
 FootprintStats SummarizeFootprints(std::span<const double> footprints,
                                    std::span<const double> weights = {});
+// The same for unit weights without a copy: the median reorders `footprints` (nth_element).
+FootprintStats SummarizeFootprintsInPlace(std::span<double> footprints);
 
 // The three norms the optimizers minimize (ch. 2.1).
 enum class Metric { kL1, kL2, kLinf };

@@ -189,6 +189,9 @@ int RunFlatland(const RunFlags& flags) {
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         try {
             reports.push_back(flatland::RunFlatlandCase(scenes[i], methods, *metric));
+            // The report needs no samples: each case's pass is freed before the next one runs,
+            // so a run holds one case's memory at a time (flatland/memory.h).
+            reports.back().fullPass.reset();
         } catch (const DomainError& e) {
             throw FlatlandInputError(flags.cases[i], e);
         }

@@ -5,6 +5,8 @@
 
 #include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/json_reader.h"
+#include "lexel/cases/load/memory_budget.h"
+#include "lexel/flatland/memory.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
@@ -31,6 +33,24 @@ std::string FlatlandErrorMessage(const DomainError& e) {
             return "/lexels: " + std::string(e.what());
     }
     return e.what();
+}
+
+// Refuses a scene whose run would need more than the memory budget (flatland/memory.h), naming
+// the larger pixel count. (The other sizes cannot reach the budget alone: kMaxWedges bounds the
+// split's tables to about 1 GiB, and the geometry is bounded by the case file.)
+void CheckMemoryBudget(const JsonField& root, const flatland::FlatScene& scene) {
+    const flatland::FlatlandSizes sizes = flatland::SizesOf(scene);
+    const double bytes = flatland::FlatlandRunBytes(sizes);
+    const auto count = [](double n) { return std::to_string(static_cast<long long>(n)); };
+    std::string what = count(sizes.pixels) + " camera pixels";
+    if (sizes.decisionPixels != sizes.pixels)
+        what += " and " + count(sizes.decisionPixels) + " decision pixels in a second pass";
+    what += ", " + count(flatland::kPassBytesPerPixel) + " bytes per pass pixel and up to " +
+            count(flatland::kRunBytesPerPixel - flatland::kPassBytesPerPixel) + " more at the peak";
+    const std::string excess = MemoryBudgetExcess(bytes, what);
+    if (excess.empty()) return;
+    if (sizes.decisionPixels > sizes.pixels) root["decision_pixels"].Fail(excess);
+    root["camera"]["pixels"].Fail(excess);
 }
 
 }  // namespace
@@ -110,6 +130,7 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
         }
         scene.frusta = options;
     }
+    CheckMemoryBudget(root, scene);
     try {
         flatland::CheckSceneGeometry(scene);
     } catch (const DomainError& e) {

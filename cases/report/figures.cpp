@@ -510,9 +510,9 @@ void DrawFootprints(cairo_t* cr, const PxRect& plot, const flatland::CaseReport&
             // A gap in pixel index means the geometry was not seen there: break the line.
             const bool adjacent = i > 0 && samples[i].pixel == samples[i - 1].pixel + 1;
             if (drawing && adjacent)
-                cairo_line_to(cr, pxX(samples[i].p), pxY(f));
+                cairo_line_to(cr, pxX(flatland::PixelCenter(samples[i])), pxY(f));
             else
-                cairo_move_to(cr, pxX(samples[i].p), pxY(f));
+                cairo_move_to(cr, pxX(flatland::PixelCenter(samples[i])), pxY(f));
             drawing = true;
         }
         cairo_stroke(cr);
@@ -528,6 +528,10 @@ void WriteCaseFigure(const std::string& pngPath, const flatland::FlatScene& scen
                      const flatland::CaseReport& report) {
     if (!report.fullPass)
         throw std::invalid_argument(pngPath + ": the case report has no full-resolution pass");
+    for (const auto& method : report.methods)
+        if (method.footprints.size() != report.fullPass->samples.size())
+            throw std::invalid_argument(pngPath + ": method " + method.method +
+                                        " kept no footprints (RunFlatlandCase keepFootprints)");
     constexpr int kPxWidth = 1600, kPxHeight = 700;
     RenderPng(pngPath, kPxWidth, kPxHeight, [&](cairo_t* cr) {
         SetFont(cr, 20, true);

@@ -17,8 +17,8 @@
 namespace lexel::cases {
 
 // Diagram (left) and footprint plot (right) of one case in one PNG. `report.fullPass` and each
-// method's wsAxis/footprints/frusta must be filled (RunFlatlandCase does). Throws
-// std::runtime_error when the file cannot be written.
+// method's wsAxis/footprints/frusta must be filled (RunFlatlandCase with keepFootprints does;
+// std::invalid_argument otherwise). Throws std::runtime_error when the file cannot be written.
 void WriteCaseFigure(const std::string& pngPath, const flatland::FlatScene& scene,
                      const flatland::CaseReport& report);
 

@@ -14,6 +14,9 @@ std::vector<int> LowresResolutions(int fullPixels) {
     return out;
 }
 
+// Memory: the reference run's at most 64 bytes per camera pixel (flatland/memory.h), the K = P row
+// reusing its pass, plus passes of at most 200 pixels: within the budget for every pixel count the
+// schema allows (64 · kMaxPixels ≈ 6 GiB).
 std::vector<LowresRow> RunLowresStudy(const flatland::FlatScene& scene) {
     static const std::vector<std::string> methods = {"optimal-l1", "optimal-l2", "optimal-linf"};
     auto errorOf = [](const FootprintStats& s, int metric) {
@@ -31,10 +34,15 @@ std::vector<LowresRow> RunLowresStudy(const flatland::FlatScene& scene) {
         flatland::FlatScene low = scene;
         low.decisionPixels = k;
         // K pixels may see no geometry, or too little to span a frustum: no decision possible.
-        const std::optional<flatland::SamplingPass> decision = flatland::TrySamplingPass(low, k);
+        // K = P is the full pass itself (not a second copy of it: flatland/memory.h).
+        std::optional<flatland::SamplingPass> coarse;
+        if (k != scene.camera.pixels) coarse = flatland::TrySamplingPass(low, k);
+        const flatland::SamplingPass* decision = k == scene.camera.pixels ? fullPass.get()
+                                                 : coarse                 ? &*coarse
+                                                                          : nullptr;
         if (decision) {
             const flatland::CaseReport report =
-                flatland::RunFlatlandCase(low, methods, Metric::kL1, fullPass, &*decision);
+                flatland::RunFlatlandCase(low, methods, Metric::kL1, fullPass, decision);
             for (int m = 0; m < 3; ++m)
                 row.extraPercent[m] = 100.0 * (errorOf(report.methods[m].stats, m) /
                                                    errorOf(reference.methods[m].stats, m) -

@@ -32,7 +32,9 @@ std::vector<TableResult> RunThesisTables(const std::vector<ThesisTable>& tables,
         const flatland::FlatScene& scene = choice.scene;
         try {
             results.push_back(
-                {thesis, scene, flatland::RunFlatlandCase(scene, methods, Metric::kL1),
+                {thesis, scene,
+                 flatland::RunFlatlandCase(scene, methods, Metric::kL1, nullptr, nullptr,
+                                           /*keepFootprints=*/true),
                  std::filesystem::relative(choice.path, casesDir).generic_string(), choice.fitted,
                  choice.agreement.worstAngleDeg, choice.agreement.worstFootprint});
         } catch (const DomainError& e) {

@@ -50,7 +50,8 @@ int main(int argc, char** argv) {
         for (std::size_t i = 0; i < f->size(); i += f->size() / 5) std::printf("  %9.4f", (*f)[i]);
         std::printf("  %10.2f  %8.4f\n", l1, linf);
         lexel::notebooks::Series series(names[k++]);
-        for (std::size_t i = 0; i < f->size(); ++i) series.Add(pass.samples[i].p, (*f)[i]);
+        for (std::size_t i = 0; i < f->size(); ++i)
+            series.Add(PixelCenter(pass.samples[i]), (*f)[i]);
         plot.series.push_back(series);
         if (axis == theorem1) theoremF = *f;
     }

@@ -66,8 +66,8 @@ int main(int argc, char** argv) {
             maxRel = std::max(maxRel, std::abs(remapped[i] / (*scratch)[i] - 1));
             factor.Add(LexelCoordinate(samples, i),
                        RemapFactor(samples.tanOffset[i], t, samples.tanLow, samples.tanHigh));
-            line.Add(pass.samples[i].p, remapped[i]);
-            if (i % 40 == 0) dots.Add(pass.samples[i].p, (*scratch)[i]);
+            line.Add(PixelCenter(pass.samples[i]), remapped[i]);
+            if (i % 40 == 0) dots.Add(PixelCenter(pass.samples[i]), (*scratch)[i]);
         }
         worst = std::max(worst, maxRel);
         std::printf("%7.1f° %11.4f° %14.6f %14.6f %26.2e\n", xDeg,

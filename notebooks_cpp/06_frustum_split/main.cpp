@@ -97,7 +97,8 @@ int main(int argc, char** argv) {
 
     // Every number again at full resolution, measured from scratch (the thesis's tables).
     const std::vector<std::string> methods = {"optimal-l1", "split-greedy", "split-dp"};
-    const CaseReport report = RunFlatlandCase(scene, methods, Metric::kL1);
+    const CaseReport report = RunFlatlandCase(scene, methods, Metric::kL1, nullptr, nullptr,
+                                              /*keepFootprints=*/true);
     for (const MethodReport& m : report.methods)
         std::printf("full resolution %-13s average f %.4f  worst %.4f\n", m.method.c_str(),
                     m.stats.average, m.stats.worst());

@@ -39,6 +39,14 @@ expect_run(2 "^$" "^lexel: error: .*bad_fov.json: /camera/fov_deg: must be in \\
 expect_run(2 "^$" "bad_syntax.json:4:[0-9]+: invalid JSON" run "${DATA}/bad_syntax.json" --out "${WORK}/bad")
 expect_run(2 "^$" "/camera/zoom: unknown key" run "${DATA}/unknown_key.json" --out "${WORK}/bad")
 expect_run(2 "^$" "no camera pixel sees any geometry" run "${DATA}/no_visible.json" --out "${WORK}/bad")
+# Issue 16: a camera and a second decision pass whose memory would pass the budget are refused
+# before anything is allocated, with the estimate, in one line.
+file(READ "${good}" goodText)
+string(REPLACE "\"pixels\": 1000" "\"pixels\": 100000000" bigText "${goodText}")
+string(REPLACE "\"decision_pixels\": 100" "\"decision_pixels\": 90000000" bigText "${bigText}")
+file(WRITE "${WORK}/big/single_plane.json" "${bigText}")
+expect_run(2 "^$" "^lexel: error: [^\n]*big/single_plane.json: /camera/pixels: needs about 8.35 GiB \\(100000000 camera pixels and 90000000 decision pixels in a second pass, [^\n]*\\), above lexel's memory budget of 8 GiB\n$"
+           run "${WORK}/big/single_plane.json")
 expect_run(2 "^$" "/light/position: the light lies on segment 0 of polyline 0 \\(/geometry/0/0\\)" run "${DATA}/light_on_segment.json" --out "${WORK}/bad")
 expect_run(2 "^$" "no lexel plane has them all in front" run "${DATA}/wide_sweep.json" --out "${WORK}/bad")
 expect_run(2 "^$" "zero-length segment" run "${DATA}/zero_segment.json" --out "${WORK}/bad")

@@ -73,7 +73,8 @@ TEST(Figures, CaseFigureIsATwoPanelPngWithContent) {
     const ScratchDir scratch;
     const flatland::FlatScene scene = MakeScene();
     const std::vector<std::string> methods = {"optimal-l1", "normal", "psm", "split-dp"};
-    const flatland::CaseReport report = flatland::RunFlatlandCase(scene, methods, Metric::kL1);
+    const flatland::CaseReport report = flatland::RunFlatlandCase(
+        scene, methods, Metric::kL1, nullptr, nullptr, /*keepFootprints=*/true);
     ASSERT_EQ(report.methods.size(), methods.size());
 
     const fs::path path = scratch.path / "case.png";
@@ -96,7 +97,8 @@ TEST(Figures, CaseFigureIntoMissingDirectoryThrowsAndLeavesNothing) {
     const ScratchDir scratch;
     const flatland::FlatScene scene = MakeScene();
     const std::vector<std::string> methods = {"normal"};
-    const flatland::CaseReport report = flatland::RunFlatlandCase(scene, methods, Metric::kL1);
+    const flatland::CaseReport report = flatland::RunFlatlandCase(
+        scene, methods, Metric::kL1, nullptr, nullptr, /*keepFootprints=*/true);
     const fs::path missing = scratch.path / "missing";
     const fs::path path = missing / "case.png";
     EXPECT_THROW(WriteCaseFigure(path.string(), scene, report), std::runtime_error);

@@ -29,6 +29,31 @@ std::string ErrorFor(const std::string& pointerPatch) {
     return "no error";
 }
 
+// Issue 16: 10^8 camera pixels with a second decision pass of 9·10^7 need
+// 32 (10^8 + 9·10^7) + max(32·9·10^7, 16·9·10^7 + 8·10^8, 24·10^8) + 1 MiB ≈ 8.35 GiB
+// (flatland/memory.h): refused before anything is allocated, naming the larger pixel count.
+TEST(FlatlandCase, RefusesPixelsOverTheMemoryBudget) {
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/camera/pixels", "value": 100000000},
+                          {"op": "replace", "path": "/decision_pixels", "value": 90000000}])"),
+              "/camera/pixels: needs about 8.35 GiB (100000000 camera pixels and 90000000 "
+              "decision pixels in a second pass, 32 bytes per pass pixel and up to 32 more at the "
+              "peak), above lexel's memory budget of 8 GiB");
+    EXPECT_EQ(ErrorFor(R"([{"op": "replace", "path": "/camera/pixels", "value": 90000000},
+                          {"op": "replace", "path": "/decision_pixels", "value": 100000000}])")
+                  .substr(0, 40),
+              "/decision_pixels: needs about 8.64 GiB (");
+}
+
+// The schema's largest camera, one pass (no decision_pixels): 64 · 10^8 bytes ≈ 5.96 GiB fits.
+TEST(FlatlandCase, AcceptsTheLargestCameraInOnePass) {
+    nlohmann::json doc = nlohmann::json::parse(kGood);
+    doc["camera"]["pixels"] = kMaxPixels;
+    doc.erase("decision_pixels");
+    EXPECT_NO_THROW(FlatSceneFromJson(doc, "x"));
+    doc["decision_pixels"] = kMaxPixels;  // the same pass
+    EXPECT_NO_THROW(FlatSceneFromJson(doc, "x"));
+}
+
 TEST(FlatlandCase, LoadsEveryField) {
     const auto scene = FlatSceneFromJson(nlohmann::json::parse(kGood), "fallback");
     EXPECT_EQ(scene.name, "single_plane");

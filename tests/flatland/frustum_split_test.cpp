@@ -83,7 +83,7 @@ TEST(FrustumSplit, ReportedFrustaRecomputeFromScratch) {
             const double alpha = pass.wsAxis0 + s.lsAngle;
             if (alpha < lo - 1e-12 || alpha > hi + 1e-12) continue;
             const double c = std::cos(alpha - fr.wsAxis);
-            const double f = s.dpdAngle * width * c * c / fr.lexels;  // (R1)
+            const double f = PixelsPerRadian(pass, s) * width * c * c / fr.lexels;  // (R1)
             l1 += f, worst = std::max(worst, f), ++n;
         }
         EXPECT_EQ(n, fr.stats.count);

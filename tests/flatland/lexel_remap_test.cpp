@@ -70,8 +70,8 @@ TEST(LexelRemap, SubFrustumSamplesEqualTheThesisRescaling) {
     std::vector<std::size_t> index;
     for (std::size_t i = 0; i < pass.samples.size(); ++i)
         if (pass.samples[i].lsAngle >= lo && pass.samples[i].lsAngle <= hi)
-            angle.push_back(pass.samples[i].lsAngle), g.push_back(pass.samples[i].dpdAngle),
-                index.push_back(i);
+            angle.push_back(pass.samples[i].lsAngle),
+                g.push_back(PixelsPerRadian(pass, pass.samples[i])), index.push_back(i);
     ASSERT_GT(angle.size(), 5u);
     const double subLexels = 300;
     const LexelSamples sub = MakeLexelSamples(angle, g, pass.wsAxis0, subLexels, lo, hi);

@@ -8,6 +8,7 @@
 
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/solvers/geometry.h"
 #include "test_scenes.h"
 
 namespace lexel::flatland {
@@ -26,10 +27,11 @@ TEST(Sampling, FloorHitsLieOnTheFloorAtPixelCenters) {
     ASSERT_FALSE(pass.samples.empty());
     for (const auto& s : pass.samples) {
         EXPECT_NEAR(s.wsPoint.y(), 0.0, 1e-12);
-        EXPECT_DOUBLE_EQ(s.p, s.pixel + 0.5);
-        // depth is the distance along the unit camera direction
-        EXPECT_NEAR(s.depth, (s.wsPoint - scene.camera.wsPosition).dot(scene.camera.wsDirection),
-                    1e-9);
+        // The hit lies on the ray through the pixel center p = k + ½ (camera frame, sampling.h).
+        const Vec2 cs = s.wsPoint - scene.camera.wsPosition;
+        const double sigma = 2.0 * PixelCenter(s) / pass.pixels - 1.0;
+        EXPECT_NEAR(cs.dot(Perp(scene.camera.wsDirection)) / cs.dot(scene.camera.wsDirection),
+                    std::tan(std::numbers::pi / 6) * sigma, 1e-12);
     }
     const double slopeLimit =
         std::tan(std::atan(0.25)) / std::tan(std::numbers::pi / 6);  // σ at the horizon
@@ -57,8 +59,9 @@ TEST(Sampling, AnalyticFootprintMatchesFiniteDifference) {
         int checked = 0;
         for (std::size_t i = 0; i < pass.samples.size(); ++i) {
             const auto& s = pass.samples[i];
-            const auto plus = CastPixelRay(scene.camera, segments, pass.pixels, s.p + h);
-            const auto minus = CastPixelRay(scene.camera, segments, pass.pixels, s.p - h);
+            const auto plus = CastPixelRay(scene.camera, segments, pass.pixels, PixelCenter(s) + h);
+            const auto minus =
+                CastPixelRay(scene.camera, segments, pass.pixels, PixelCenter(s) - h);
             if (!plus || !minus || plus->segment != s.segment || minus->segment != s.segment)
                 continue;
             const double dldp = (lexelOf(plus->wsPoint) - lexelOf(minus->wsPoint)) / (2 * h);
@@ -75,9 +78,14 @@ TEST(Sampling, NearFarClipHits) {
     scene.camera.far = 20.0;
     const SamplingPass pass = RunSamplingPass(scene, 500);
     for (const auto& s : pass.samples) {
-        EXPECT_GE(s.depth, 5.0);
-        EXPECT_LE(s.depth, 20.0);
+        const double depth = (s.wsPoint - scene.camera.wsPosition).dot(scene.camera.wsDirection);
+        EXPECT_GE(depth, 5.0 * (1 - 1e-12));
+        EXPECT_LE(depth, 20.0 * (1 + 1e-12));
     }
+    // The pass's depth range is the hits' (the ray's x_c, so equal within rounding).
+    EXPECT_GE(pass.depthNear, 5.0);
+    EXPECT_LE(pass.depthFar, 20.0);
+    EXPECT_LT(pass.depthNear, pass.depthFar);
 }
 
 TEST(Sampling, NoVisiblePixelIsAnError) {

@@ -103,8 +103,7 @@ TEST(SceneFamily, NearPlaneIsAFractionOfTheNearestVisibleDepth) {
             const FlatScene scene = family.Build(values);
             const std::optional<SamplingPass> pass = TrySamplingPass(scene, scene.camera.pixels);
             if (!pass) continue;  // the family's ranges include scenes the sampling pass refuses
-            double minDepth = INFINITY;
-            for (const auto& s : pass->samples) minDepth = std::min(minDepth, s.depth);
+            const double minDepth = pass->depthNear;
             int nearIndex = 0;
             for (std::size_t i = 0; i < family.parameters.size(); ++i)
                 if (family.parameters[i].name == "near_fraction") nearIndex = static_cast<int>(i);

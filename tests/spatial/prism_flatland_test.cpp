@@ -119,7 +119,7 @@ flatland::LexelSamples FlatlandSamplesAt(const flatland::SamplingPass& pass,
         hi = std::max(hi, f.lsAngle);
         if (next < samples.pixel.size() && samples.pixel[next] == static_cast<unsigned>(f.pixel)) {
             angle.push_back(f.lsAngle);
-            dpdAngle.push_back(f.dpdAngle);
+            dpdAngle.push_back(flatland::PixelsPerRadian(pass, f));
             ++next;
         }
     }
