@@ -82,7 +82,12 @@ TriangleMesh FloorObjects(int count, std::uint64_t seed, glm::dvec4* floorPlane)
         double bestClearance = -std::numeric_limits<double>::infinity();
         for (int attempt = 0; attempt < kPlacementTries; ++attempt) {
             const double reach = kPlacementHalfSize - radius;
-            const glm::dvec2 spot(Uniform(rng, -reach, reach), Uniform(rng, -reach, reach));
+            // z is drawn before x: the order GCC gave the two draws when they were the arguments
+            // of one constructor (unspecified in C++; clang drew x first and built another
+            // floor), kept so the published layouts stay as they are.
+            const double spotZ = Uniform(rng, -reach, reach);
+            const double spotX = Uniform(rng, -reach, reach);
+            const glm::dvec2 spot(spotX, spotZ);
             double clearance = std::numeric_limits<double>::infinity();
             for (const Footprint& other : placed)
                 clearance =
