@@ -8,6 +8,7 @@
 
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <string>
 #include <system_error>
@@ -25,6 +26,43 @@ std::string OneLine(std::string text) {
     return text.empty() ? std::string("unknown error") : text;
 }
 
+// False for a file that starts with PLY's magic "ply" but has no end_header line, which Assimp 5.2
+// (Debian 12) reads without end (found by tests/fuzz/mesh_fuzzer; the input is
+// tests/fuzz/seeds/mesh/regress_ply_no_end_header.ply). Reads only the header's lines.
+bool PlyHeaderEnds(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    if (!std::getline(in, line) || !line.starts_with("ply")) return true;  // not PLY
+    while (std::getline(in, line))
+        if (line.starts_with("end_header")) return true;
+    return false;
+}
+
+// What Assimp's post-processing would trip over in an importer's scene, or empty: a face
+// without indices, an index past its mesh's vertices, or a mesh marked as holding polygons
+// (more than three corners) that holds none.
+std::string ImporterSceneError(const aiScene& scene) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& in = *scene.mMeshes[m];
+        bool polygons = false;
+        for (unsigned f = 0; f < in.mNumFaces; ++f) {
+            const aiFace& face = in.mFaces[f];
+            if (face.mNumIndices == 0 || face.mIndices == nullptr)
+                return "face " + std::to_string(f) + " of mesh " + std::to_string(m) +
+                       " has no vertices";
+            for (unsigned i = 0; i < face.mNumIndices; ++i)
+                if (face.mIndices[i] >= in.mNumVertices)
+                    return "face " + std::to_string(f) + " of mesh " + std::to_string(m) +
+                           " refers to vertex " + std::to_string(face.mIndices[i]) + " of " +
+                           std::to_string(in.mNumVertices);
+            polygons = polygons || face.mNumIndices > 3;
+        }
+        if ((in.mPrimitiveTypes & aiPrimitiveType_POLYGON) && !polygons)
+            return "mesh " + std::to_string(m) + " is marked as polygons but has none";
+    }
+    return {};
+}
+
 }  // namespace
 
 TriangleMesh LoadMesh(const std::filesystem::path& path) {
@@ -33,13 +71,27 @@ TriangleMesh LoadMesh(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path, ec))
         throw DomainError(Subject::kGeometry, name + ": mesh file not found");
 
+    if (!PlyHeaderEnds(path))
+        throw DomainError(Subject::kGeometry,
+                          name + ": cannot read mesh: PLY header without an end_header line");
+
     Assimp::Importer importer;
     // Points and lines are removed by aiProcess_SortByPType rather than kept as degenerate meshes.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* scene =
-        importer.ReadFile(name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                    aiProcess_PreTransformVertices | aiProcess_SortByPType);
+    // The post-processing steps assume a scene that is valid as Assimp defines it, and Debian's
+    // Assimp aborts the process on a failed check inside them: a truncated PLY file gives a mesh
+    // marked as polygons without one (found by tests/fuzz/mesh_fuzzer:
+    // tests/fuzz/seeds/mesh/regress_ply_truncated.ply). So the file is read and validated
+    // first, its faces checked (ImporterSceneError), and only then post-processed.
+    const aiScene* scene = importer.ReadFile(name, aiProcess_ValidateDataStructure);
+    if (scene != nullptr) {
+        if (const std::string error = ImporterSceneError(*scene); !error.empty())
+            throw DomainError(Subject::kGeometry, name + ": cannot read mesh: " + error);
+        scene =
+            importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                         aiProcess_PreTransformVertices | aiProcess_SortByPType);
+    }
     if (scene == nullptr)
         throw DomainError(Subject::kGeometry,
                           name + ": cannot read mesh: " + OneLine(importer.GetErrorString()));

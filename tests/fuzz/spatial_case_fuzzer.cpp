@@ -9,6 +9,7 @@
 #include <string>
 
 #include "fuzz_support.h"
+#include "lexel/cases/load/flatland_case.h"  // IsSpatialCase
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/solvers/errors.h"
