@@ -7,6 +7,7 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -33,8 +34,14 @@ bool PlyHeaderEnds(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::string line;
     if (!std::getline(in, line) || !line.starts_with("ply")) return true;  // not PLY
-    while (std::getline(in, line))
-        if (line.starts_with("end_header")) return true;
+    // The token as Assimp matches it: "end_header" followed by white space or the line's end.
+    while (std::getline(in, line)) {
+        const std::size_t first = line.find_first_not_of(" \t");
+        if (first == std::string::npos || line.compare(first, 10, "end_header") != 0) continue;
+        const std::size_t after = first + 10;
+        if (after == line.size() || std::isspace(static_cast<unsigned char>(line[after])))
+            return true;
+    }
     return false;
 }
 
