@@ -186,7 +186,7 @@ TEST(MeshLoader, RefusesBrokenPlyWithoutHangingOrAborting) {
         {"lexel_mesh_loader_truncated.ply", std::string(header) + "end_header\n0 0 0\n"},
     };
     const std::string reasons[] = {"PLY header without an end_header line",
-                                   "mesh 0 is marked as polygons but has none"};
+                                   "face 0 of mesh 0 has no vertices"};
     for (int k = 0; k < 2; ++k) {
         const auto path = dir / files[k].first;
         std::ofstream(path) << files[k].second;
