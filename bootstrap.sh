@@ -52,8 +52,9 @@ sanitizer_suite() {
     cmake --build build-asan --parallel "$(nproc)" --target cases_tests spatial_tests \
         flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer
     # ShippedWalkthroughIsTheReportScene is left out: its camera path comes from the floor-objects
-    # generator, whose random draws clang makes in another order than gcc (glm::dvec2(f(), f()),
-    # an unspecified order; spatial/harness/generator.cpp:85), so the clang scene differs.
+    # generator, and its positions differ under clang, most likely because the random draws in
+    # glm::dvec2(f(), f()) come in another order than under gcc (unspecified order;
+    # spatial/harness/generator.cpp:85).
     (cd build-asan && ctest --output-on-failure --parallel "$(nproc)" \
         -R "$sanitizer_tests|_fuzzer\$" -E '^SpatialCase\.ShippedWalkthroughIsTheReportScene$')
 }
