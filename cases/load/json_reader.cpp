@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -25,7 +26,31 @@ std::string TypeName(const nlohmann::json& v) {
     return "null";
 }
 
-// JSON pointer escaping (RFC 6901): '~' → "~0", '/' → "~1".
+// Control characters written as JSON writes them ("\n", "\u0001"), so that a message quoting a
+// key or a value of the case stays on one line (a key "a\nb" made two, found by
+// tests/fuzz/flatland_case_fuzzer: tests/fuzz/seeds/flatland/regress_newline_key.json).
+std::string Printable(std::string_view text) {
+    std::string out;
+    for (char c : text) {
+        const auto code = static_cast<unsigned char>(c);
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (code < 0x20 || code == 0x7f) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", code);
+            out += escaped;
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+// JSON pointer escaping (RFC 6901): '~' → "~0", '/' → "~1"; then Printable.
 std::string EscapeKey(std::string_view key) {
     std::string out;
     for (char c : key) {
@@ -36,7 +61,7 @@ std::string EscapeKey(std::string_view key) {
         else
             out += c;
     }
-    return out;
+    return Printable(out);
 }
 
 }  // namespace
@@ -255,7 +280,7 @@ nlohmann::json ParseJsonFile(const std::filesystem::path& path) {
 }
 
 void JsonField::Fail(const std::string& reason) const {
-    throw InputError((pointer_.empty() ? std::string("/") : pointer_) + ": " + reason);
+    throw InputError(Printable((pointer_.empty() ? std::string("/") : pointer_) + ": " + reason));
 }
 
 namespace {

@@ -471,7 +471,9 @@ void DrawFootprints(cairo_t* cr, const PxRect& plot, const flatland::CaseReport&
     for (const auto& method : report.methods)
         for (double f : method.footprints)
             if (f > 0 && std::isfinite(f)) fMin = std::min(fMin, f), fMax = std::max(fMax, f);
-    const auto [decadeLo, decadeHi] = DecadeRange(fMin, fMax).value_or(std::make_pair(-1, 1));
+    // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+    const std::pair<int, int> decades = DecadeRange(fMin, fMax).value_or(std::make_pair(-1, 1));
+    const int decadeLo = decades.first, decadeHi = decades.second;
     const double pixels = std::max(report.pixels, 1);
     const auto pxX = [&](double p) { return plot.x + p / pixels * plot.width; };
     const auto pxY = [&](double f) {

@@ -166,10 +166,12 @@ std::string TimingCsv(const TimingRun& run) {
     out << "method,frame";
     for (const auto& [name, value] : Columns(FrameTimes{})) out << ',' << name << "_ms";
     out << '\n';
-    for (const auto& [name, frames] :
+    // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+    for (const auto& method :
          {std::pair{"focused", &run.focused}, std::pair{"optimal", &run.optimal}}) {
+        const auto* frames = method.second;
         const auto row = [&](const std::string& frame, const FrameTimes& t) {
-            out << name << ',' << frame;
+            out << method.first << ',' << frame;
             for (const auto& [column, value] : Columns(t)) out << ',' << Fixed(value, 4);
             out << '\n';
         };

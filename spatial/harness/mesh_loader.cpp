@@ -7,7 +7,9 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <string>
 
@@ -25,19 +27,76 @@ std::string OneLine(std::string text) {
     return text.empty() ? std::string("unknown error") : text;
 }
 
+// False for a file that starts with PLY's magic "ply" but has no end_header line, which Assimp 5.2
+// (Debian 12) reads without end (found by tests/fuzz/mesh_fuzzer; the input is
+// tests/fuzz/seeds/mesh/regress_ply_no_end_header.ply). Reads only the header's lines.
+bool PlyHeaderEnds(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    if (!std::getline(in, line) || !line.starts_with("ply")) return true;  // not PLY
+    // The token as Assimp matches it: "end_header" followed by white space or the line's end.
+    while (std::getline(in, line)) {
+        const std::size_t first = line.find_first_not_of(" \t");
+        if (first == std::string::npos || line.compare(first, 10, "end_header") != 0) continue;
+        const std::size_t after = first + 10;
+        if (after == line.size() || std::isspace(static_cast<unsigned char>(line[after])))
+            return true;
+    }
+    return false;
+}
+
+// What Assimp's post-processing would trip over in an importer's scene, or empty: a face
+// without indices, an index past its mesh's vertices, or a mesh marked as holding polygons
+// (more than three corners) that holds none.
+std::string ImporterSceneError(const aiScene& scene) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& in = *scene.mMeshes[m];
+        bool polygons = false;
+        for (unsigned f = 0; f < in.mNumFaces; ++f) {
+            const aiFace& face = in.mFaces[f];
+            if (face.mNumIndices == 0 || face.mIndices == nullptr)
+                return "face " + std::to_string(f) + " of mesh " + std::to_string(m) +
+                       " has no vertices";
+            for (unsigned i = 0; i < face.mNumIndices; ++i)
+                if (face.mIndices[i] >= in.mNumVertices)
+                    return "face " + std::to_string(f) + " of mesh " + std::to_string(m) +
+                           " refers to vertex " + std::to_string(face.mIndices[i]) + " of " +
+                           std::to_string(in.mNumVertices);
+            polygons = polygons || face.mNumIndices > 3;
+        }
+        if ((in.mPrimitiveTypes & aiPrimitiveType_POLYGON) && !polygons)
+            return "mesh " + std::to_string(m) + " is marked as polygons but has none";
+    }
+    return {};
+}
+
 }  // namespace
 
 TriangleMesh LoadMesh(const std::filesystem::path& path) {
     const std::string name = path.string();
     CheckMeshFile(path);  // size, format and declared counts, before Assimp allocates for them
 
+    if (!PlyHeaderEnds(path))
+        throw DomainError(Subject::kGeometry,
+                          name + ": cannot read mesh: PLY header without an end_header line");
+
     Assimp::Importer importer;
     // Points and lines are removed by aiProcess_SortByPType rather than kept as degenerate meshes.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* scene =
-        importer.ReadFile(name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                    aiProcess_PreTransformVertices | aiProcess_SortByPType);
+    // The post-processing steps assume a scene that is valid as Assimp defines it, and Debian's
+    // Assimp aborts the process on a failed check inside them: a truncated PLY file gives a mesh
+    // marked as polygons without one (found by tests/fuzz/mesh_fuzzer:
+    // tests/fuzz/seeds/mesh/regress_ply_truncated.ply). So the file is read and validated
+    // first, its faces checked (ImporterSceneError), and only then post-processed.
+    const aiScene* scene = importer.ReadFile(name, aiProcess_ValidateDataStructure);
+    if (scene != nullptr) {
+        if (const std::string error = ImporterSceneError(*scene); !error.empty())
+            throw DomainError(Subject::kGeometry, name + ": cannot read mesh: " + error);
+        scene =
+            importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                         aiProcess_PreTransformVertices | aiProcess_SortByPType);
+    }
     if (scene == nullptr)
         throw DomainError(Subject::kGeometry,
                           name + ": cannot read mesh: " + OneLine(importer.GetErrorString()));

@@ -94,6 +94,19 @@ TEST(JsonReader, FieldsNameTheirPointer) {
               "/list: must be an object, got an array");
 }
 
+// Keys and values with control characters are quoted escaped, so every message is one line
+// (found by tests/fuzz/flatland_case_fuzzer).
+TEST(JsonReader, MessagesQuoteControlCharactersEscaped) {
+    const auto doc = nlohmann::json::parse(R"({"a\nb": 1, "kind": "x\ty\u0001"})");
+    const JsonField root(doc, "");
+    EXPECT_EQ(ErrorOf([&] { root.ExpectObject({"kind"}); }),
+              "/a\\nb: unknown key (allowed here: kind)");
+    EXPECT_EQ(ErrorOf([&] { root["kind"].Fail("got '" + root["kind"].String() + "'"); }),
+              "/kind: got 'x\\ty\\u0001'");
+    EXPECT_EQ(ErrorOf([] { ParseJsonText("{\"a\\nb\": 1, \"a\\nb\": 2}", "c"); }),
+              "c: /a\\nb: duplicate key (each key may appear once)");
+}
+
 TEST(JsonReader, NonFiniteNumbersAreRejected) {
     // JSON has no NaN literal (a parse error), and overflowing literals are refused.
     EXPECT_NE(ErrorOf([] { ParseJsonText(R"({"x": NaN})", "c.json"); }).find("c.json:1:"),

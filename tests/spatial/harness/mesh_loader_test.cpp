@@ -228,5 +228,27 @@ TEST(MeshLoader, RefusesOtherFormatsAndOversizedFiles) {
     std::filesystem::remove(big);
 }
 
+// Two PLY files Assimp 5.2 cannot take (found by tests/fuzz/mesh_fuzzer; the inputs are
+// tests/fuzz/seeds/mesh/regress_ply_*.ply): without end_header its reader never returns, and a
+// file that ends before its faces made it abort the process. Both are one-line errors.
+TEST(MeshLoader, RefusesBrokenPlyWithoutHangingOrAborting) {
+    const auto dir = std::filesystem::temp_directory_path();
+    const char* header =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 4\nproperty list uchar int vertex_indices\n";
+    const std::pair<std::string, std::string> files[] = {
+        {"lexel_mesh_loader_no_end.ply", std::string(header) + "0 0 0\n1 0 0\n"},
+        {"lexel_mesh_loader_truncated.ply", std::string(header) + "end_header\n0 0 0\n"},
+    };
+    const std::string reasons[] = {"PLY header without an end_header line",
+                                   "face 0 of mesh 0 has no vertices"};
+    for (int k = 0; k < 2; ++k) {
+        const auto path = dir / files[k].first;
+        std::ofstream(path) << files[k].second;
+        EXPECT_EQ(LoadError(path), path.string() + ": cannot read mesh: " + reasons[k]);
+        std::filesystem::remove(path);
+    }
+}
+
 }  // namespace
 }  // namespace lexel::spatial

@@ -1,0 +1,60 @@
+// libFuzzer target: model files through spatial::LoadMesh (spatial/harness/mesh_loader.h), the
+// loader of a 3D case's `mesh` entries. The bytes are written to a file whose extension is the
+// format they look like, as a user would name it — "ply" → .ply, "OFF" (or COFF, NOFF, ...) →
+// .off, "solid" → .stl, a zero byte (binary) → .stl, anything else → .obj — so the four formats
+// the loader reads (mesh_file_check.h: OBJ, OFF, PLY, STL), its header checks and Assimp's
+// importers for them are the ones fuzzed. A bad file must be
+// refused with a DomainError of one line; any other exception, a crash, a sanitizer report or a
+// hang is a finding. Assimp is not instrumented: coverage guides only through lexel's code.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+
+#include "fuzz_support.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/mesh_loader.h"
+
+namespace {
+
+std::string_view ExtensionFor(std::string_view bytes) {
+    if (bytes.starts_with("ply")) return ".ply";
+    const std::size_t off = bytes.find("OFF");
+    if (off != std::string_view::npos && off < 5 && bytes.find('\n') > off) return ".off";
+    if (bytes.starts_with("solid")) return ".stl";
+    if (bytes.find('\0') != std::string_view::npos) return ".stl";
+    return ".obj";
+}
+
+// One directory per process (libFuzzer's -jobs run several), made on first use.
+const std::filesystem::path& WorkDir() {
+    static const std::filesystem::path dir = [] {
+        const auto path = std::filesystem::temp_directory_path() /
+                          ("lexel_mesh_fuzz_" + std::to_string(::getpid()));
+        std::filesystem::create_directories(path);
+        return path;
+    }();
+    return dir;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+    const std::filesystem::path path = WorkDir() / ("input" + std::string(ExtensionFor(bytes)));
+    {
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    }
+    try {
+        lexel::spatial::LoadMesh(path);
+    } catch (const lexel::DomainError& e) {
+        lexel::fuzz::CheckRefusalMessage(e);
+    }
+    std::filesystem::remove(path);
+    return 0;
+}
