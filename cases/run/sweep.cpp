@@ -1,7 +1,6 @@
 #include "lexel/cases/run/sweep.h"
 
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +39,7 @@ std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights,
 
 namespace {
 
-// Lights evaluated at once: every hardware thread, unless their buffers together would exceed the
+// Lights evaluated at once: as many as there are, unless their buffers together would exceed the
 // memory budget (memory_budget.h); at least one (the loader refused cases where one does not fit).
 int LightsInFlight(const spatial::Scene& scene, std::size_t methods) {
     spatial::EvaluationSizes sizes;
@@ -52,8 +51,7 @@ int LightsInFlight(const spatial::Scene& scene, std::size_t methods) {
     sizes.keepBuffers = false;
     const spatial::EvaluationMemory memory = spatial::EstimateEvaluationMemory(sizes);
     const double fit = std::floor((kMemoryBudgetBytes - memory.shared) / memory.perLight);
-    const int threads = tbb::this_task_arena::max_concurrency();
-    return static_cast<int>(std::clamp(fit, 1.0, static_cast<double>(threads)));
+    return static_cast<int>(std::clamp(fit, 1.0, 1e9));
 }
 
 }  // namespace
@@ -72,9 +70,12 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     r.receiverPixels.assign(lights.size(), 0);
     spatial::EvaluationOptions options;
     options.methods = methods;
-    tbb::task_arena arena(LightsInFlight(scene, methods.size()));
-    arena.execute([&] {
-        tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
+    // Lights in batches of what the memory budget holds at once; with the usual sizes one batch of
+    // all lights, evaluated in parallel as they come.
+    const auto batch = static_cast<std::size_t>(LightsInFlight(scene, methods.size()));
+    for (std::size_t first = 0; first < lights.size(); first += batch) {
+        const std::size_t last = std::min(lights.size(), first + batch);
+        tbb::parallel_for(first, last, [&](std::size_t l) {
             spatial::LightOutcome outcome;
             try {
                 outcome = evaluator->Evaluate(lights[l], options);
@@ -100,7 +101,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
             r.receiverPixels[l] = outcome.receiverPixels;
             if (onLightDone) onLightDone();
         });
-    });
+    }
     r.seconds = timer.Ms() / 1000.0;
     return r;
 }
