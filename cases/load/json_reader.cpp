@@ -176,8 +176,9 @@ class PointerTracker : public nlohmann::json::json_sax_t {
         for (std::size_t i = 0; i < frames_.size(); ++i) {
             const Frame& f = frames_[i];
             const bool last = i + 1 == frames_.size();
-            pointer += "/" + (f.array ? std::to_string(last ? f.elements : f.elements - 1)
-                                      : EscapeKey(f.key));
+            pointer += '/';
+            pointer +=
+                f.array ? std::to_string(last ? f.elements : f.elements - 1) : EscapeKey(f.key);
         }
         return pointer.empty() ? "/" : pointer;
     }
