@@ -5,8 +5,8 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
-#include <utility>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "lexel/cases/load/case_name.h"
@@ -14,8 +14,8 @@
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/cases/load/memory_budget.h"
 #include "lexel/solvers/errors.h"
-#include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/containment.h"
+#include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/generator.h"
 #include "lexel/spatial/harness/memory_estimate.h"
 #include "lexel/spatial/harness/mesh_loader.h"
