@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -24,6 +25,13 @@ constexpr std::size_t kHeaderBytes = 64 * 1024;
 // (char), a binary STL facet exactly 50.
 constexpr double kMinOffVertexBytes = 6, kMinOffFaceBytes = 8, kMinPlyAsciiBytes = 2;
 constexpr double kStlFacetBytes = 50, kStlHeaderBytes = 84;
+
+// A declared count for messages: exact while it is an integer a double holds, else "%.3g".
+std::string CountText(double count) {
+    char text[32];
+    std::snprintf(text, sizeof text, count < 0x1p53 ? "%.0f" : "%.3g", count);
+    return text;
+}
 
 [[noreturn]] void Refuse(const std::filesystem::path& path, const std::string& reason) {
     throw DomainError(Subject::kGeometry, path.string() + ": " + reason);
@@ -65,8 +73,7 @@ void CheckOff(const std::filesystem::path& path, const std::string& head, std::u
     }
     if (!(vertices >= 0 && faces >= 0)) return;
     CheckDeclared(path, vertices * kMinOffVertexBytes + faces * kMinOffFaceBytes, size,
-                  std::to_string(static_cast<unsigned long long>(vertices)) + " vertices and " +
-                      std::to_string(static_cast<unsigned long long>(faces)) + " faces");
+                  CountText(vertices) + " vertices and " + CountText(faces) + " faces");
 }
 
 // PLY: "element NAME COUNT" lines up to "end_header"; each element has at least one property.
@@ -94,8 +101,7 @@ void CheckPly(const std::filesystem::path& path, const std::string& head, std::u
         }
     }
     if (ascii) neededBytes = elements * kMinPlyAsciiBytes;
-    CheckDeclared(path, neededBytes, size,
-                  std::to_string(static_cast<unsigned long long>(elements)) + " elements");
+    CheckDeclared(path, neededBytes, size, CountText(elements) + " elements");
 }
 
 // Binary STL: an 80-byte header, a 32-bit facet count, 50 bytes a facet. An ASCII STL ("solid"

@@ -34,12 +34,16 @@ bool PlyHeaderEnds(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::string line;
     if (!std::getline(in, line) || !line.starts_with("ply")) return true;  // not PLY
-    // The token as Assimp matches it: "end_header" followed by white space or the line's end.
+    // The token as Assimp matches it: "end_header" followed by a blank, a tab or a line end
+    // (Assimp's IsSpaceOrNewLine: ' ', '\t', '\r', '\n', '\f', '\0'); a vertical tab is none of
+    // them, and "end_header\v" made Assimp read without end (mesh_fuzzer).
     while (std::getline(in, line)) {
         const std::size_t first = line.find_first_not_of(" \t");
         if (first == std::string::npos || line.compare(first, 10, "end_header") != 0) continue;
         const std::size_t after = first + 10;
-        if (after == line.size() || std::isspace(static_cast<unsigned char>(line[after])))
+        const char next = after == line.size() ? '\n' : line[after];
+        if (next == ' ' || next == '\t' || next == '\r' || next == '\n' || next == '\f' ||
+            next == '\0')
             return true;
     }
     return false;

@@ -250,5 +250,25 @@ TEST(MeshLoader, RefusesBrokenPlyWithoutHangingOrAborting) {
     }
 }
 
+// Found by mesh_fuzzer in the campaign (tests/fuzz/seeds/mesh/regress_off_huge_count.off and
+// regress_ply_end_header_vtab.ply): a count beyond what a 64-bit integer holds was converted to
+// one (undefined behaviour), and "end_header" followed by a vertical tab, which Assimp does not
+// take for the token's end, made Assimp read without end.
+TEST(MeshLoader, RefusesHugeCountsAndAnEndHeaderAssimpDoesNotSee) {
+    const auto dir = std::filesystem::temp_directory_path();
+    const auto off = dir / "lexel_mesh_huge.off";
+    std::ofstream(off) << "OFF\n4e41 1\n0 0 0\n";
+    EXPECT_EQ(LoadError(off), off.string() +
+                                  ": declares 4e+41 vertices and 1 faces, more than its "
+                                  "17 bytes can hold (a truncated or corrupt file)");
+    const auto ply = dir / "lexel_mesh_vtab.ply";
+    std::ofstream(ply, std::ios::binary)
+        << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\v\n0\n0\n0\n";
+    EXPECT_EQ(LoadError(ply),
+              ply.string() + ": cannot read mesh: PLY header without an end_header line");
+    std::filesystem::remove(off);
+    std::filesystem::remove(ply);
+}
+
 }  // namespace
 }  // namespace lexel::spatial
