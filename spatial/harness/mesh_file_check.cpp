@@ -53,6 +53,27 @@ void CheckDeclared(const std::filesystem::path& path, double neededBytes, std::u
                          " bytes can hold (a truncated or corrupt file)");
 }
 
+// A count as Assimp reads it (strtoul10: the leading decimal digits, whatever follows them), as a
+// double so no count overflows; -1 when the token starts with no digit (Assimp's own error then).
+// A stream's >> double would refuse "36end_header" and miss the count Assimp takes from it.
+double LeadingCount(const std::string& token) {
+    double count = -1;
+    for (const char c : token) {
+        if (c < '0' || c > '9') break;
+        count = (count < 0 ? 0 : 10 * count) + (c - '0');
+    }
+    return count;
+}
+
+// The first two counts of a line ("vertices faces ..."), or false when it does not start with two.
+bool ReadTwoCounts(std::istringstream& words, double* first, double* second) {
+    std::string a, b;
+    if (!(words >> a >> b)) return false;
+    *first = LeadingCount(a);
+    *second = LeadingCount(b);
+    return *first >= 0 && *second >= 0;
+}
+
 // OFF: "[ST][C][N][4][n]OFF" then, after comments, "vertices faces edges".
 void CheckOff(const std::filesystem::path& path, const std::string& head, std::uintmax_t size) {
     std::istringstream lines(head);
@@ -62,16 +83,15 @@ void CheckOff(const std::filesystem::path& path, const std::string& head, std::u
     std::string keyword;
     keywordLine >> keyword;
     double vertices = 0, faces = 0;
-    if (!(keywordLine >> vertices >> faces)) {
+    if (!ReadTwoCounts(keywordLine, &vertices, &faces)) {
         while (std::getline(lines, line)) {
             const auto first = line.find_first_not_of(" \t\r");
             if (first == std::string::npos || line[first] == '#') continue;
             std::istringstream counts(line);
-            if (!(counts >> vertices >> faces)) return;  // Assimp reports a malformed header
+            if (!ReadTwoCounts(counts, &vertices, &faces)) return;  // Assimp's error then
             break;
         }
     }
-    if (!(vertices >= 0 && faces >= 0)) return;
     CheckDeclared(path, vertices * kMinOffVertexBytes + faces * kMinOffFaceBytes, size,
                   CountText(vertices) + " vertices and " + CountText(faces) + " faces");
 }
@@ -91,9 +111,10 @@ void CheckPly(const std::filesystem::path& path, const std::string& head, std::u
             words >> kind;
             ascii = kind == "ascii";
         } else if (word == "element") {
-            std::string name;
-            double count = 0;
-            if (!(words >> name >> count) || !(count >= 0)) return;  // Assimp's error then
+            std::string name, countToken;
+            if (!(words >> name >> countToken)) return;  // Assimp's error then
+            const double count = LeadingCount(countToken);
+            if (count < 0) return;
             elements += count;
             neededBytes += count;  // binary: ≥ 1 byte each; ASCII adjusted below
         } else if (word == "end_header") {

@@ -257,10 +257,18 @@ TEST(MeshLoader, RefusesBrokenPlyWithoutHangingOrAborting) {
 TEST(MeshLoader, RefusesHugeCountsAndAnEndHeaderAssimpDoesNotSee) {
     const auto dir = std::filesystem::temp_directory_path();
     const auto off = dir / "lexel_mesh_huge.off";
-    std::ofstream(off) << "OFF\n4e41 1\n0 0 0\n";
+    std::ofstream(off) << "OFF\n4" << std::string(41, '0') << " 1\n0 0 0\n";
     EXPECT_EQ(LoadError(off), off.string() +
                                   ": declares 4e+41 vertices and 1 faces, more than its "
-                                  "17 bytes can hold (a truncated or corrupt file)");
+                                  "55 bytes can hold (a truncated or corrupt file)");
+    // Assimp reads "36end_header" as 36 (its strtoul10 stops at the first non-digit); the check
+    // must too (campaign finding regress_off_count_glued_to_text.off: 2.4 GB allocated).
+    const auto glued = dir / "lexel_mesh_glued.off";
+    std::ofstream(glued) << "OFF\n402402360 36end_header\n";
+    EXPECT_EQ(LoadError(glued), glued.string() +
+                                    ": declares 402402360 vertices and 36 faces, more than its 27 "
+                                    "bytes can hold (a truncated or corrupt file)");
+    std::filesystem::remove(glued);
     const auto ply = dir / "lexel_mesh_vtab.ply";
     std::ofstream(ply, std::ios::binary)
         << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\v\n0\n0\n0\n";
