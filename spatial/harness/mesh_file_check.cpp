@@ -65,33 +65,25 @@ double LeadingCount(const std::string& token) {
     return count;
 }
 
-// The first two counts of a line ("vertices faces ..."), or false when it does not start with two.
-bool ReadTwoCounts(std::istringstream& words, double* first, double* second) {
-    std::string a, b;
-    if (!(words >> a >> b)) return false;
-    *first = LeadingCount(a);
-    *second = LeadingCount(b);
-    return *first >= 0 && *second >= 0;
-}
-
-// OFF: "[ST][C][N][4][n]OFF" then, after comments, "vertices faces edges".
+// OFF: "[ST][C][N][4][n]OFF" then "vertices faces edges" as Assimp reads them: the next tokens
+// after the keyword, across lines and past comment lines, each count its leading digits.
 void CheckOff(const std::filesystem::path& path, const std::string& head, std::uintmax_t size) {
     std::istringstream lines(head);
     std::string line;
-    std::getline(lines, line);  // the keyword line (Assimp also allows counts on it)
-    std::istringstream keywordLine(line);
-    std::string keyword;
-    keywordLine >> keyword;
-    double vertices = 0, faces = 0;
-    if (!ReadTwoCounts(keywordLine, &vertices, &faces)) {
-        while (std::getline(lines, line)) {
-            const auto first = line.find_first_not_of(" \t\r");
-            if (first == std::string::npos || line[first] == '#') continue;
-            std::istringstream counts(line);
-            if (!ReadTwoCounts(counts, &vertices, &faces)) return;  // Assimp's error then
-            break;
-        }
+    std::vector<std::string> tokens;
+    for (bool keywordLine = true; tokens.size() < 3 && std::getline(lines, line);) {
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first != std::string::npos && line[first] == '#') continue;
+        std::istringstream words(line);
+        std::string word;
+        if (keywordLine) words >> word;  // the keyword (Assimp also allows counts after it)
+        keywordLine = false;
+        while (tokens.size() < 3 && words >> word) tokens.push_back(word);
     }
+    if (tokens.empty()) return;  // Assimp reports the missing counts
+    const double vertices = LeadingCount(tokens[0]);
+    const double faces = tokens.size() > 1 ? std::max(0.0, LeadingCount(tokens[1])) : 0.0;
+    if (vertices < 0) return;
     CheckDeclared(path, vertices * kMinOffVertexBytes + faces * kMinOffFaceBytes, size,
                   CountText(vertices) + " vertices and " + CountText(faces) + " faces");
 }

@@ -269,6 +269,16 @@ TEST(MeshLoader, RefusesHugeCountsAndAnEndHeaderAssimpDoesNotSee) {
                                     ": declares 402402360 vertices and 36 faces, more than its 27 "
                                     "bytes can hold (a truncated or corrupt file)");
     std::filesystem::remove(glued);
+    // The counts on two lines, and a face count that is no number (Assimp reads the vertices).
+    const std::pair<std::string, std::string> split[] = {
+        {"OFF\n4000000000\n36 0\n", "4000000000 vertices and 36 faces, more than its 20 bytes"},
+        {"OFF8\n4000000000 ~00\n", "4000000000 vertices and 0 faces, more than its 20 bytes"}};
+    for (const auto& [text, reason] : split) {
+        std::ofstream(glued) << text;
+        EXPECT_EQ(LoadError(glued).rfind(glued.string() + ": declares " + reason, 0), 0u)
+            << LoadError(glued);
+        std::filesystem::remove(glued);
+    }
     const auto ply = dir / "lexel_mesh_vtab.ply";
     std::ofstream(ply, std::ios::binary)
         << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\v\n0\n0\n0\n";
