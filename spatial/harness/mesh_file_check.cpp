@@ -8,23 +8,24 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <optional>
+#include <string_view>
 #include <system_error>
-#include <vector>
+#include <utility>
 
 #include "lexel/solvers/errors.h"
 
 namespace lexel::spatial {
 namespace {
 
-// The header bytes inspected (PLY and OFF headers are a few hundred bytes).
-constexpr std::size_t kHeaderBytes = 64 * 1024;
+// A binary STL's 80-byte header and 32-bit facet count, and the bytes read to tell an ASCII STL.
+constexpr std::size_t kStlHeaderBytes = 84, kStlSniffBytes = 512;
 
-// Fewest bytes one ASCII element can take: a vertex "0 0 0\n" (6), an OFF face "3 0 1 2\n" (8), a
-// PLY element of one property "0\n" (2). A binary PLY element takes at least 1 byte a property
-// (char), a binary STL facet exactly 50.
-constexpr double kMinOffVertexBytes = 6, kMinOffFaceBytes = 8, kMinPlyAsciiBytes = 2;
-constexpr double kStlFacetBytes = 50, kStlHeaderBytes = 84;
+// Fewest bytes one element can take in the body, so that a count above size / bytes cannot be
+// the file's: an OFF vertex or face is a line ("0\n": Assimp reads missing coordinates as 0 and
+// counts a face "0" it then drops), an ASCII PLY element a line of one property ("0\n"), a binary
+// PLY element one byte (a char property), a binary STL facet exactly 50 bytes.
+constexpr double kMinLineBytes = 2, kMinPlyBinaryBytes = 1, kStlFacetBytes = 50;
 
 // A declared count for messages: exact while it is an integer a double holds, else "%.3g".
 std::string CountText(double count) {
@@ -37,13 +38,15 @@ std::string CountText(double count) {
     throw DomainError(Subject::kGeometry, path.string() + ": " + reason);
 }
 
-std::string ReadHead(const std::filesystem::path& path) {
+// The first `bytes` bytes of the file (all of it for OFF and PLY: a header's counts can follow
+// any number of comment lines, and the file is at most kMaxMeshFileBytes).
+std::string ReadBytes(const std::filesystem::path& path, std::uintmax_t bytes) {
     std::ifstream in(path, std::ios::binary);
     if (!in) Refuse(path, "cannot open the mesh file");
-    std::string head(kHeaderBytes, '\0');
-    in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(in.gcount()));
-    return head;
+    std::string text(static_cast<std::size_t>(bytes), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    return text;
 }
 
 void CheckDeclared(const std::filesystem::path& path, double neededBytes, std::uintmax_t size,
@@ -53,68 +56,162 @@ void CheckDeclared(const std::filesystem::path& path, double neededBytes, std::u
                          " bytes can hold (a truncated or corrupt file)");
 }
 
-// A count as Assimp reads it (strtoul10: the leading decimal digits, whatever follows them), as a
-// double so no count overflows; -1 when the token starts with no digit (Assimp's own error then).
-// A stream's >> double would refuse "36end_header" and miss the count Assimp takes from it.
-double LeadingCount(const std::string& token) {
-    double count = -1;
-    for (const char c : token) {
-        if (c < '0' || c > '9') break;
-        count = (count < 0 ? 0 : 10 * count) + (c - '0');
+// A number as Assimp's strtoul10 reads it at `at`: the leading decimal digits (none: 0), `at`
+// moved past them. `wrapped` is Assimp's unsigned int (modulo 2^32), `value` the number the
+// digits write (as a double, so none overflows; it is at least `wrapped`).
+struct Digits {
+    std::uint32_t wrapped = 0;
+    double value = 0;
+};
+Digits ReadDigits(const std::string& text, std::size_t& at) {
+    Digits digits;
+    for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) {
+        digits.wrapped = 10 * digits.wrapped + static_cast<std::uint32_t>(text[at] - '0');
+        digits.value = 10 * digits.value + (text[at] - '0');
     }
-    return count;
+    return digits;
 }
 
-// OFF: "[ST][C][N][4][n]OFF" then "vertices faces edges" as Assimp reads them: the next tokens
-// after the keyword, across lines and past comment lines, each count its leading digits.
-void CheckOff(const std::filesystem::path& path, const std::string& head, std::uintmax_t size) {
-    std::istringstream lines(head);
-    std::string line;
-    std::vector<std::string> tokens;
-    for (bool keywordLine = true; tokens.size() < 3 && std::getline(lines, line);) {
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first != std::string::npos && line[first] == '#') continue;
-        std::istringstream words(line);
-        std::string word;
-        if (keywordLine) words >> word;  // the keyword (Assimp also allows counts after it)
-        keywordLine = false;
-        while (tokens.size() < 3 && words >> word) tokens.push_back(word);
+// OFFLoader.cpp's NextToken (Assimp 5.2): blanks and line ends, then any '#' comment lines.
+// `text` ends with the '\0' Assimp appends, which stops every loop.
+void OffNextToken(const std::string& text, std::size_t& at) {
+    const auto skipBlanks = [&] {
+        while (text[at] == ' ' || text[at] == '\t' || text[at] == '\r' || text[at] == '\n') ++at;
+    };
+    skipBlanks();
+    while (at < text.size() && text[at] == '#') {
+        while (text[at] != '\r' && text[at] != '\n' && text[at] != '\0') ++at;
+        skipBlanks();
     }
-    if (tokens.empty()) return;  // Assimp reports the missing counts
-    const double vertices = LeadingCount(tokens[0]);
-    const double faces = tokens.size() > 1 ? std::max(0.0, LeadingCount(tokens[1])) : 0.0;
-    if (vertices < 0) return;
-    CheckDeclared(path, vertices * kMinOffVertexBytes + faces * kMinOffFaceBytes, size,
+}
+
+// The vertex and face counts Assimp 5.2's OFF reader takes from a file, followed statement by
+// statement (OFFLoader.cpp, InternReadFile): the optional prefixes ST, C, N, 4 and n glued to
+// "OFF", which the counts may follow without a blank ("OFF8 ..." declares 8 vertices); "n" puts
+// a dimension before the counts. Empty where Assimp refuses the header before allocating.
+struct OffCounts {
+    Digits vertices, faces;
+};
+std::optional<OffCounts> AssimpOffCounts(std::string text) {
+    text.push_back('\0');  // TextFileToBuffer's terminator; `end` is one past it
+    const std::size_t end = text.size();
+    std::size_t at = 0;
+    const auto before = [&](std::size_t n) { return at + n < end; };  // Assimp's car < end - n
+    OffNextToken(text, at);
+    if (before(2) && text[at] == 'S' && text[at + 1] == 'T') at += 2;
+    if (before(1) && text[at] == 'C') ++at;
+    if (before(1) && text[at] == 'N') ++at;
+    if (before(1) && text[at] == '4') ++at;
+    const bool hasDimension = before(1) && text[at] == 'n';
+    if (hasDimension) ++at;
+    if (before(3) && text.compare(at, 3, "OFF") == 0) {
+        at += 3;
+        OffNextToken(text, at);
+    } else {
+        OffNextToken(text, at);
+        if (!before(1) || text[at] < '0' || text[at] > '9') return std::nullopt;
+    }
+    if (hasDimension) {
+        if (ReadDigits(text, at).wrapped > 3) return std::nullopt;
+        OffNextToken(text, at);
+    }
+    OffCounts counts;
+    OffNextToken(text, at);
+    counts.vertices = ReadDigits(text, at);
+    OffNextToken(text, at);
+    counts.faces = ReadDigits(text, at);
+    // Assimp refuses a count of 0; one that wraps to 0 is still checked, with the count written.
+    if (counts.vertices.value == 0 || counts.faces.value == 0) return std::nullopt;
+    return counts;
+}
+
+// Assimp's TextFileToBuffer drops a UTF-8 byte order mark and converts UTF-16 and UTF-32 text
+// marked so (ConvertToUTF8) before the OFF reader sees it; the counts are read from ASCII or
+// UTF-8 only, so the others are refused rather than guessed.
+void CheckOff(const std::filesystem::path& path, std::string text, std::uintmax_t size) {
+    using namespace std::string_view_literals;
+    const std::string_view start = std::string_view(text).substr(0, 4);
+    if (start.starts_with("\xFF\xFE"sv) || start.starts_with("\xFE\xFF"sv) ||
+        start == "\0\0\xFE\xFF"sv)
+        Refuse(path, "is UTF-16 or UTF-32 text (OFF files are read as ASCII or UTF-8)");
+    if (start.starts_with("\xEF\xBB\xBF"sv)) text.erase(0, 3);
+    const std::optional<OffCounts> counts = AssimpOffCounts(std::move(text));
+    if (!counts) return;  // Assimp reports the header's error
+    const double vertices = counts->vertices.value, faces = counts->faces.value;
+    CheckDeclared(path, (vertices + faces) * kMinLineBytes, size,
                   CountText(vertices) + " vertices and " + CountText(faces) + " faces");
 }
 
-// PLY: "element NAME COUNT" lines up to "end_header"; each element has at least one property.
-void CheckPly(const std::filesystem::path& path, const std::string& head, std::uintmax_t size) {
-    std::istringstream lines(head);
-    std::string line;
-    bool ascii = false;
-    double neededBytes = 0, elements = 0;
-    while (std::getline(lines, line)) {
-        std::istringstream words(line);
-        std::string word;
-        words >> word;
-        if (word == "format") {
-            std::string kind;
-            words >> kind;
-            ascii = kind == "ascii";
-        } else if (word == "element") {
-            std::string name, countToken;
-            if (!(words >> name >> countToken)) return;  // Assimp's error then
-            const double count = LeadingCount(countToken);
-            if (count < 0) return;
-            elements += count;
-            neededBytes += count;  // binary: ≥ 1 byte each; ASCII adjusted below
-        } else if (word == "end_header") {
-            break;
+bool IsAssimpLineEnd(char c) { return c == '\r' || c == '\n' || c == '\f' || c == '\0'; }
+
+// "end_header" as Assimp's PLY reader matches it in a line: after blanks (' ', '\t'), followed
+// by a blank or a line end (IsSpaceOrNewLine; "end_header\v" is no match).
+bool IsPlyEndHeader(std::string_view line) {
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first == std::string_view::npos || line.compare(first, 10, "end_header") != 0) return false;
+    const std::size_t after = first + 10;
+    return after == line.size() || line[after] == ' ' || line[after] == '\t' ||
+           IsAssimpLineEnd(line[after]);
+}
+
+// The sum of the numbers the decimal digit runs of a line write: at least any count Assimp's
+// strtoul10 reads from the line, wherever it starts reading.
+double DigitRunSum(std::string_view line) {
+    double sum = 0, run = 0;
+    for (const char c : line) {
+        if (c >= '0' && c <= '9') {
+            run = 10 * run + (c - '0');
+        } else {
+            sum += run;
+            run = 0;
         }
     }
-    if (ascii) neededBytes = elements * kMinPlyAsciiBytes;
-    CheckDeclared(path, neededBytes, size, CountText(elements) + " elements");
+    return sum + run;
+}
+
+bool ContainsNoCase(std::string_view line, std::string_view word) {
+    return std::search(line.begin(), line.end(), word.begin(), word.end(), [](char a, char b) {
+               return std::tolower(static_cast<unsigned char>(a)) == b;
+           }) != line.end();
+}
+
+// PLY: Assimp 5.2 reserves every element's declared count while it reads the header, up to an
+// "end_header" line. The header here ends at the first line after a '\n' that IsPlyEndHeader
+// takes: Assimp starts a line after every '\n' and looks at each header line, so its header ends
+// there or before. Without one the file is refused: Assimp 5.2 then reads without end (tests/fuzz/
+// seeds/mesh/regress_ply_no_end_header*.ply, and "a\r\rend_header", whose end_header Assimp
+// skips; a file with old Mac line ends, '\r' alone, is refused too). Before it, the text is cut at
+// each of Assimp's line ends ('\r', '\n', '\f', '\0'), which gives every line Assimp reads and
+// more; a line holding "element" anywhere, in any case (more lines than Assimp takes for elements),
+// declares at most its DigitRunSum.
+void CheckPly(const std::filesystem::path& path, const std::string& text, std::uintmax_t size) {
+    std::size_t headerEnd = std::string::npos;
+    for (std::size_t lineStart = 0; lineStart < text.size();) {
+        const std::size_t newline = std::min(text.find('\n', lineStart), text.size());
+        if (lineStart > 0 &&
+            IsPlyEndHeader(std::string_view(text).substr(lineStart, newline - lineStart))) {
+            headerEnd = lineStart;
+            break;
+        }
+        lineStart = newline + 1;
+    }
+    if (headerEnd == std::string::npos)
+        Refuse(path, "cannot read mesh: PLY header without an end_header line");
+    bool ascii = false;
+    double elements = 0;
+    const std::string_view header = std::string_view(text).substr(0, headerEnd);
+    for (std::size_t lineStart = 0; lineStart < header.size();) {
+        std::size_t lineEnd = lineStart;
+        while (lineEnd < header.size() && !IsAssimpLineEnd(header[lineEnd])) ++lineEnd;
+        const std::string_view line = header.substr(lineStart, lineEnd - lineStart);
+        if (ContainsNoCase(line, "element")) elements += DigitRunSum(line);
+        const std::size_t first = line.find_first_not_of(" \t");
+        if (first != std::string_view::npos && line.substr(first).starts_with("format"))
+            ascii = line.find("ascii") != std::string_view::npos;
+        lineStart = lineEnd + 1;
+    }
+    CheckDeclared(path, elements * (ascii ? kMinLineBytes : kMinPlyBinaryBytes), size,
+                  CountText(elements) + " elements");
 }
 
 // Binary STL: an 80-byte header, a 32-bit facet count, 50 bytes a facet. An ASCII STL ("solid"
@@ -122,7 +219,7 @@ void CheckPly(const std::filesystem::path& path, const std::string& head, std::u
 void CheckStl(const std::filesystem::path& path, const std::string& head, std::uintmax_t size) {
     const bool ascii =
         head.rfind("solid", 0) == 0 &&
-        std::none_of(head.begin(), head.begin() + std::min<std::size_t>(head.size(), 512),
+        std::none_of(head.begin(), head.begin() + std::min(head.size(), kStlSniffBytes),
                      [](char c) { return c == '\0'; });
     if (ascii || head.size() < kStlHeaderBytes) return;  // Assimp reports a short file
     std::uint32_t facets = 0;
@@ -151,10 +248,9 @@ void CheckMeshFile(const std::filesystem::path& path) {
     if (extension != ".obj" && extension != ".off" && extension != ".ply" && extension != ".stl")
         Refuse(path, "format '" + extension +
                          "' is not read (mesh formats: " + std::string(kMeshFormats) + ")");
-    const std::string head = ReadHead(path);
-    if (extension == ".off") CheckOff(path, head, size);
-    if (extension == ".ply") CheckPly(path, head, size);
-    if (extension == ".stl") CheckStl(path, head, size);
+    if (extension == ".off") CheckOff(path, ReadBytes(path, size), size);
+    if (extension == ".ply") CheckPly(path, ReadBytes(path, size), size);
+    if (extension == ".stl") CheckStl(path, ReadBytes(path, kStlSniffBytes), size);
 }
 
 }  // namespace lexel::spatial

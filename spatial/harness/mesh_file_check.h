@@ -19,8 +19,10 @@ inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{64} << 20;
 inline constexpr const char* kMeshFormats = "obj, off, ply, stl";
 
 // Throws DomainError (Subject::kGeometry) naming the file and the reason when it is not a regular
-// file, is larger than kMaxMeshFileBytes, has an extension outside kMeshFormats, or declares
-// more vertices, faces or elements than its size can hold.
+// file, is larger than kMaxMeshFileBytes, has an extension outside kMeshFormats, declares more
+// vertices, faces or elements than its size can hold (the counts read where Assimp 5.2 reads
+// them), is a PLY file without an end_header line Assimp sees (Assimp then reads without end), or
+// an OFF file in UTF-16 or UTF-32. Assimp picks its reader by the extension, so the checks do too.
 void CheckMeshFile(const std::filesystem::path& path);
 
 }  // namespace lexel::spatial

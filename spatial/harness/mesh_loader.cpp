@@ -7,9 +7,7 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
-#include <cctype>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <string>
 
@@ -25,28 +23,6 @@ std::string OneLine(std::string text) {
         if (c == '\n' || c == '\r') c = ' ';
     while (!text.empty() && text.back() == ' ') text.pop_back();
     return text.empty() ? std::string("unknown error") : text;
-}
-
-// False for a file that starts with PLY's magic "ply" but has no end_header line, which Assimp 5.2
-// (Debian 12) reads without end (found by tests/fuzz/mesh_fuzzer; the input is
-// tests/fuzz/seeds/mesh/regress_ply_no_end_header.ply). Reads only the header's lines.
-bool PlyHeaderEnds(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string line;
-    if (!std::getline(in, line) || !line.starts_with("ply")) return true;  // not PLY
-    // The token as Assimp matches it: "end_header" followed by a blank, a tab or a line end
-    // (Assimp's IsSpaceOrNewLine: ' ', '\t', '\r', '\n', '\f', '\0'); a vertical tab is none of
-    // them, and "end_header\v" made Assimp read without end (mesh_fuzzer).
-    while (std::getline(in, line)) {
-        const std::size_t first = line.find_first_not_of(" \t");
-        if (first == std::string::npos || line.compare(first, 10, "end_header") != 0) continue;
-        const std::size_t after = first + 10;
-        const char next = after == line.size() ? '\n' : line[after];
-        if (next == ' ' || next == '\t' || next == '\r' || next == '\n' || next == '\f' ||
-            next == '\0')
-            return true;
-    }
-    return false;
 }
 
 // What Assimp's post-processing would trip over in an importer's scene, or empty: a face
@@ -78,11 +54,8 @@ std::string ImporterSceneError(const aiScene& scene) {
 
 TriangleMesh LoadMesh(const std::filesystem::path& path) {
     const std::string name = path.string();
-    CheckMeshFile(path);  // size, format and declared counts, before Assimp allocates for them
-
-    if (!PlyHeaderEnds(path))
-        throw DomainError(Subject::kGeometry,
-                          name + ": cannot read mesh: PLY header without an end_header line");
+    // Size, format, declared counts and a PLY header's end, before Assimp allocates for them.
+    CheckMeshFile(path);
 
     Assimp::Importer importer;
     // Points and lines are removed by aiProcess_SortByPType rather than kept as degenerate meshes.

@@ -269,10 +269,15 @@ TEST(MeshLoader, RefusesHugeCountsAndAnEndHeaderAssimpDoesNotSee) {
                                     ": declares 402402360 vertices and 36 faces, more than its 27 "
                                     "bytes can hold (a truncated or corrupt file)");
     std::filesystem::remove(glued);
-    // The counts on two lines, and a face count that is no number (Assimp reads the vertices).
+    // The counts on two lines, and counts glued to the keyword: Assimp reads "OFF8" as the
+    // keyword and 8 vertices (campaign findings regress_off_counts_on_two_lines.off and
+    // regress_off_count_after_keyword.off, which made Assimp allocate 44 GB).
     const std::pair<std::string, std::string> split[] = {
         {"OFF\n4000000000\n36 0\n", "4000000000 vertices and 36 faces, more than its 20 bytes"},
-        {"OFF8\n4000000000 ~00\n", "4000000000 vertices and 0 faces, more than its 20 bytes"}};
+        {"OFF8\n4000000000 ~00\n", "8 vertices and 4000000000 faces, more than its 20 bytes"},
+        {"OFF8000240236 02des [1", "8000240236 vertices and 2 faces, more than its 22 bytes"},
+        {"\xEF\xBB\xBF# a comment\nCOFF 900000000 1 0\n",
+         "900000000 vertices and 1 faces, more than its 34 bytes"}};
     for (const auto& [text, reason] : split) {
         std::ofstream(glued) << text;
         EXPECT_EQ(LoadError(glued).rfind(glued.string() + ": declares " + reason, 0), 0u)
@@ -286,6 +291,44 @@ TEST(MeshLoader, RefusesHugeCountsAndAnEndHeaderAssimpDoesNotSee) {
               ply.string() + ": cannot read mesh: PLY header without an end_header line");
     std::filesystem::remove(off);
     std::filesystem::remove(ply);
+}
+
+// Found by mesh_fuzzer in the second campaign, and by reading Assimp 5.2 after it: an element
+// line whose count is no number ended the PLY check early, so a count after it went unread
+// (regress_ply_count_after_bad_element.ply: 20 GB allocated); a "PLY" magic (Assimp takes any
+// case) without end_header, and an end_header after "\r\r" (Assimp skips from the second line
+// end to the next '\n'), made Assimp read without end; a UTF-16 OFF file is converted by Assimp
+// and is refused here rather than read without its counts checked.
+TEST(MeshLoader, ChecksEveryPlyElementAndTheHeaderEndAssimpSees) {
+    const auto dir = std::filesystem::temp_directory_path();
+    const std::string vertices = "element vertex 3\nproperty float x\n";
+    const std::pair<std::string, std::string> files[] = {
+        {"ply\nformat ascii 1.0\n" + vertices + "element ertex t:ertex 12\n" +
+             "element ertex 4000000000\nproperty float y\nend_header\n0\n0\n0\n",
+         "declares 4000000015 elements, more than its 139 bytes can hold"},
+        {"PLY\nformat ascii 1.0\n" + vertices + "0\n0\n0\n",
+         "cannot read mesh: PLY header without an end_header line"},
+        {"ply\nformat ascii 1.0\n" + vertices + "comment a\r\rend_header\n0\n0\n0\n",
+         "cannot read mesh: PLY header without an end_header line"},
+    };
+    const auto ply = dir / "lexel_mesh_elements.ply";
+    for (const auto& [text, reason] : files) {
+        std::ofstream(ply, std::ios::binary) << text;
+        EXPECT_EQ(LoadError(ply).rfind(ply.string() + ": " + reason, 0), 0u) << LoadError(ply);
+    }
+    std::filesystem::remove(ply);
+    // With Windows line ends ("\r\n") the header's end is seen and the file read.
+    std::ofstream(ply, std::ios::binary)
+        << "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\nproperty float x\r\nproperty float y"
+           "\r\nproperty float z\r\nelement face 1\r\nproperty list uchar int vertex_indices\r\n"
+           "comment a\r\nend_header\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n";
+    EXPECT_EQ(LoadMesh(ply).triangles.size(), 1u);
+    std::filesystem::remove(ply);
+    const auto off = dir / "lexel_mesh_utf16.off";
+    std::ofstream(off, std::ios::binary) << std::string("\xFF\xFEO\0F\0F\0\n\0", 10);
+    EXPECT_EQ(LoadError(off),
+              off.string() + ": is UTF-16 or UTF-32 text (OFF files are read as ASCII or UTF-8)");
+    std::filesystem::remove(off);
 }
 
 }  // namespace
