@@ -12,6 +12,7 @@ namespace lexel::spatial {
 // aiProcess_PreTransformVertices) and identical vertices joined; polygons are triangulated, and
 // point and line primitives are dropped. Throws DomainError (Subject::kGeometry), naming the file,
 // when it fails CheckMeshFile (missing, too large, another format, counts its size cannot hold),
+// when reading it needs more than 64 MiB plus 64 bytes a file byte (ScopedAllocationCap),
 // when Assimp cannot read it (Assimp's reason, on one line), when it holds no
 // triangles, or when a coordinate is not finite. Prints nothing.
 TriangleMesh LoadMesh(const std::filesystem::path& path);
