@@ -23,11 +23,16 @@ struct ThreadCap {
 };
 constinit thread_local ThreadCap tCap;
 
+// Room above the cap once it has refused, for the refused code's error handling (an exception's
+// message, a log line) rather than a second std::bad_alloc thrown from a handler (bytes).
+constexpr long long kHeadroomAfterRefusal = 16LL << 20;
+
 // nullptr when the cap refuses or malloc fails. `alignment` 0: the default alignment.
 void* Allocate(std::size_t size, std::size_t alignment) noexcept {
     ThreadCap& cap = tCap;
     if (cap.active) {
-        const long long room = cap.capBytes - cap.heldBytes;
+        const long long room =
+            cap.capBytes - cap.heldBytes + (cap.refused ? kHeadroomAfterRefusal : 0);
         if (room < 0 || size > static_cast<unsigned long long>(room)) {
             cap.refused = true;
             return nullptr;

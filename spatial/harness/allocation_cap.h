@@ -7,7 +7,8 @@
 // Linking this file replaces the global operator new and delete of the whole program (malloc and
 // free underneath; the bytes a block holds are malloc_usable_size). Outside a scope they cost one
 // thread-local test. The harness is lexel's own test bench, not installed, so no renderer that
-// links lexel::spatial gets them.
+// links lexel::spatial gets them. Under AddressSanitizer every block is still checked (malloc and
+// free are its own); only its check that new pairs with delete is lost.
 #pragma once
 
 #include <cstddef>
@@ -18,8 +19,9 @@ class ScopedAllocationCap {
   public:
     // Until destruction, an allocation on this thread that would take the bytes held by blocks
     // allocated on it (less those freed on it) during the scope above `bytes` is refused:
-    // operator new throws std::bad_alloc and the nothrow forms return nullptr. Scopes do not
-    // nest: a second on the same thread throws std::logic_error.
+    // operator new throws std::bad_alloc and the nothrow forms return nullptr. After the first
+    // refusal 16 MiB above the cap stay open for the refused code's error handling. Scopes do
+    // not nest: a second on the same thread throws std::logic_error.
     explicit ScopedAllocationCap(std::size_t bytes);
     ~ScopedAllocationCap();
     ScopedAllocationCap(const ScopedAllocationCap&) = delete;

@@ -23,9 +23,13 @@ constexpr std::size_t kStlHeaderBytes = 84, kStlSniffBytes = 512;
 
 // Fewest bytes one element can take in the body, so that a count above size / bytes cannot be
 // the file's: an OFF vertex or face is a line ("0\n": Assimp reads missing coordinates as 0 and
-// counts a face "0" it then drops), an ASCII PLY element a line of one property ("0\n"), a binary
-// PLY element one byte (a char property), a binary STL facet exactly 50 bytes.
-constexpr double kMinLineBytes = 2, kMinPlyBinaryBytes = 1, kStlFacetBytes = 50;
+// counts a face "0" it then drops), a binary STL facet exactly 50 bytes.
+constexpr double kMinLineBytes = 2, kStlFacetBytes = 50;
+
+// Assimp 5.2's OFF reader copies each body line into a 4096-byte buffer and then writes the
+// terminating '\0' one past the line's last character: a line of 4096 bytes or more overflows it
+// (GetNextLine in ParsingUtils.h).
+constexpr std::size_t kOffLineBufferBytes = 4096;
 
 // A declared count for messages: exact while it is an integer a double holds, else "%.3g".
 std::string CountText(double count) {
@@ -38,8 +42,8 @@ std::string CountText(double count) {
     throw DomainError(Subject::kGeometry, path.string() + ": " + reason);
 }
 
-// The first `bytes` bytes of the file (all of it for OFF and PLY: a header's counts can follow
-// any number of comment lines, and the file is at most kMaxMeshFileBytes).
+// The first `bytes` bytes of the file (all of it for OFF: its counts can follow any number of
+// comment lines, and every line's length is checked; the file is at most kMaxMeshFileBytes).
 std::string ReadBytes(const std::filesystem::path& path, std::uintmax_t bytes) {
     std::ifstream in(path, std::ios::binary);
     if (!in) Refuse(path, "cannot open the mesh file");
@@ -125,93 +129,27 @@ std::optional<OffCounts> AssimpOffCounts(std::string text) {
     return counts;
 }
 
-// Assimp's TextFileToBuffer drops a UTF-8 byte order mark and converts UTF-16 and UTF-32 text
-// marked so (ConvertToUTF8) before the OFF reader sees it; the counts are read from ASCII or
-// UTF-8 only, so the others are refused rather than guessed.
+// The longest run of bytes between Assimp's line ends ('\r', '\n', '\f', '\0').
+std::size_t LongestLine(std::string_view text) {
+    std::size_t longest = 0, run = 0;
+    for (const char c : text) {
+        run = (c == '\r' || c == '\n' || c == '\f' || c == '\0') ? 0 : run + 1;
+        longest = std::max(longest, run);
+    }
+    return longest;
+}
+
 void CheckOff(const std::filesystem::path& path, std::string text, std::uintmax_t size) {
-    using namespace std::string_view_literals;
-    const std::string_view start = std::string_view(text).substr(0, 4);
-    if (start.starts_with("\xFF\xFE"sv) || start.starts_with("\xFE\xFF"sv) ||
-        start == "\0\0\xFE\xFF"sv)
-        Refuse(path, "is UTF-16 or UTF-32 text (OFF files are read as ASCII or UTF-8)");
-    if (start.starts_with("\xEF\xBB\xBF"sv)) text.erase(0, 3);
+    if (LongestLine(text) >= kOffLineBufferBytes)
+        Refuse(path, "has a line of " + std::to_string(LongestLine(text)) +
+                         " bytes; Assimp 5.2 reads OFF lines of at most " +
+                         std::to_string(kOffLineBufferBytes - 1));
+    if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // TextFileToBuffer drops it too
     const std::optional<OffCounts> counts = AssimpOffCounts(std::move(text));
     if (!counts) return;  // Assimp reports the header's error
     const double vertices = counts->vertices.value, faces = counts->faces.value;
     CheckDeclared(path, (vertices + faces) * kMinLineBytes, size,
                   CountText(vertices) + " vertices and " + CountText(faces) + " faces");
-}
-
-bool IsAssimpLineEnd(char c) { return c == '\r' || c == '\n' || c == '\f' || c == '\0'; }
-
-// "end_header" as Assimp's PLY reader matches it in a line: after blanks (' ', '\t'), followed
-// by a blank or a line end (IsSpaceOrNewLine; "end_header\v" is no match).
-bool IsPlyEndHeader(std::string_view line) {
-    const std::size_t first = line.find_first_not_of(" \t");
-    if (first == std::string_view::npos || line.compare(first, 10, "end_header") != 0) return false;
-    const std::size_t after = first + 10;
-    return after == line.size() || line[after] == ' ' || line[after] == '\t' ||
-           IsAssimpLineEnd(line[after]);
-}
-
-// The sum of the numbers the decimal digit runs of a line write: at least any count Assimp's
-// strtoul10 reads from the line, wherever it starts reading.
-double DigitRunSum(std::string_view line) {
-    double sum = 0, run = 0;
-    for (const char c : line) {
-        if (c >= '0' && c <= '9') {
-            run = 10 * run + (c - '0');
-        } else {
-            sum += run;
-            run = 0;
-        }
-    }
-    return sum + run;
-}
-
-bool ContainsNoCase(std::string_view line, std::string_view word) {
-    return std::search(line.begin(), line.end(), word.begin(), word.end(), [](char a, char b) {
-               return std::tolower(static_cast<unsigned char>(a)) == b;
-           }) != line.end();
-}
-
-// PLY: Assimp 5.2 reserves every element's declared count while it reads the header, up to an
-// "end_header" line. The header here ends at the first line after a '\n' that IsPlyEndHeader
-// takes: Assimp starts a line after every '\n' and looks at each header line, so its header ends
-// there or before. Without one the file is refused: Assimp 5.2 then reads without end (tests/fuzz/
-// seeds/mesh/regress_ply_no_end_header*.ply, and "a\r\rend_header", whose end_header Assimp
-// skips; a file with old Mac line ends, '\r' alone, is refused too). Before it, the text is cut at
-// each of Assimp's line ends ('\r', '\n', '\f', '\0'), which gives every line Assimp reads and
-// more; a line holding "element" anywhere, in any case (more lines than Assimp takes for elements),
-// declares at most its DigitRunSum.
-void CheckPly(const std::filesystem::path& path, const std::string& text, std::uintmax_t size) {
-    std::size_t headerEnd = std::string::npos;
-    for (std::size_t lineStart = 0; lineStart < text.size();) {
-        const std::size_t newline = std::min(text.find('\n', lineStart), text.size());
-        if (lineStart > 0 &&
-            IsPlyEndHeader(std::string_view(text).substr(lineStart, newline - lineStart))) {
-            headerEnd = lineStart;
-            break;
-        }
-        lineStart = newline + 1;
-    }
-    if (headerEnd == std::string::npos)
-        Refuse(path, "cannot read mesh: PLY header without an end_header line");
-    bool ascii = false;
-    double elements = 0;
-    const std::string_view header = std::string_view(text).substr(0, headerEnd);
-    for (std::size_t lineStart = 0; lineStart < header.size();) {
-        std::size_t lineEnd = lineStart;
-        while (lineEnd < header.size() && !IsAssimpLineEnd(header[lineEnd])) ++lineEnd;
-        const std::string_view line = header.substr(lineStart, lineEnd - lineStart);
-        if (ContainsNoCase(line, "element")) elements += DigitRunSum(line);
-        const std::size_t first = line.find_first_not_of(" \t");
-        if (first != std::string_view::npos && line.substr(first).starts_with("format"))
-            ascii = line.find("ascii") != std::string_view::npos;
-        lineStart = lineEnd + 1;
-    }
-    CheckDeclared(path, elements * (ascii ? kMinLineBytes : kMinPlyBinaryBytes), size,
-                  CountText(elements) + " elements");
 }
 
 // Binary STL: an 80-byte header, a 32-bit facet count, 50 bytes a facet. An ASCII STL ("solid"
@@ -234,6 +172,15 @@ std::string LowerExtension(const std::filesystem::path& path) {
     return extension;
 }
 
+// Assimp's TextFileToBuffer converts text marked as UTF-16 or UTF-32 (ConvertToUTF8), but 5.2
+// discards what it converts and reads up to 3 bytes past the file doing so: such a file is
+// refused. (A UTF-8 mark is dropped and read.)
+bool StartsWithUtf16Or32Mark(std::string_view head) {
+    using namespace std::string_view_literals;
+    return head.starts_with("\xFF\xFE"sv) || head.starts_with("\xFE\xFF"sv) ||
+           head.starts_with("\0\0\xFE\xFF"sv);
+}
+
 }  // namespace
 
 void CheckMeshFile(const std::filesystem::path& path) {
@@ -245,11 +192,18 @@ void CheckMeshFile(const std::filesystem::path& path) {
         Refuse(path, "is " + std::to_string(size) + " bytes, larger than the " +
                          std::to_string(kMaxMeshFileBytes >> 20) + " MiB a mesh file may be");
     const std::string extension = LowerExtension(path);
-    if (extension != ".obj" && extension != ".off" && extension != ".ply" && extension != ".stl")
+    if (extension == ".ply")
+        Refuse(path,
+               "PLY is not read: Assimp 5.2's PLY reader overflows its buffers on malformed "
+               "files (convert the mesh to OBJ, OFF or STL)");
+    if (extension != ".obj" && extension != ".off" && extension != ".stl")
         Refuse(path, "format '" + extension +
                          "' is not read (mesh formats: " + std::string(kMeshFormats) + ")");
+    if (StartsWithUtf16Or32Mark(ReadBytes(path, 4)))
+        Refuse(path,
+               "is UTF-16 or UTF-32 text, which Assimp 5.2 does not read (save it as ASCII "
+               "or UTF-8)");
     if (extension == ".off") CheckOff(path, ReadBytes(path, size), size);
-    if (extension == ".ply") CheckPly(path, ReadBytes(path, size), size);
     if (extension == ".stl") CheckStl(path, ReadBytes(path, kStlSniffBytes), size);
 }
 

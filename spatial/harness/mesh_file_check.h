@@ -14,15 +14,18 @@ namespace lexel::spatial {
 // Assimp's memory grows with the file (about 10-30 bytes per byte of OBJ), so this bounds it.
 inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{64} << 20;
 
-// The formats read: those whose declared counts are checked here (OFF, PLY, binary STL) or that
-// declare none (OBJ, ASCII STL), so memory stays proportional to the file.
-inline constexpr const char* kMeshFormats = "obj, off, ply, stl";
+// The formats read: those whose declared counts are checked here (OFF, binary STL) or that
+// declare none (OBJ, ASCII STL), so memory stays proportional to the file. PLY is not read:
+// Assimp 5.2's PLY reader writes past its buffers on malformed files (mesh_fuzzer and review: a
+// second vertex element overflows the vertex array, comment lines make it parse stale bytes of
+// earlier lines as elements, a missing end_header makes it read without end).
+inline constexpr const char* kMeshFormats = "obj, off, stl";
 
 // Throws DomainError (Subject::kGeometry) naming the file and the reason when it is not a regular
-// file, is larger than kMaxMeshFileBytes, has an extension outside kMeshFormats, declares more
-// vertices, faces or elements than its size can hold (the counts read where Assimp 5.2 reads
-// them), is a PLY file without an end_header line Assimp sees (Assimp then reads without end), or
-// an OFF file in UTF-16 or UTF-32. Assimp picks its reader by the extension, so the checks do too.
+// file, is larger than kMaxMeshFileBytes, has an extension outside kMeshFormats, starts with a
+// UTF-16 or UTF-32 byte order mark, declares more vertices, faces or facets than its size can hold
+// (the counts read where Assimp 5.2 reads them), or is an OFF file with a line of 4096 bytes or
+// more (Assimp's line buffer). Assimp picks its reader by the extension, so the checks do too.
 void CheckMeshFile(const std::filesystem::path& path);
 
 }  // namespace lexel::spatial

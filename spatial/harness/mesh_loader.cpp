@@ -8,7 +8,9 @@
 
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <new>
 #include <string>
 
 #include "lexel/solvers/errors.h"
@@ -26,10 +28,17 @@ std::string OneLine(std::string text) {
     return text.empty() ? std::string("unknown error") : text;
 }
 
-// What Assimp's post-processing would trip over in an importer's scene, or empty: a face
-// without indices, an index past its mesh's vertices, or a mesh marked as holding polygons
-// (more than three corners) that holds none.
-std::string ImporterSceneError(const aiScene& scene) {
+// What Assimp's post-processing would trip over in an importer's scene, or empty: more vertices
+// and faces than the file has bytes (each takes at least one), a face without indices, an index
+// past its mesh's vertices, or a mesh marked as holding polygons (more than three corners) that
+// holds none.
+std::string ImporterSceneError(const aiScene& scene, std::uintmax_t fileBytes) {
+    std::uintmax_t elements = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+        elements += std::uintmax_t{scene.mMeshes[m]->mNumVertices} + scene.mMeshes[m]->mNumFaces;
+    if (elements > fileBytes)
+        return "it holds " + std::to_string(elements) + " vertices and faces, more than its " +
+               std::to_string(fileBytes) + " bytes can (a corrupt file)";
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         const aiMesh& in = *scene.mMeshes[m];
         bool polygons = false;
@@ -51,32 +60,52 @@ std::string ImporterSceneError(const aiScene& scene) {
     return {};
 }
 
-// The bytes Assimp may hold while it reads a file: kReadBaseBytes and kReadBytesPerFileByte for
-// each byte of the file (4.06 GiB for the largest file). The files lexel ships or tests take at
-// most about 30 bytes a byte (an OFF of 64 MB with normals, colours and texture coordinates 1.7
-// GB; OBJ 10 to 30; PLY 6 to 16); a file that needs more declares counts its data do not fill.
+// The bytes Assimp may hold while it reads and post-processes a file: kReadBaseBytes and
+// kReadBytesPerFileByte for each byte of the file (4.06 GiB for the largest file). Files take
+// about 30 bytes a byte at most (an OFF of 64 MB with normals, colours and texture coordinates
+// 1.7 GB; a 54 MB OBJ of 1.6 million triangles 0.94 GB); a file that needs more declares counts
+// its data do not fill.
 constexpr std::uintmax_t kReadBaseBytes = std::uintmax_t{64} << 20, kReadBytesPerFileByte = 64;
 
-// Assimp's reading of the file, validated, under a ScopedAllocationCap: a count in the body that
-// asks for more than the cap (Assimp 5.2 reserves a PLY list's length before reading it) is one
-// error instead of gigabytes.
-const aiScene* ReadUnderCap(Assimp::Importer& importer, const std::filesystem::path& path) {
-    const std::uintmax_t capBytes =
-        kReadBaseBytes + kReadBytesPerFileByte * std::filesystem::file_size(path);
+// Assimp's scene of the file, read, validated, checked (ImporterSceneError) and post-processed
+// under one ScopedAllocationCap, so a count in the body that no header check sees is one error
+// instead of gigabytes. Throws DomainError.
+const aiScene* ReadScene(Assimp::Importer& importer, const std::filesystem::path& path) {
+    const std::string name = path.string();
+    const std::uintmax_t fileBytes = std::filesystem::file_size(path);
+    const std::uintmax_t capBytes = kReadBaseBytes + kReadBytesPerFileByte * fileBytes;
     const aiScene* scene = nullptr;
+    std::string error;
     bool refused = false;
     {
         const ScopedAllocationCap cap(capBytes);
-        scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+        try {
+            // The post-processing steps assume a scene that is valid as Assimp defines it, and
+            // Debian's Assimp aborts the process on a failed check inside them (a truncated PLY
+            // file gave a mesh marked as polygons without one: tests/fuzz/seeds/mesh/
+            // regress_ply_truncated.ply). So the file is read and validated first, its faces
+            // checked, and only then post-processed.
+            scene = importer.ReadFile(name, aiProcess_ValidateDataStructure);
+            if (scene != nullptr) error = ImporterSceneError(*scene, fileBytes);
+            if (scene != nullptr && error.empty())
+                scene = importer.ApplyPostProcessing(
+                    aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                    aiProcess_PreTransformVertices | aiProcess_SortByPType);
+        } catch (const std::bad_alloc&) {
+            scene = nullptr;  // refused again while Assimp handled a refusal
+        }
         refused = cap.Refused();
     }
-    if (refused) {
-        importer.FreeScene();
+    if (refused)
         throw DomainError(Subject::kGeometry,
-                          path.string() + ": cannot read mesh: reading it needs more than " +
+                          name + ": cannot read mesh: reading it needs more than " +
                               std::to_string(capBytes >> 20) +
                               " MiB (a count in the file larger than its data)");
-    }
+    if (!error.empty())
+        throw DomainError(Subject::kGeometry, name + ": cannot read mesh: " + error);
+    if (scene == nullptr)
+        throw DomainError(Subject::kGeometry,
+                          name + ": cannot read mesh: " + OneLine(importer.GetErrorString()));
     return scene;
 }
 
@@ -84,29 +113,13 @@ const aiScene* ReadUnderCap(Assimp::Importer& importer, const std::filesystem::p
 
 TriangleMesh LoadMesh(const std::filesystem::path& path) {
     const std::string name = path.string();
-    // Size, format, declared counts and a PLY header's end, before Assimp allocates for them.
-    CheckMeshFile(path);
+    CheckMeshFile(path);  // size, format and declared counts, before Assimp allocates for them
 
     Assimp::Importer importer;
     // Points and lines are removed by aiProcess_SortByPType rather than kept as degenerate meshes.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // The post-processing steps assume a scene that is valid as Assimp defines it, and Debian's
-    // Assimp aborts the process on a failed check inside them: a truncated PLY file gives a mesh
-    // marked as polygons without one (found by tests/fuzz/mesh_fuzzer:
-    // tests/fuzz/seeds/mesh/regress_ply_truncated.ply). So the file is read and validated
-    // first, its faces checked (ImporterSceneError), and only then post-processed.
-    const aiScene* scene = ReadUnderCap(importer, path);
-    if (scene != nullptr) {
-        if (const std::string error = ImporterSceneError(*scene); !error.empty())
-            throw DomainError(Subject::kGeometry, name + ": cannot read mesh: " + error);
-        scene =
-            importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                         aiProcess_PreTransformVertices | aiProcess_SortByPType);
-    }
-    if (scene == nullptr)
-        throw DomainError(Subject::kGeometry,
-                          name + ": cannot read mesh: " + OneLine(importer.GetErrorString()));
+    const aiScene* scene = ReadScene(importer, path);
 
     TriangleMesh mesh;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {

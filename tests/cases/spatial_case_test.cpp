@@ -446,7 +446,7 @@ TEST(SpatialCase, ShippedMeshesSitOnTheFloor) {
         LoadSpatialScene(std::string(LEXEL_CASES_DIR) + "/spatial/meshes.json");
     ASSERT_TRUE(scene.floorPlane.has_value());
     EXPECT_EQ(*scene.floorPlane, glm::dvec4(0, 1, 0, 0));
-    // The floor (2) plus spider OBJ and STL (1368 each), Wuson PLY and STL (3732 each) and the
+    // The floor (2) plus spider OBJ and STL (1368 each), Wuson OBJ and STL (3732 each) and the
     // sphere with a hole (285), as Assimp 5.2 reads them.
     EXPECT_EQ(scene.geometry.triangles.size(), 2u + 1368 + 1368 + 3732 + 3732 + 285);
     const spatial::Bounds b = scene.geometry.ComputeBounds();

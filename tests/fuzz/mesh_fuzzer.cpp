@@ -1,11 +1,12 @@
 // libFuzzer target: model files through spatial::LoadMesh (spatial/harness/mesh_loader.h), the
 // loader of a 3D case's `mesh` entries. The bytes are written to a file whose extension is the
-// format they look like, as a user would name it — "ply" (any case) → .ply, "OFF" (or COFF, NOFF,
-// ...) → .off, "solid" → .stl, a zero byte (binary) → .stl, anything else → .obj — so the four
-// formats the loader reads (mesh_file_check.h: OBJ, OFF, PLY, STL), its header checks and Assimp's
-// importers for them are the ones fuzzed. A bad file must be
-// refused with a DomainError of one line; any other exception, a crash, a sanitizer report or a
-// hang is a finding. Assimp is not instrumented: coverage guides only through lexel's code.
+// format they look like, as a user would name it — "OFF" (or COFF, NOFF, ...) → .off, "solid" →
+// .stl, a zero byte (binary) → .stl, anything else → .obj — so the three formats the loader reads
+// (mesh_file_check.h: OBJ, OFF, STL), its checks and Assimp's importers for them are the ones
+// fuzzed (PLY is refused by its extension alone; the PLY seeds of earlier findings are read as
+// OBJ). A bad file must be refused with a DomainError of one line; any other exception, a crash,
+// a sanitizer report or a hang is a finding. Assimp is not instrumented: coverage guides only
+// through lexel's code.
 #include <unistd.h>
 
 #include <cstddef>
@@ -22,10 +23,6 @@
 namespace {
 
 std::string_view ExtensionFor(std::string_view bytes) {
-    // PLY's magic in any case, as Assimp takes it ("ply", "PLY", "Ply").
-    if (bytes.size() >= 3 && (bytes[0] | 0x20) == 'p' && (bytes[1] | 0x20) == 'l' &&
-        (bytes[2] | 0x20) == 'y')
-        return ".ply";
     const std::size_t off = bytes.find("OFF");
     if (off != std::string_view::npos && off < 5 && bytes.find('\n') > off) return ".off";
     if (bytes.starts_with("solid")) return ".stl";
