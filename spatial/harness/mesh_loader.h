@@ -1,4 +1,4 @@
-// Reading triangle meshes from model files (OBJ, OFF, PLY, STL, through Assimp) for the `mesh`
+// Reading triangle meshes from model files (OBJ, OFF, STL, through Assimp) for the `mesh`
 // geometry entries of 3D case files (cases/README.md).
 #pragma once
 

@@ -513,7 +513,7 @@ expect_run(0 "^The fair comparison [^\n]*spatial_sweep_only, 2 point lights" "^$
            sweep "${DATA}/spatial_sweep_only.json" --lights 2 --method optimal)
 expect_run(0 "^light 0: point \\(8, 8, 2\\)" "^$" run "${DATA}/spatial_no_sweep.json" --method optimal --no-map-truth)
 
-# Real Assimp meshes end to end (OBJ, STL, PLY from Debian's assimp-testmodels).
+# Real Assimp meshes end to end (OBJ and STL from Debian's assimp-testmodels).
 expect_run(0 "^light 0: point \\(12, 25, -8\\)[^\n]*\nmethod +misclassified[^\n]*\n-+\nfocused +[0-9]+ [^\n]*\n\nlight 1: directional"
            "^$" run "${CASES}/spatial/meshes.json" --no-map-truth --method focused)
 
