@@ -140,8 +140,8 @@ std::size_t LongestLine(std::string_view text) {
 }
 
 void CheckOff(const std::filesystem::path& path, std::string text, std::uintmax_t size) {
-    if (LongestLine(text) >= kOffLineBufferBytes)
-        Refuse(path, "has a line of " + std::to_string(LongestLine(text)) +
+    if (const std::size_t longest = LongestLine(text); longest >= kOffLineBufferBytes)
+        Refuse(path, "has a line of " + std::to_string(longest) +
                          " bytes; Assimp 5.2 reads OFF lines of at most " +
                          std::to_string(kOffLineBufferBytes - 1));
     if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // TextFileToBuffer drops it too
@@ -199,12 +199,14 @@ void CheckMeshFile(const std::filesystem::path& path) {
     if (extension != ".obj" && extension != ".off" && extension != ".stl")
         Refuse(path, "format '" + extension +
                          "' is not read (mesh formats: " + std::string(kMeshFormats) + ")");
-    if (StartsWithUtf16Or32Mark(ReadBytes(path, 4)))
+    // One read: all of an OFF file, the head of the others.
+    std::string text = ReadBytes(path, extension == ".off" ? size : kStlSniffBytes);
+    if (StartsWithUtf16Or32Mark(text))
         Refuse(path,
                "is UTF-16 or UTF-32 text, which Assimp 5.2 does not read (save it as ASCII "
                "or UTF-8)");
-    if (extension == ".off") CheckOff(path, ReadBytes(path, size), size);
-    if (extension == ".stl") CheckStl(path, ReadBytes(path, kStlSniffBytes), size);
+    if (extension == ".off") CheckOff(path, std::move(text), size);
+    if (extension == ".stl") CheckStl(path, text, size);
 }
 
 }  // namespace lexel::spatial
