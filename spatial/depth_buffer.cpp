@@ -37,8 +37,7 @@ void CheckMatrix(const glm::dmat4& screenFromWorld) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
             if (!std::isfinite(screenFromWorld[c][r]))
-                throw std::invalid_argument(
-                    "depth buffer: the clip-from-world matrix is not finite");
+                throw std::invalid_argument("depth buffer: its matrix is not finite");
     if (glm::determinant(screenFromWorld) == 0.0)
         throw std::invalid_argument("depth buffer: the screen-from-world matrix is singular");
 }

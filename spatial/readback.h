@@ -58,7 +58,7 @@ struct Readback {
 };
 
 // Report Appendix A on a camera pass made with Q = screenFromWorld (Camera::ScreenFromWorld at
-// the buffer's resolution). Single-threaded, deterministic. Its time is linear in the covered
+// the buffer's resolution). Single-threaded, deterministic. Its time grows with the covered
 // pixels, and a depth buffer's (no triangle ids) all go to the 3D hull: Algorithm 1 wants about
 // 180² pixels (kReadbackSide and DownsampleDepth, depth_buffer.h, say why).
 Readback MakeReadback(CameraBuffer buffer, const glm::dmat4& screenFromWorld);
