@@ -51,6 +51,7 @@
 #include "lexel/cases/run/spatial_run.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/baselines.h"
+#include "lexel/spatial/depth_buffer.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/ray_caster.h"
 #include "lexel/spatial/harness/render_backend.h"
@@ -336,6 +337,28 @@ void BM_WalkthroughReadback(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * at.Count());
 }
 BENCHMARK(BM_WalkthroughReadback)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// A renderer's full-size depth buffer as the readback (depth_buffer.h): the walkthrough's camera
+// at 1280×720, its float depth; arg 0 MakeReadback of all of it (every covered pixel a hull
+// candidate), arg 1 after DownsampleDepth to kReadbackSide (160×90; the downsampling timed too).
+void BM_ReadbackFromDepth(benchmark::State& state) {
+    const Walkthrough& w = Case();
+    Camera camera = w.scene.camera;
+    camera.resolution = {1280, 720};
+    const CameraBuffer pass = w.backend->RenderCamera(camera, camera.resolution);
+    const std::vector<float> depth(pass.windowDepth.begin(), pass.windowDepth.end());
+    const DepthBuffer buffer{camera.resolution, depth,
+                             camera.ClipFromView() * camera.ViewFromWorld()};
+    const bool downsample = state.range(0) == 1;
+    for (auto _ : state) {
+        const Readback r =
+            downsample ? MakeReadback(DownsampleDepth(buffer).View()) : MakeReadback(buffer);
+        benchmark::DoNotOptimize(r.wsRelevantHull.data());
+        state.counters["pixels"] = static_cast<double>(r.buffer.resolution.Count());
+        state.counters["hull_ms"] = r.relevantHullMs;
+    }
+}
+BENCHMARK(BM_ReadbackFromDepth)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_WalkthroughShadowMapPass(benchmark::State& state) {
     const Walkthrough& w = Case();

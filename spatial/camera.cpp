@@ -8,9 +8,12 @@ namespace lexel::spatial {
 
 glm::dmat4 Camera::ViewFromWorld() const { return glm::lookAt(position, target, up); }
 
+double Camera::AspectRatio() const {
+    return static_cast<double>(resolution.width) / resolution.height;
+}
+
 glm::dmat4 Camera::ClipFromView() const {
-    const double aspect = static_cast<double>(resolution.width) / resolution.height;
-    return glm::perspective(glm::radians(fovYDeg), aspect, nearPlane, farPlane);
+    return glm::perspective(glm::radians(fovYDeg), AspectRatio(), nearPlane, farPlane);
 }
 
 glm::dmat4 Camera::ScreenFromWorld(Resolution at) const {
@@ -24,12 +27,16 @@ glm::dmat4 Camera::ScreenFromWorld(Resolution at) const {
     return screenFromNdc * ClipFromView() * ViewFromWorld();
 }
 
+// The inverse of ScreenFromWorld(at) on the ray: NDC (x, y) = (2x¹/W - 1, 1 - 2x²/H) of the
+// `at`-sized image, and glm::perspective's x_ndc = x_view / (aspect tan(fov/2) z), y_ndc =
+// y_view / (tan(fov/2) z) at view depth z, with the aspect of `resolution`, as ClipFromView: the
+// image covers the camera's frustum whatever its own aspect ratio.
 glm::dvec3 Camera::RayDirection(glm::dvec2 xs, Resolution at) const {
     const glm::dvec3 forward = glm::normalize(target - position);
     const glm::dvec3 right = glm::normalize(glm::cross(forward, up));
     const glm::dvec3 trueUp = glm::cross(right, forward);
     const double tanHalf = std::tan(0.5 * glm::radians(fovYDeg));
-    const double aspect = static_cast<double>(at.width) / at.height;
+    const double aspect = AspectRatio();
     const double ndcX = 2.0 * xs.x / at.width - 1.0;
     const double ndcY = 1.0 - 2.0 * xs.y / at.height;
     return forward + (ndcX * tanHalf * aspect) * right + (ndcY * tanHalf) * trueUp;

@@ -31,13 +31,20 @@ struct Camera {
     Resolution resolution{750, 750};  // of the final frame; sets the aspect ratio
     double nearPlane = 0.1, farPlane = 200.0;
 
+    // width / height of `resolution`: the frustum's aspect ratio, for images of every size.
+    double AspectRatio() const;
     glm::dmat4 ViewFromWorld() const;
-    glm::dmat4 ClipFromView() const;
+    glm::dmat4 ClipFromView() const;  // OpenGL's: NDC z ∈ [-1, 1], -1 at the near plane
     // Q: world → (x¹ w, x² w, x³ w, w) with x¹, x² in pixels of an image of size `at` and x³ the
     // window depth in [0, 1] (affine in 1/z_view, so exactly affine in screen space over a plane).
+    // Every image covers the camera's frustum (aspect ratio AspectRatio()): an `at` of another
+    // aspect ratio, such as a square readback of a 16:9 camera, has non-square pixels.
     glm::dmat4 ScreenFromWorld(Resolution at) const;
-    // World-space ray through screen point (x¹, x²) of an `at`-sized image: origin at the eye,
-    // direction not normalized, scaled to unit length along the view axis.
+    // World-space ray through screen point (x¹, x²) of an `at`-sized image, the one definition of
+    // a pixel's ray for this camera: origin at the eye, direction not normalized, scaled to unit
+    // length along the view axis. It is ScreenFromWorld(at)'s: every point eye + t·direction,
+    // t > 0, maps to (x¹, x²) (tests/spatial/camera_test.cpp holds them together for every
+    // aspect ratio of camera and image).
     glm::dvec3 RayDirection(glm::dvec2 xs, Resolution at) const;
     // The eight corners of the view frustum in world space (near face first, then far face, the
     // same winding).

@@ -1,7 +1,14 @@
 // Composition of the light matrix with the light frame, and the clip-space rows a rasterizer needs.
 #include "lexel/spatial/clip_matrix.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <glm/gtc/matrix_access.hpp>
+#include <limits>
+#include <stdexcept>
+
+#include "lexel/solvers/clipping.h"
 
 namespace lexel::spatial {
 
@@ -47,6 +54,60 @@ glm::dmat4 ClipFromWorld(const LightSpace& lightSpace, const LightMatrix& matrix
     const glm::dvec4 rowX = (2.0 / map.width) * row1 - rowW;
     const glm::dvec4 rowY = (2.0 / map.height) * row2 - rowW;
     return glm::transpose(glm::dmat4(rowX, rowY, rowZ, rowW));
+}
+
+double ClipDepthQuantity(const LightSpace& lightSpace, const LightMatrix& matrix,
+                         const glm::dvec3& wsPoint) {
+    const double w = glm::dot(matrix.p4, lightSpace.ToLight(wsPoint));
+    if (!(w > 0.0)) return std::numeric_limits<double>::infinity();
+    if (lightSpace.IsPoint()) return w;
+    return lightSpace.ToLight(wsPoint).z * lightSpace.Depth(wsPoint) / w;
+}
+
+namespace {
+
+// wsBounds ∩ the map's frustum: u¹ ∈ [0, W], u² ∈ [0, H] with u^i = row_i / row_4 are the four
+// half-spaces row_1 ≥ 0, W row_4 - row_1 ≥ 0, row_2 ≥ 0, H row_4 - row_2 ≥ 0, which together
+// imply row_4 ≥ 0 (in front of the light).
+ConvexPolyhedron CastersInMap(const LightSpace& lightSpace, const LightMatrix& matrix,
+                              Resolution map, const Bounds& wsBounds) {
+    const std::array<glm::dvec3, 8> c = wsBounds.Corners();  // bit k of i: coordinate k at hi
+    ConvexPolyhedron body = FrustumPolyhedron({c[0], c[1], c[3], c[2], c[4], c[5], c[7], c[6]});
+    const glm::dmat4 texel = MapFromWorld(lightSpace, matrix);
+    const glm::dvec4 row1 = glm::row(texel, 0), row2 = glm::row(texel, 1),
+                     rowW = glm::row(texel, 3);
+    const double width = map.width, height = map.height;
+    for (const glm::dvec4& plane : {row1, width * rowW - row1, row2, height * rowW - row2}) {
+        body = ClipPolyhedron(body, plane);
+        if (body.faces.empty()) break;
+    }
+    return body;
+}
+
+}  // namespace
+
+DepthRange LightDepthRange(const LightSpace& lightSpace, const LightMatrix& matrix, Resolution map,
+                           const Bounds& wsCasterBounds, std::span<const glm::dvec3> wsReceivers,
+                           double margin) {
+    if (wsReceivers.empty())
+        throw std::invalid_argument("LightDepthRange: no receivers (the camera sees nothing)");
+    double nearest = std::numeric_limits<double>::infinity(), farthest = 0.0;
+    for (const glm::dvec3& wsPoint : wsReceivers) {
+        const double q = ClipDepthQuantity(lightSpace, matrix, wsPoint);
+        if (!std::isfinite(q))
+            throw std::invalid_argument("LightDepthRange: a receiver is behind the map's plane");
+        nearest = std::min(nearest, q);
+        farthest = std::max(farthest, q);
+    }
+    if (!wsCasterBounds.Empty())
+        for (const glm::dvec3& wsVertex :
+             CastersInMap(lightSpace, matrix, map, wsCasterBounds).Vertices())
+            nearest = std::min(nearest, ClipDepthQuantity(lightSpace, matrix, wsVertex));
+    // Each end out by margin × the span; a point light's near stays above half the nearest
+    // caster (perspective depth needs near > 0).
+    const double grow = margin * (farthest - nearest);
+    const double near = nearest - grow;
+    return {lightSpace.IsPoint() ? std::max(near, 0.5 * nearest) : near, farthest + grow};
 }
 
 }  // namespace lexel::spatial

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <span>
 
 #include "lexel/spatial/camera.h"
 #include "lexel/spatial/light_matrix.h"
@@ -21,6 +22,29 @@ enum class ClipDepth { kMinusOneToOne, kZeroToOne };
 struct DepthRange {
     double near = 0.0, far = 1.0;  // 0 < near < far for point lights; near < far otherwise
 };
+
+// ClipFromWorld's depth quantity at a world point: w = p4·X for a point light (the distance from
+// the light along the optical axis, for a unit p4), d·(s / w) for a directional one (d =
+// LightSpace::Depth, s its frame's third coordinate). World units; +inf where w ≤ 0.
+double ClipDepthQuantity(const LightSpace& lightSpace, const LightMatrix& matrix,
+                         const glm::dvec3& wsPoint);
+
+// The tightest DepthRange that loses no shadow for `matrix` (Filament's ShadowMap and Lauritzen
+// et al.'s SDSM, I3D 2011, fit the light's depth range to the scene the same way): far is the
+// largest depth quantity over the receivers (wsReceivers: the visible points, Readback::
+// wsRelevant), near the smallest over the casters that can shadow a receiver the map covers,
+// which lie on the segments from the light to those receivers, hence inside wsCasterBounds ∩ the
+// map's frustum (the pyramid of texels [0, W] × [0, H] from the light): the vertices of that
+// polyhedron give it, the depth quantity being affine (point) or linear-fractional (directional)
+// in the world point. Each end is moved out by `margin` × (far - near) (the readback is
+// subsampled, so frame pixels between its points can lie slightly farther; report §2.4), a point
+// light's near by at most half itself. A guess instead loses precision: {0.5, 60} puts the
+// visible points of the embedding example (tests/spatial/clip_matrix_test.cpp) at NDC z
+// 0.972–0.991 of [0, 1], this range at 0.546–0.994. Throws std::invalid_argument when wsReceivers
+// is empty or a receiver is not in front of p4 (w ≤ 0).
+DepthRange LightDepthRange(const LightSpace& lightSpace, const LightMatrix& matrix, Resolution map,
+                           const Bounds& wsCasterBounds, std::span<const glm::dvec3> wsReceivers,
+                           double margin = 0.02);
 
 // Clip from world for a rasterizer: x_ndc = 2u¹/W - 1 and y_ndc = 2u²/H - 1 (texel row 0 is
 // framebuffer row 0, at y_ndc = -1), w_clip = p4·X > 0 in front of the light, and z_ndc:

@@ -15,7 +15,6 @@
 #include "lexel/spatial/readback.h"
 
 #include <Eigen/Core>
-#include <stdexcept>
 
 #include "lexel/solvers/convex_hull_3d.h"
 #include "lexel/solvers/stopwatch.h"
@@ -141,35 +140,6 @@ std::vector<glm::dvec3> RelevantHullVertices(const CameraBuffer& buffer) {
         wsVertices.emplace_back(v.x(), v.y(), v.z());
     }
     return wsVertices;
-}
-
-CameraBuffer CameraBufferFromDepth(Resolution resolution, std::span<const float> windowDepth,
-                                   const glm::dmat4& screenFromWorld, float emptyDepth) {
-    if (windowDepth.size() != resolution.Count())
-        throw std::invalid_argument("depth buffer: " + std::to_string(windowDepth.size()) +
-                                    " values for a " + std::to_string(resolution.width) + "×" +
-                                    std::to_string(resolution.height) + " image");
-    if (glm::determinant(screenFromWorld) == 0.0)
-        throw std::invalid_argument("depth buffer: the screen-from-world matrix is singular");
-    const glm::dmat4 worldFromScreen = glm::inverse(screenFromWorld);
-    CameraBuffer buf;
-    buf.resolution = resolution;
-    const std::size_t n = resolution.Count();
-    buf.windowDepth.assign(n, 1.0);
-    buf.wsPosition.assign(n, glm::dvec3(0.0));
-    buf.wsNormal.assign(n, glm::dvec3(0.0));
-    buf.triangle.assign(n, -1);
-    for (int y = 0; y < resolution.height; ++y)
-        for (int x = 0; x < resolution.width; ++x) {
-            const std::size_t i = static_cast<std::size_t>(y) * resolution.width + x;
-            if (!(windowDepth[i] < emptyDepth)) continue;
-            buf.windowDepth[i] = windowDepth[i];
-            const glm::dvec4 h =
-                worldFromScreen * glm::dvec4(x + 0.5, y + 0.5, windowDepth[i], 1.0);
-            buf.wsPosition[i] = glm::dvec3(h) / h.w;
-            buf.triangle[i] = static_cast<std::int32_t>(i);
-        }
-    return buf;
 }
 
 }  // namespace lexel::spatial

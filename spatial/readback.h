@@ -35,14 +35,16 @@ struct CameraBuffer {
     bool Covered(std::size_t pixel) const { return triangle[pixel] >= 0; }
 };
 
-// A CameraBuffer from a depth buffer and the matrix that made it: a pixel is covered where its
-// window depth is below `emptyDepth`, its world point is Q⁻¹ (x¹, x², x³, 1) dehomogenized at the
-// pixel centre, and its triangle id is its own pixel index (no two pixels are known to share a
-// triangle, so the hull keeps every point); normals are left 0. `windowDepth` is row-major from
-// the top row, with `resolution.Count()` entries in [0, 1]. Throws std::invalid_argument when the
-// size does not match or screenFromWorld is singular.
+// A CameraBuffer from a depth buffer in lexel's own convention and the matrix that made it
+// (depth_buffer.h takes every other one: reversed-Z, [0, 1] clip depth, bottom-up rows): a pixel
+// is covered where its window depth is finite and below 1, its world point is
+// Q⁻¹ (x¹, x², x³, 1) dehomogenized at the pixel centre, and its triangle id is its own pixel
+// index (no two pixels are known to share a triangle, so the hull keeps every point); normals are
+// left 0. `windowDepth` is row-major from the top row, with `resolution.Count()` entries in
+// [0, 1] (x³ of Q = Camera::ScreenFromWorld). Throws std::invalid_argument when the size does not
+// match or screenFromWorld is singular or not finite.
 CameraBuffer CameraBufferFromDepth(Resolution resolution, std::span<const float> windowDepth,
-                                   const glm::dmat4& screenFromWorld, float emptyDepth = 1.0f);
+                                   const glm::dmat4& screenFromWorld);
 
 // The readback of one camera pose.
 struct Readback {
@@ -56,7 +58,9 @@ struct Readback {
 };
 
 // Report Appendix A on a camera pass made with Q = screenFromWorld (Camera::ScreenFromWorld at
-// the buffer's resolution). Single-threaded, deterministic.
+// the buffer's resolution). Single-threaded, deterministic. Its time grows with the covered
+// pixels, and a depth buffer's (no triangle ids) all go to the 3D hull: Algorithm 1 wants about
+// 180² pixels (kReadbackSide and DownsampleDepth, depth_buffer.h, say why).
 Readback MakeReadback(CameraBuffer buffer, const glm::dmat4& screenFromWorld);
 
 // The vertices of the 3D convex hull of the covered pixels' world points, in pixel order. Points

@@ -1,12 +1,13 @@
 // lexel's 3D core in one include, installed as <lexel/spatial.h>: the scene-optimized light
 // matrix of Chong & Gortler (report §2–3) for a renderer's own buffers. The usual path:
-//   1. a camera pass → CameraBuffer (your G-buffer, or CameraBufferFromDepth from a depth buffer)
-//      → MakeReadback (readback.h);
-//   2. per light: LightSpace (light_space.h), InitialLightAxis (baselines.h), a shadow mask of
-//      the readback from a standard map → MakeLightSamples (samples.h);
-//   3. OptimizeLightMatrix (optimizer.h) → LightMatrix → ClipFromWorld (clip_matrix.h), the 4×4
-//      to render the shadow map with.
-// README.md, "Use lexel in your renderer", has a complete program.
+//   1. a low-resolution camera pass → CameraBuffer (your G-buffer, or a depth buffer of any
+//      convention: DepthBuffer, DownsampleDepth, depth_buffer.h) → MakeReadback (readback.h);
+//   2. per light: LightSpace (light_space.h), the standard map StandardLightMatrix
+//      (standard_map.h) rendered through ClipFromWorld with LightDepthRange (clip_matrix.h), the
+//      readback's shadow mask under it → MakeLightSamples (samples.h);
+//   3. OptimizeLightMatrix (optimizer.h) from the standard map's axis → LightMatrix →
+//      ClipFromWorld with LightDepthRange, the 4×4 to render the shadow map with.
+// README.md, "Use lexel in your renderer", has the whole of it, compiled by the test suite.
 #pragma once
 
 #include "lexel/spatial/baselines.h"
@@ -14,6 +15,7 @@
 #include "lexel/spatial/camera.h"
 #include "lexel/spatial/cascades.h"
 #include "lexel/spatial/clip_matrix.h"
+#include "lexel/spatial/depth_buffer.h"
 #include "lexel/spatial/energy_gradient.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
@@ -22,5 +24,6 @@
 #include "lexel/spatial/partitions.h"
 #include "lexel/spatial/readback.h"
 #include "lexel/spatial/samples.h"
+#include "lexel/spatial/standard_map.h"
 #include "lexel/spatial/storage_factor.h"
 #include "lexel/spatial/temporal.h"

@@ -2,16 +2,21 @@
 //
 // What a renderer does each frame for one shadow-casting light (README, "Use lexel in your
 // renderer"; Chong & Gortler Algorithm 1 steps 1–5):
-//   1. render the camera's depth buffer at low resolution and read it back, with the matrix
-//      Q = viewport · projection · view that made it: CameraBufferFromDepth, MakeReadback;
-//   2. shade the readback with the light's current (standard) shadow map: a mask of lit and
-//      shadowed pixels, from which MakeLightSamples keeps the pixels at shadow boundaries;
-//   3. OptimizeLightMatrix from the standard axis (InitialLightAxis) → the light matrix P;
-//   4. ClipFromWorld(P) → the 4×4 the rasterizer renders the shadow map with.
+//   1. render the camera's depth buffer at low resolution (about 180², report §2.4) and read it
+//      back with the projection · view that made it and its depth convention: DepthBuffer,
+//      MakeReadback;
+//   2. render the standard map — StandardLightMatrix, the focused map fitted to the visible
+//      points, through ClipFromWorld with LightDepthRange — and shade the readback with it: a mask
+//      of lit and shadowed pixels, from which MakeLightSamples keeps the pixels at shadow
+//      boundaries;
+//   3. OptimizeLightMatrix from the standard map's axis → the light matrix P;
+//   4. ClipFromWorld(P) with LightDepthRange → the 4×4 the rasterizer renders the shadow map with.
 // The renderer here is a toy (notebooks_cpp/common/toy_renderer.h): a floor and a box traced
-// exactly; lexel needs nothing from it but the depth buffer, Q and the mask. No harness. The
-// checks: h falls from the standard map to the optimized one, and through the 4×4 every visible
-// point lands inside the shadow map (NDC x, y in [−1, 1], w > 0) at a depth in [0, 1].
+// exactly, its mask exact where a renderer's would come from the standard map; lexel needs
+// nothing from it but the depth buffer, its matrix and the mask. No harness. The checks: h falls
+// from the standard map to the optimized one, and through the 4×4 every visible point lands inside
+// the shadow map (NDC x, y in [−1, 1], w > 0) at a depth in [0, 1], the farthest at the far end of
+// the fitted range, spread over twice the depth a guess of {1, 60} world units gives them.
 //
 // Public API only: lexel::spatial (<lexel/spatial.h>). Toy renderer and figure: the programs' own.
 //
@@ -54,48 +59,61 @@ int main(int argc, char** argv) {
     const auto outDir = lexel::notebooks::OutputDirectory(argc, argv);
     const lexel::notebooks::ToyRenderer renderer({160, 120});
 
-    // 1. The camera pass: window depth per pixel and Q.
+    // 1. The camera pass: its depth buffer (OpenGL's conventions) and the matrix that drew it.
     const Resolution res = renderer.resolution();
-    const glm::dmat4 screenFromWorld = renderer.ScreenFromWorld();
     const std::vector<float> depth = renderer.DepthBuffer();
+    const Camera& camera = renderer.camera();
     const Readback readback =
-        MakeReadback(CameraBufferFromDepth(res, depth, screenFromWorld), screenFromWorld);
+        MakeReadback(DepthBuffer{res, depth, camera.ClipFromView() * camera.ViewFromWorld()});
 
-    // 2. The light's frame over the scene's bounds, and the renderer's shadow mask.
+    // 2. The light's frame over the scene's bounds, the standard map and the renderer's mask.
     const Bounds wsBounds = renderer.SceneBounds();
     const LightSpace lightSpace(Light{Light::Type::kPoint, renderer.wsLight(), {}}, wsBounds);
+    const Resolution map{1024, 1024};
+    const LightMatrix standard = StandardLightMatrix(readback, lightSpace, wsBounds, map);
     const LightSamples samples =
         MakeLightSamples(readback, lightSpace, renderer.ShadowMask(readback));
 
-    // 3. Algorithm 1 from the standard axis.
-    const Resolution map{1024, 1024};
-    const glm::dvec3 p4 = InitialLightAxis(lightSpace, wsBounds, readback.wsRelevant);
-    const OptimizerResult optimal = OptimizeLightMatrix(samples, p4, map);
-    const LightMatrix standard = *FitMapToPoints(p4, samples.lsRelevant, map, {0.02});
+    // 3. Algorithm 1 from the standard map's axis.
+    const OptimizerResult optimal = OptimizeLightMatrix(samples, standard.p4, map);
 
-    // 4. The 4×4 for the rasterizer, depth in [0, 1] between 1 and 60 world units from the light.
+    // 4. The 4×4 for the rasterizer, depth in [0, 1] over the range that holds every caster of a
+    // visible shadow and every visible point.
+    const DepthRange range =
+        LightDepthRange(lightSpace, optimal.matrix, map, wsBounds, readback.wsRelevant);
     const glm::dmat4 clipFromWorld =
+        ClipFromWorld(lightSpace, optimal.matrix, map, range, ClipDepth::kZeroToOne);
+    const glm::dmat4 guessed =
         ClipFromWorld(lightSpace, optimal.matrix, map, {1.0, 60.0}, ClipDepth::kZeroToOne);
 
     std::printf("%zu of %zu readback pixels see the scene; %zu boundary samples for the light\n",
                 readback.wsRelevant.size(), res.Count(), samples.lsX.size());
     std::printf("h, standard map → optimized: %.6g → %.6g (%zu iterations)\n",
                 optimal.hAfterIteration.front(), optimal.h, optimal.hAfterIteration.size() - 1);
-    std::printf("optical axis p4 (light space): (%.4f, %.4f, %.4f) → (%.4f, %.4f, %.4f)\n", p4.x,
-                p4.y, p4.z, optimal.matrix.p4.x, optimal.matrix.p4.y, optimal.matrix.p4.z);
+    std::printf("optical axis p4 (light space): (%.4f, %.4f, %.4f) → (%.4f, %.4f, %.4f)\n",
+                standard.p4.x, standard.p4.y, standard.p4.z, optimal.matrix.p4.x,
+                optimal.matrix.p4.y, optimal.matrix.p4.z);
     std::printf("clip from world (rows):\n");
     for (int r = 0; r < 4; ++r)
         std::printf("  %10.5f %10.5f %10.5f %10.5f\n", clipFromWorld[0][r], clipFromWorld[1][r],
                     clipFromWorld[2][r], clipFromWorld[3][r]);
 
     double worstNdc = 0, lowDepth = INFINITY, highDepth = -INFINITY, leastW = INFINITY;
+    double guessLow = INFINITY, guessHigh = -INFINITY;
     for (const glm::dvec3& wsPoint : readback.wsRelevant) {
         const glm::dvec4 clip = clipFromWorld * glm::dvec4(wsPoint, 1.0);
         leastW = std::min(leastW, clip.w);
         worstNdc = std::max({worstNdc, std::abs(clip.x / clip.w), std::abs(clip.y / clip.w)});
-        lowDepth = std::min(lowDepth, clip.z / clip.w),
+        lowDepth = std::min(lowDepth, clip.z / clip.w);
         highDepth = std::max(highDepth, clip.z / clip.w);
+        const glm::dvec4 g = guessed * glm::dvec4(wsPoint, 1.0);
+        guessLow = std::min(guessLow, g.z / g.w);
+        guessHigh = std::max(guessHigh, g.z / g.w);
     }
+    std::printf(
+        "light depth range {%.4g, %.4g}: visible points at NDC z %.4f–%.4f (a guess of "
+        "{1, 60}: %.4f–%.4f)\n",
+        range.near, range.far, lowDepth, highDepth, guessLow, guessHigh);
     lexel::notebooks::Claims claims;
     claims.Check(
         optimal.h < optimal.hAfterIteration.front() &&
@@ -105,6 +123,10 @@ int main(int argc, char** argv) {
                  "every visible point in the map: w >= %.3g > 0, |NDC x, y| <= %.9f, depth in "
                  "[%.4f, %.4f]",
                  leastW, worstNdc, lowDepth, highDepth);
+    claims.Check(highDepth >= 0.99 && highDepth - lowDepth > guessHigh - guessLow,
+                 "the fitted range ends at the farthest visible point (NDC z %.4f) and spreads "
+                 "the visible points over %.3f of [0, 1], the guess over %.3f",
+                 highDepth, highDepth - lowDepth, guessHigh - guessLow);
     const auto figure = outDir / "14_embedding.png";
     lexel::notebooks::WritePlot(figure,
                                 {MapPanel("standard map (the start)", standard, samples),

@@ -15,8 +15,9 @@
 namespace lexel::spatial::gl {
 
 // Per covered pixel (triangle[i] ≥ 0) the point of triangle[i]'s plane on the ray through the
-// pixel centre (Camera::RayDirection), its window depth x³ under
-// camera.ScreenFromWorld(resolution), and the face normal turned towards the eye (as CpuRenderer);
+// pixel centre (Camera::RayDirection at `resolution`: the ray the camera pass rasterized through
+// camera.ScreenFromWorld(resolution), whatever the two aspect ratios), its window depth x³ under
+// that matrix, and the face normal turned towards the eye (as CpuRenderer);
 // a pixel whose ray is parallel to the plane, or meets it behind the eye, becomes empty (triangle
 // -1). `triangle` is row-major from the top row with resolution.Count() entries indexing
 // geometry.triangles (std::invalid_argument otherwise). TBB-parallel, deterministic.

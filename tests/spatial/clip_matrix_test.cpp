@@ -4,7 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <random>
+
+#include "lexel/spatial/standard_map.h"
+#include "spatial/spatial_test_scenes.h"
 
 namespace lexel::spatial {
 namespace {
@@ -94,6 +98,124 @@ TEST(MapFromWorld, RowsOneTwoFourAreTheLightMatrixInWorldForm) {
         EXPECT_EQ(h.z, 0.0);
         EXPECT_NEAR(h.w, expected.z, 1e-12 * glm::length(x - ls.light().position));
     }
+}
+
+// ClipFromWorld's depth, as a function of the quantity LightDepthRange bounds.
+double NdcDepth(const LightSpace& ls, double q, DepthRange range) {
+    const double n = range.near, f = range.far;
+    return ls.IsPoint() ? f / (f - n) * (1.0 - n / q) : (q - n) / (f - n);  // kZeroToOne
+}
+
+TEST(LightDepthRange, ClipDepthQuantityIsWhatClipFromWorldMapsToTheDepthRange) {
+    const Bounds wsBounds = SceneBounds();
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (const Light& light : {Light{Light::Type::kPoint, {30.0, 40.0, 20.0}, {}},
+                               Light{Light::Type::kDirectional, {}, {-0.3, -1.0, 0.2}}}) {
+        const LightSpace ls(light, wsBounds);
+        const LightMatrix m = SomeMatrix(ls, wsBounds, 0.2);
+        const DepthRange range{20.0, 70.0};
+        const glm::dmat4 clip = ClipFromWorld(ls, m, {512, 256}, range, ClipDepth::kZeroToOne);
+        for (int k = 0; k < 50; ++k) {
+            const glm::dvec3 x = wsBounds.lo + glm::dvec3(u01(rng), u01(rng), u01(rng)) *
+                                                   (wsBounds.hi - wsBounds.lo);
+            const glm::dvec4 h = clip * glm::dvec4(x, 1.0);
+            EXPECT_NEAR(h.z / h.w, NdcDepth(ls, ClipDepthQuantity(ls, m, x), range), 1e-12);
+        }
+    }
+}
+
+struct RangeCase {
+    const char* name;
+    LightSpace lightSpace;
+    LightMatrix matrix;
+};
+
+// The embedding scene's readback and the standard and optimized maps of a point light and a
+// directional one.
+TEST(LightDepthRange, KeepsEveryCasterAndSpansTheReceiversTightly) {
+    const testing::FloorAndBox scene = testing::EmbeddingScene();
+    const Readback readback =
+        RenderReadback(*MakeCpuRenderer(scene.mesh), scene.camera, scene.camera.resolution);
+    const Resolution map{1024, 1024};
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (const Light& light : {Light{Light::Type::kPoint, {10.0, 15.0, 6.0}, {}},
+                               Light{Light::Type::kDirectional, {}, {-0.4, -1.0, -0.3}}}) {
+        const LightSpace ls(light, scene.wsBounds);
+        const LightMatrix standard = StandardLightMatrix(readback, ls, scene.wsBounds, map);
+        const DepthRange range =
+            LightDepthRange(ls, standard, map, scene.wsBounds, readback.wsRelevant);
+        const glm::dmat4 clip = ClipFromWorld(ls, standard, map, range, ClipDepth::kZeroToOne);
+        const auto ndc = [&](const glm::dvec3& x) {
+            const glm::dvec4 h = clip * glm::dvec4(x, 1.0);
+            return glm::dvec3(h) / h.w;
+        };
+        // Receivers: inside [0, 1], the farthest at 1 less the margin's share.
+        double receiversLo = 1.0, receiversHi = 0.0;
+        for (const glm::dvec3& x : readback.wsRelevant) {
+            receiversLo = std::min(receiversLo, ndc(x).z);
+            receiversHi = std::max(receiversHi, ndc(x).z);
+        }
+        EXPECT_GE(receiversLo, 0.0) << light.position.x;
+        EXPECT_LE(receiversHi, 1.0);
+        EXPECT_GT(receiversHi, 0.96);
+        // Casters: every point of the bounds on a segment from a receiver toward the light.
+        double castersLo = 1.0;
+        for (std::size_t i = 0; i < readback.wsRelevant.size(); i += 7) {
+            const glm::dvec3& x = readback.wsRelevant[i];
+            const glm::dvec3 toLight = ls.DirectionToLight(x);
+            double reach = ls.DistanceToLight(x);  // to the light or out of the bounds
+            for (int a = 0; a < 3; ++a)
+                if (toLight[a] != 0.0)
+                    reach = std::min(
+                        reach,
+                        ((toLight[a] > 0 ? scene.wsBounds.hi[a] : scene.wsBounds.lo[a]) - x[a]) /
+                            toLight[a]);
+            for (int k = 1; k <= 20; ++k)
+                castersLo = std::min(castersLo, ndc(x + (reach * k / 20.0) * toLight).z);
+        }
+        EXPECT_GE(castersLo, 0.0);
+        // The near end is the nearest point of the bounds inside the map's frustum: no sampled
+        // point of the bounds there is nearer, and some come within 2% of it.
+        double sampledNearest = 1e300;
+        for (int k = 0; k < 200000; ++k) {
+            const glm::dvec3 x = scene.wsBounds.lo + glm::dvec3(u01(rng), u01(rng), u01(rng)) *
+                                                         (scene.wsBounds.hi - scene.wsBounds.lo);
+            const glm::dvec3 lsX = ls.ToLight(x);
+            if (!InFront(standard.p4, lsX)) continue;
+            const glm::dvec2 u = standard.Map(lsX);
+            if (u.x < 0 || u.y < 0 || u.x > map.width || u.y > map.height) continue;
+            sampledNearest = std::min(sampledNearest, ClipDepthQuantity(ls, standard, x));
+        }
+        const double nearest = range.near + 0.02 / 1.04 * (range.far - range.near);
+        EXPECT_GE(sampledNearest, nearest * (1.0 - 1e-12));
+        EXPECT_LT(sampledNearest, nearest * 1.02);
+        // A guess for the point light ({0.5, 60}, issue 24) squeezes the receivers.
+        const DepthRange guess{0.5, 60.0};
+        double guessLo = 1.0, guessHi = 0.0;
+        if (ls.IsPoint()) {
+            const glm::dmat4 guessed =
+                ClipFromWorld(ls, standard, map, guess, ClipDepth::kZeroToOne);
+            for (const glm::dvec3& x : readback.wsRelevant) {
+                const glm::dvec4 h = guessed * glm::dvec4(x, 1.0);
+                guessLo = std::min(guessLo, h.z / h.w);
+                guessHi = std::max(guessHi, h.z / h.w);
+            }
+            EXPECT_GT(receiversHi - receiversLo, 10.0 * (guessHi - guessLo));
+        }
+        std::cout << "[   INFO   ] " << (ls.IsPoint() ? "point" : "directional") << ": range {"
+                  << range.near << ", " << range.far << "}, receivers at z " << receiversLo << "–"
+                  << receiversHi << ", nearest caster " << castersLo << ", sampled nearest "
+                  << sampledNearest / nearest << " × near; guess {0.5, 60}: " << guessLo << "–"
+                  << guessHi << '\n';
+    }
+}
+
+TEST(LightDepthRange, RefusesNoReceivers) {
+    const Bounds wsBounds = SceneBounds();
+    const LightSpace ls(Light{Light::Type::kPoint, {30.0, 40.0, 20.0}, {}}, wsBounds);
+    EXPECT_THROW(LightDepthRange(ls, LightMatrix{}, {64, 64}, wsBounds, {}), std::invalid_argument);
 }
 
 }  // namespace

@@ -15,6 +15,17 @@ Camera ReadbackCamera() {
     return c;
 }
 
+FloorAndBox EmbeddingScene() {
+    FloorAndBox s;
+    s.mesh = FloorQuad(20.0);
+    s.mesh.Append(BoxMesh(s.boxLo, s.boxHi));
+    s.camera.position = {0.0, 1.7, 12.0};
+    s.camera.target = {0.0, 0.0, 0.0};
+    s.camera.resolution = {160, 120};
+    s.wsBounds = s.mesh.ComputeBounds();
+    return s;
+}
+
 TriangleMesh FloorQuad(double h) {
     Transform t;
     t.scale = {2.0 * h, 1.0, 2.0 * h};

@@ -20,6 +20,16 @@ TriangleMesh BoxMesh(const glm::dvec3& lo, const glm::dvec3& hi);
 LightSamples SamplesFromBoundsMap(const RenderBackend& renderer, const Readback& readback,
                                   const LightSpace& lightSpace, const Bounds& wsBounds,
                                   Resolution mapSize);
+// The embedding example's scene (README "Use lexel in your renderer", tests/install/consumer,
+// notebook 14): the floor |x|, |z| ≤ 20 at y = 0 and the box [-1, 1] × [0, 2] × [-1, 1], seen
+// by a 160×120 camera at (0, 1.7, 12) looking at the origin (60° vertical field of view).
+struct FloorAndBox {
+    TriangleMesh mesh;
+    Camera camera;
+    Bounds wsBounds;
+    glm::dvec3 boxLo{-1.0, 0.0, -1.0}, boxHi{1.0, 2.0, 1.0};
+};
+FloorAndBox EmbeddingScene();
 // Whether the open segment a → b crosses the box [lo, hi] (slab test).
 bool SegmentHitsBox(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& lo,
                     const glm::dvec3& hi);
