@@ -212,7 +212,8 @@ struct LispsmDepths {
 };
 
 // n for `rule`, sinGamma in (0, 1]; cameraNear (world units) enters only through the virtual near
-// plane. nullopt only where the virtual near plane leaves no warp (above).
+// plane. nullopt where the virtual near plane leaves no warp (above), and for depths or a sinGamma
+// outside their domain (never NaN).
 std::optional<double> LispsmNear(const LispsmNearRule& rule, const LispsmDepths& depths,
                                  double sinGamma, double cameraNear);
 

@@ -13,11 +13,10 @@
 // direction v projected perpendicular to l (sin γ = |v × l|), whose projection centre c lies n_opt
 // before the body's near face along f, n_opt = (z_n + √(z_f z_n)) / sin γ (or the engines' rule,
 // LispsmNearRule), and whose depth spans the body along f; the map is that frustum's (x, depth)
-// seen along l. The world map is
-// warp · light view. Point lights go "through the light's perspective first" (Wimmer et al.): the
-// normal light frustum H maps the light to infinity along +z, so in H's space the light is
-// directional and the same construction applies to H(eye), the view direction pushed through H's
-// Jacobian at the eye, and H(B); the world map is warp · H.
+// seen along l. The world map is warp · light view. Point lights go "through the light's
+// perspective first" (Wimmer et al.): the normal light frustum H maps the light to infinity along
+// +z, so in H's space the light is directional and the same construction applies to H(eye), the
+// view direction pushed through H's Jacobian at the eye, and H(B); the world map is warp · H.
 //
 // PSM (Stamminger & Drettakis 2002; Kozlov, GPU Gems ch. 14). In the post-perspective space (NDC)
 // of the camera C, the light L becomes the homogeneous point C·L = (ℓ, ℓw): a point light a point

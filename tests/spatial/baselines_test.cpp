@@ -484,7 +484,7 @@ TEST(LispsmNearRule, FrustumAndSlabBodiesGiveTheIssuesNumbers) {
     const Camera camera = LevelCamera();
     for (const Row& row : rows) {
         const std::vector<glm::dvec3> body = BodyVertices(camera, row.slab);
-        Bounds bounds = BoxAround(body);
+        Bounds bounds = BoxAround(body);  // the scene: the body, and for the frustum room above
         if (!row.slab) bounds.Add(camera.position + glm::dvec3(0.0, 60.0, 0.0));
         const std::string what = std::string(row.slab ? "slab" : "frustum") + " at " +
                                  std::to_string(row.gammaDeg) + "°";
