@@ -465,8 +465,9 @@ BENCHMARK(BM_WalkthroughLightMatrix)
     ->UseRealTime();
 
 // The fair comparison's cost (issue 12): per light, focused-tight alone against `optimal`, which
-// builds every start (focused-tight, lispsm-tight, psm-tight, normal, plane-optimal) and runs
-// Algorithm 1 from each, in one run and on one core; ratio = optimal / focused-tight.
+// builds every start (focused-tight, lispsm-tight, lispsm-engine, psm-tight, normal,
+// plane-optimal) and runs Algorithm 1 from each, in one run and on one core; ratio = optimal /
+// focused-tight.
 void BM_WalkthroughMultiStart(benchmark::State& state) {
     tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
     const Walkthrough& w = Case();

@@ -14,7 +14,8 @@
 //                  to the light, n_opt = (z_n + √(z_f z_n)) / sin γ (their general-γ optimum; the
 //                  paper is not among the project's papers; the γ = 90° case is B. Lloyd et al.,
 //                  "Warping and Partitioning for Low Error Shadow Maps", EGSR 2006, §4.1 and
-//                  Fig. 3: n' = n + √(fn) for an overhead light).
+//                  Fig. 3: n' = n + √(fn) for an overhead light). lispsm-engine's n is the rule
+//                  Filament and OGRE ship (z₁ = z₀ + d·sin γ): LispsmNearRule below.
 //   psm            M. Stamminger, G. Drettakis, "Perspective Shadow Maps", SIGGRAPH 2002: the
 //                  shadow map taken in the camera's post-perspective space; with S. Kozlov,
 //                  "Perspective Shadow Maps: Care and Feeding", GPU Gems ch. 14, 2004 (the light
@@ -32,6 +33,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -69,6 +71,8 @@ struct BaselineDiagnostics {
     // lispsm, in the light-directional space (world units for a directional light): sin γ, the
     // body's near and far distance along the view direction, and n_opt.
     double sinGamma = 0.0, zNear = 0.0, zFar = 0.0, nOpt = 0.0;
+    // lispsm*: d, the focus body's extent along the warp axis (same units).
+    double warpDepth = 0.0;
     // psm: the homogeneous light in the virtual camera's clip space, and the slide-back distance
     // (world units) of the virtual camera.
     glm::dvec4 clipLight{0.0};
@@ -103,7 +107,10 @@ LightMatrix FocusedLightMatrix(const BaselineContext& context,
 //                  frustum to the visible pixels): Algorithm 1's own starting map.
 //   lispsm-tight   LiSPSM's warp (below) for the tight body (the visible points' hull swept
 //                  toward the light to the scene bounds: every possible occluder), with its own
-//                  map axes scaled to the visible points' bounds grown by context.margin.
+//                  map axes scaled to the visible points' bounds grown by context.margin; n from
+//                  Wimmer's rule (LispsmNearRule::Kind::kWimmer).
+//   lispsm-engine  lispsm-tight with the engines' n rule (LispsmNearRule::Kind::kEngine, no
+//                  virtual planes): the same body, margin, depth test and fallback.
 //   psm-tight      PSM's post-perspective light frustum for the tight body, likewise.
 // Every point of wsRelevant maps into the map; a warp that fails falls back to focused-tight
 // (reason in diagnostics).
@@ -111,6 +118,8 @@ LightMatrix FocusedTightLightMatrix(const BaselineContext& context,
                                     BaselineDiagnostics* diagnostics = nullptr);
 LightMatrix LispsmTightLightMatrix(const BaselineContext& context,
                                    BaselineDiagnostics* diagnostics = nullptr);
+LightMatrix LispsmEngineLightMatrix(const BaselineContext& context,
+                                    BaselineDiagnostics* diagnostics = nullptr);
 LightMatrix PsmTightLightMatrix(const BaselineContext& context,
                                 BaselineDiagnostics* diagnostics = nullptr);
 
@@ -165,6 +174,53 @@ glm::dvec3 InitialLightAxis(const LightSpace& lightSpace, const Bounds& wsBounds
 // Wimmer et al.'s optimal distance from the warp's projection centre to the body's near face:
 // n_opt = (z_n + √(z_f z_n)) / sin γ; z_n + √(z_f z_n) when γ = 90° (Lloyd 2006 §4.1).
 double LispsmOptimalNear(double zNear, double zFar, double sinGamma);
+
+// How the tight LiSPSM chooses n, the distance from the warp's projection centre to the body's
+// near face along the warp axis f (the view direction projected perpendicular to the light). The
+// depths are those of LispsmWarp's light-directional space (world units for a directional light;
+// see warping_baselines.cpp): z_n, z_f the body's nearest and farthest view depth, d its extent
+// along f.
+//   kWimmer  Wimmer, Scherzer & Purgathofer, EGSR 2004: n = (z_n + √(z_n z_f)) / sin γ
+//            (LispsmOptimalNear), the body's real far depth.
+//   kEngine  the far depth taken along the warp axis, z₁ = z₀ + d·sin γ with z₀ = z_n, as Filament
+//            (filament/src/ShadowMap.cpp, ShadowMap::applyLISPSM) and OGRE's full rule
+//            (OgreMain/src/OgreShadowCameraSetupLiSPSM.cpp, calculateNOpt) do; n in Filament's
+//            form, n = (z₀ + √(z₀ · min(z₁, z_f))) / sin γ (Filament caps z₁ at z_f). Equal to
+//            Wimmer's at γ = 90°, where d = z_f − z_n; below, smaller: a stronger warp.
+//            Optionally Filament's virtual planes (ShadowOptions::shadowNearHint, shadowFarHint):
+//            the root becomes √(vz₀ vz₁), vz₀ = max(z₀, virtualNear), vz₁ = min(z₁, z_f,
+//            virtualFar), and n is at least dzn / (2 − 3 dzn / (z_f − z_n)), dzn = max(0,
+//            virtualNear − camera near); where 3 dzn ≥ 2 (z_f − z_n) no warp helps and Filament
+//            reverts to the orthographic map (LispsmNear: nullopt).
+// Not taken from Filament: its orthographic map below sin γ = 0.02 (γ < 1.146°). Both rules keep
+// warping down to lexel's cutoff sin γ = 1e-3 and fall back as lispsm-tight does below it; n is
+// continuous in γ down to there.
+struct LispsmNearRule {
+    enum class Kind { kWimmer, kEngine };
+    Kind kind = Kind::kWimmer;
+    // kEngine only: Filament's virtual near and far planes, view depths in world units (Filament's
+    // defaults are 1 m and 100 m). 0 and +∞: none.
+    double virtualNear = 0.0;
+    double virtualFar = std::numeric_limits<double>::infinity();
+};
+
+// The body's depths n is computed from (LispsmNearRule): 0 < zNear ≤ zFar, warpDepth ≥ 0.
+struct LispsmDepths {
+    double zNear = 0.0;      // z_n
+    double zFar = 0.0;       // z_f
+    double warpDepth = 0.0;  // d
+};
+
+// n for `rule`, sinGamma in (0, 1]; cameraNear (world units) enters only through the virtual near
+// plane. nullopt where the virtual near plane leaves no warp (above), and for depths or a sinGamma
+// outside their domain (never NaN).
+std::optional<double> LispsmNear(const LispsmNearRule& rule, const LispsmDepths& depths,
+                                 double sinGamma, double cameraNear);
+
+// The tight LiSPSM (lispsm-tight's body, margin, depth test and fallback to focused-tight) with n
+// from `rule`: LispsmTightLightMatrix is rule {kWimmer}, LispsmEngineLightMatrix rule {kEngine}.
+LightMatrix LispsmRuleLightMatrix(const BaselineContext& context, const LispsmNearRule& rule,
+                                  BaselineDiagnostics* diagnostics = nullptr);
 
 // PSM's virtual camera (Kozlov's slide back): `camera` slid back along its view direction by
 // `slideBack` world units, its near and far planes moved to [zNear, zFar] + slideBack (zNear, zFar:

@@ -11,6 +11,7 @@ std::vector<OptimizerStart> StandardStarts(const BaselineContext& context) {
     std::vector<OptimizerStart> starts = {
         {"focused-tight", FocusedTightLightMatrix(context)},
         {"lispsm-tight", LispsmTightLightMatrix(context)},
+        {"lispsm-engine", LispsmEngineLightMatrix(context)},
         {"psm-tight", PsmTightLightMatrix(context)},
         {"normal", NormalLightMatrix(context)},
     };

@@ -20,9 +20,9 @@ struct OptimizerStart {
     LightMatrix matrix;
 };
 
-// `optimal`'s starts: focused-tight, lispsm-tight, psm-tight, normal, and plane-optimal when the
-// context has a floor plane (all with the context as given; its samples, when set, steer
-// plane-optimal's fallback). Throws DomainError as the baselines do.
+// `optimal`'s starts: focused-tight, lispsm-tight, lispsm-engine, psm-tight, normal, and
+// plane-optimal when the context has a floor plane (all with the context as given; its samples,
+// when set, steer plane-optimal's fallback). Throws DomainError as the baselines do.
 std::vector<OptimizerStart> StandardStarts(const BaselineContext& context);
 
 struct MultiStartResult {

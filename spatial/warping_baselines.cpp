@@ -11,12 +11,12 @@
 // LiSPSM (Wimmer, Scherzer & Purgathofer, EGSR 2004; Lloyd et al. 2006 §4.1, Fig. 3). For a
 // directional light travelling along l: the warp is a perspective frustum whose axis f is the view
 // direction v projected perpendicular to l (sin γ = |v × l|), whose projection centre c lies n_opt
-// before the body's near face along f, n_opt = (z_n + √(z_f z_n)) / sin γ, and whose depth spans
-// the body along f; the map is that frustum's (x, depth) seen along l. The world map is
-// warp · light view. Point lights go "through the light's perspective first" (Wimmer et al.): the
-// normal light frustum H maps the light to infinity along +z, so in H's space the light is
-// directional and the same construction applies to H(eye), the view direction pushed through H's
-// Jacobian at the eye, and H(B); the world map is warp · H.
+// before the body's near face along f, n_opt = (z_n + √(z_f z_n)) / sin γ (or the engines' rule,
+// LispsmNearRule), and whose depth spans the body along f; the map is that frustum's (x, depth)
+// seen along l. The world map is warp · light view. Point lights go "through the light's
+// perspective first" (Wimmer et al.): the normal light frustum H maps the light to infinity along
+// +z, so in H's space the light is directional and the same construction applies to H(eye), the
+// view direction pushed through H's Jacobian at the eye, and H(B); the world map is warp · H.
 //
 // PSM (Stamminger & Drettakis 2002; Kozlov, GPU Gems ch. 14). In the post-perspective space (NDC)
 // of the camera C, the light L becomes the homogeneous point C·L = (ℓ, ℓw): a point light a point
@@ -123,14 +123,15 @@ void DepthRange(std::span<const glm::dvec3> body, const glm::dvec3& eye, const g
 
 // LiSPSM's warp for a body (the header comment): the light matrix whose rows are the warp's own
 // map axes (frustum x, frustum depth) and whose p4 is its optical axis; nullopt, with the reason
-// in *failure, where the construction degenerates. The frustum holds wsBody; n_opt comes from
-// the depths z_n, z_f of wsDepthBody along the view direction (the body itself for the report's
-// LiSPSM, the visible points for lispsm-tight, whose body reaches toward the light and may pass
-// behind the eye).
+// in *failure, where the construction degenerates. The frustum holds wsBody; n comes from `rule`
+// with the depths z_n, z_f of wsDepthBody along the view direction (the body itself for the
+// report's LiSPSM, the visible points for the tight ones, whose body reaches toward the light and
+// may pass behind the eye) and wsBody's extent d along the warp axis.
 std::optional<LightMatrix> LispsmWarp(const BaselineContext& context, const NormalAxis& axis,
                                       const std::vector<glm::dvec3>& wsBody,
                                       std::span<const glm::dvec3> wsDepthBody,
-                                      BaselineDiagnostics* diagnostics, std::string* failure) {
+                                      const LispsmNearRule& rule, BaselineDiagnostics* diagnostics,
+                                      std::string* failure) {
     const auto fail = [&](const std::string& why) -> std::optional<LightMatrix> {
         *failure = why;
         return std::nullopt;
@@ -205,18 +206,25 @@ std::optional<LightMatrix> LispsmWarp(const BaselineContext& context, const Norm
     // directional light (rigid H) zNear ≥ camera.nearPlane already; the 1e-6 floor (relative to
     // z_f) only keeps n_opt > 0 where H bends the depths of a point light's body.
     zNear = std::max(zNear, 1e-6 * zFar);
-    const double nOpt = LispsmOptimalNear(zNear, zFar, sinGamma);
-    if (diagnostics) {
-        diagnostics->zNear = zNear;
-        diagnostics->zFar = zFar;
-        diagnostics->nOpt = nOpt;
-    }
     double fMin = std::numeric_limits<double>::infinity();
     double fMax = -std::numeric_limits<double>::infinity();
     for (const glm::dvec3& p : bodyD) {
         fMin = std::min(fMin, glm::dot(axisF, p));
         fMax = std::max(fMax, glm::dot(axisF, p));
     }
+    if (diagnostics) {
+        diagnostics->zNear = zNear;
+        diagnostics->zFar = zFar;
+        diagnostics->warpDepth = fMax - fMin;
+    }
+    const std::optional<double> nRule =
+        LispsmNear(rule, {zNear, zFar, fMax - fMin}, sinGamma, camera.nearPlane);
+    if (!nRule)
+        return fail(
+            "no n: the virtual near plane lies beyond 2/3 of the depth range, or the depths "
+            "degenerate");
+    const double nOpt = *nRule;
+    if (diagnostics) diagnostics->nOpt = nOpt;
     // Projection centre: at the eye across f, n_opt before the body's near face along f.
     const glm::dvec3 center = eyeD + (fMin - nOpt - glm::dot(axisF, eyeD)) * axisF;
     const double nearW = nOpt, farW = nOpt + std::max(fMax - fMin, 1e-9 * nOpt);
@@ -322,6 +330,28 @@ double LispsmOptimalNear(double zNear, double zFar, double sinGamma) {
     return (zNear + std::sqrt(zFar * zNear)) / sinGamma;
 }
 
+std::optional<double> LispsmNear(const LispsmNearRule& rule, const LispsmDepths& depths,
+                                 double sinGamma, double cameraNear) {
+    const double zn = depths.zNear, zf = depths.zFar, d = depths.warpDepth;
+    if (!(sinGamma > 0.0 && zn > 0.0 && zf >= zn && d >= 0.0 && std::isfinite(zf) &&
+          std::isfinite(d)))
+        return std::nullopt;
+    if (rule.kind == LispsmNearRule::Kind::kWimmer) return LispsmOptimalNear(zn, zf, sinGamma);
+    // ShadowMap::applyLISPSM's names: z0, z1 the near and far depth along the warp axis, dzn how
+    // far the virtual near plane lies beyond the camera's (world units).
+    const double z0 = zn, z1 = z0 + d * sinGamma;
+    const double dzn = std::max(0.0, rule.virtualNear - cameraNear);
+    const double vz0 = dzn > 0.0 ? std::max(z0, rule.virtualNear) : z0;
+    const double vz1 = std::max(0.0, std::min({z1, zf, rule.virtualFar}));
+    const double nOpt0 = (z0 + std::sqrt(vz0 * vz1)) / sinGamma;
+    if (dzn == 0.0) return nOpt0;
+    // Filament: with the near plane pushed that far, the largest error leaves the depth range and
+    // n must be at least nOpt1; at 2/3 of the range nOpt1 is infinite (the orthographic map).
+    if (!(3.0 * dzn < 2.0 * (zf - zn))) return std::nullopt;
+    const double nOpt1 = dzn / (2.0 - 3.0 * dzn / (zf - zn));
+    return std::max(nOpt0, nOpt1);
+}
+
 double PsmSlideBack(double zNear, double zFar) {
     const double rho = kPsmMinNearFarRatio;
     return std::max(0.0, (rho * zFar - zNear) / (1.0 - rho));
@@ -341,7 +371,7 @@ LightMatrix LispsmLightMatrix(const BaselineContext& context, BaselineDiagnostic
     const WarpStart start(context, diagnostics, "lispsm");
     std::string failure;
     const std::optional<LightMatrix> warped =
-        LispsmWarp(context, start.axis, start.wsBody, start.wsBody, diagnostics, &failure);
+        LispsmWarp(context, start.axis, start.wsBody, start.wsBody, {}, diagnostics, &failure);
     if (!warped) return start.FallBack(failure);
     const auto m = RefitOverBody(context, warped->p4, start.wsBody);
     if (!m)
@@ -359,15 +389,27 @@ LightMatrix PsmLightMatrix(const BaselineContext& context, BaselineDiagnostics* 
     return *m;
 }
 
-LightMatrix LispsmTightLightMatrix(const BaselineContext& context,
-                                   BaselineDiagnostics* diagnostics) {
+LightMatrix LispsmRuleLightMatrix(const BaselineContext& context, const LispsmNearRule& rule,
+                                  BaselineDiagnostics* diagnostics) {
     CheckContext(context);
     std::string failure;
     const std::optional<LightMatrix> warped =
         LispsmWarp(context, ChooseNormalAxis(context), TightBody(context),
                    context.wsRelevantHull.empty() ? context.wsRelevant : context.wsRelevantHull,
-                   diagnostics, &failure);
-    return FitTight(context, warped, "lispsm-tight", failure, diagnostics);
+                   rule, diagnostics, &failure);
+    const char* method =
+        rule.kind == LispsmNearRule::Kind::kWimmer ? "lispsm-tight" : "lispsm-engine";
+    return FitTight(context, warped, method, failure, diagnostics);
+}
+
+LightMatrix LispsmTightLightMatrix(const BaselineContext& context,
+                                   BaselineDiagnostics* diagnostics) {
+    return LispsmRuleLightMatrix(context, {}, diagnostics);
+}
+
+LightMatrix LispsmEngineLightMatrix(const BaselineContext& context,
+                                    BaselineDiagnostics* diagnostics) {
+    return LispsmRuleLightMatrix(context, {LispsmNearRule::Kind::kEngine}, diagnostics);
 }
 
 LightMatrix PsmTightLightMatrix(const BaselineContext& context, BaselineDiagnostics* diagnostics) {

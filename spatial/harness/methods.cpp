@@ -8,8 +8,8 @@
 namespace lexel::spatial {
 
 std::vector<std::string> FairMethodNames() {
-    return {"optimal",   "optimal-refined", "focused-tight", "lispsm-tight",
-            "psm-tight", "plane-optimal",   "normal"};
+    return {"optimal",       "optimal-refined", "focused-tight", "lispsm-tight",
+            "lispsm-engine", "psm-tight",       "plane-optimal", "normal"};
 }
 
 std::vector<std::string> ReportMethodNames() {
@@ -93,6 +93,7 @@ constexpr NamedBaseline kBaselines[] = {
     {"plane-optimal", &PlaneOptimalLightMatrix},
     {"focused-tight", &FocusedTightLightMatrix},
     {"lispsm-tight", &LispsmTightLightMatrix},
+    {"lispsm-engine", &LispsmEngineLightMatrix},
     {"psm-tight", &PsmTightLightMatrix},
 };
 

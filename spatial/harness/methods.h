@@ -6,7 +6,8 @@
 //   - the fair comparison, every method on the optimizer's own information (the visible points,
 //     the same margin): `optimal` (Algorithm 1 from every baseline's start, multi_start.h),
 //     `optimal-refined` (its best start refined by Ceres), `focused-tight`, `lispsm-tight`,
-//     `psm-tight`, `plane-optimal`, `normal`;
+//     `lispsm-engine` (LiSPSM with the n rule Filament and OGRE ship), `psm-tight`,
+//     `plane-optimal`, `normal`;
 // and `optimal-shear` (Algorithm 1 with the report's Fig. 3 shear, optimized exactly). The
 // partitioned methods (partitions.h) return k cascades at the same total texels: `pssm`, `sdsm`,
 // `sdsm-snap` (SDSM with texel snapping), `sdsm-rect`, `zp-lispsm`, `fp-lispsm`, `sdsm-optimal`.

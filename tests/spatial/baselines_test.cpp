@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -15,7 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/run/sweep.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
@@ -151,7 +155,9 @@ const std::vector<std::pair<std::string, Method>> kMethods = {
     {"focused", &FocusedLightMatrix},
     {"lispsm", &LispsmLightMatrix},
     {"psm", &PsmLightMatrix},
-    {"plane-optimal", &PlaneOptimalLightMatrix}};
+    {"plane-optimal", &PlaneOptimalLightMatrix},
+    {"lispsm-tight", &LispsmTightLightMatrix},
+    {"lispsm-engine", &LispsmEngineLightMatrix}};
 
 Light Directional(glm::dvec3 direction) {
     Light l;
@@ -361,6 +367,321 @@ TEST(LispsmBaseline, DistantPointLightApproachesTheDirectionalMap) {
         EXPECT_LT(ratioMax / ratioMin - 1.0, 20.0 / distance) << distance;
         EXPECT_LT(worstTexels, 1.0) << distance;
     }
+}
+
+// --- LiSPSM's n rules: Wimmer's and the engines' (LispsmNearRule) ----------------------------
+
+// The camera of the n-rule tests: at height 2 looking level along -z, 60° field of view, square
+// frame, near 0.1, far 100, so that view depth is -z and the warp axis of a light in the y-z plane
+// lies in that plane.
+Camera LevelCamera() {
+    Camera camera;
+    camera.position = {0.0, 2.0, 0.0};
+    camera.target = {0.0, 2.0, -1.0};
+    camera.fovYDeg = 60.0;
+    camera.resolution = {400, 400};
+    camera.nearPlane = 0.1;
+    camera.farPlane = 100.0;
+    return camera;
+}
+
+// A body's vertices, written out by hand from the camera's geometry: eye-relative points
+// (x, y, -depth) with |x|, |y| ≤ depth·tan 30° inside the frustum.
+//   frustum  the whole view frustum (depths 0.1 and 100).
+//   slab     the frustum ∩ the ground slab -1 ≤ y ≤ 0 (eye-relative -3 ≤ y ≤ -2): its top face
+//            enters the view at depth 2 / tan 30° = 2√3 = 3.4641, its bottom at 3√3.
+std::vector<glm::dvec3> BodyVertices(const Camera& camera, bool slab) {
+    const double t = std::tan(std::numbers::pi / 6.0);
+    std::vector<glm::dvec3> out;
+    auto add = [&](double x, double y, double depth) {
+        out.push_back(camera.position + glm::dvec3(x, y, -depth));
+    };
+    for (double sx : {-1.0, 1.0}) {
+        if (!slab) {
+            for (double depth : {camera.nearPlane, camera.farPlane})
+                for (double sy : {-1.0, 1.0}) add(sx * t * depth, sy * t * depth, depth);
+            continue;
+        }
+        for (double y : {-2.0, -3.0})
+            for (double depth : {-y / t, camera.farPlane}) add(sx * t * depth, y, depth);
+    }
+    return out;
+}
+
+// A directional light at angle γ to the view direction (0, 0, -1), travelling forward and down:
+// l = (0, -sin γ, -cos γ). The warp axis (v projected ⊥ l) is then f = (0, cos γ, -sin γ).
+Light LightAtGamma(double gammaDeg) {
+    const double g = gammaDeg * std::numbers::pi / 180.0;
+    return Directional({0.0, -std::sin(g), -std::cos(g)});
+}
+
+// The tight LiSPSM of `rule` for a body given as the visible points.
+struct RuleRun {
+    LightMatrix matrix;
+    BaselineDiagnostics diagnostics;
+    std::vector<glm::dvec2> images;  // the body's points on the map (texels)
+};
+RuleRun RunRule(const Camera& camera, const std::vector<glm::dvec3>& body, const Light& light,
+                const LispsmNearRule& rule, const Bounds& bounds) {
+    const LightSpace ls(light, bounds);
+    BaselineContext context;
+    context.lightSpace = &ls;
+    context.camera = camera;
+    context.map = {400, 400};
+    context.wsBounds = bounds;
+    context.wsRelevant = body;
+    RuleRun run;
+    run.matrix = LispsmRuleLightMatrix(context, rule, &run.diagnostics);
+    EXPECT_TRUE(Valid(run.matrix, ls, body, context.map));
+    for (const glm::dvec3& x : body) run.images.push_back(run.matrix.Map(ls.ToLight(x)));
+    return run;
+}
+
+Bounds BoxAround(const std::vector<glm::dvec3>& points) {
+    Bounds b;
+    for (const glm::dvec3& p : points) b.Add(p);
+    return b;
+}
+
+// The n the rules give for a body at γ, computed here from the vertices: z_n, z_f their view
+// depths, d their extent along f (the tight body's sweep toward the light runs along l ⊥ f).
+double ExpectedNear(const Camera& camera, const std::vector<glm::dvec3>& body, double gammaDeg,
+                    bool engine, double* warpDepth) {
+    const double g = gammaDeg * std::numbers::pi / 180.0, s = std::sin(g);
+    const glm::dvec3 f(0.0, std::cos(g), -std::sin(g));
+    double zn = 1e300, zf = -1e300, fMin = 1e300, fMax = -1e300;
+    for (const glm::dvec3& p : body) {
+        const double z = camera.position.z - p.z, fp = glm::dot(f, p - camera.position);
+        zn = std::min(zn, z), zf = std::max(zf, z);
+        fMin = std::min(fMin, fp), fMax = std::max(fMax, fp);
+    }
+    *warpDepth = fMax - fMin;
+    const double z1 = engine ? std::min(zn + *warpDepth * s, zf) : zf;
+    return (zn + std::sqrt(zn * z1)) / s;
+}
+
+// Whether x, rounded to the digits `printed` shows (`unit`: its last digit's place), is printed.
+::testing::AssertionResult RoundsTo(double x, double printed, double unit) {
+    if (std::abs(x - printed) <= 0.5 * unit) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << x << " does not round to " << printed;
+}
+
+TEST(LispsmNearRule, FrustumAndSlabBodiesGiveTheIssuesNumbers) {
+    // Issue 29's table, from Filament's applyLISPSM and Wimmer's formula, to the digits printed:
+    // frustum body n = 3.26 both at 90°, 4.61 / 4.11 at 45°, 18.8 / 8.69 at 10°, 93.5 / 21.3 at
+    // 2°; slab body (z_n = 2√3) 22.08 both at 90°, 31.2 / 23.8, 127 / 47.3, 633 / 201. The
+    // library's n (through the whole tight construction) must equal the closed form to 1e-9.
+    struct Row {
+        bool slab;
+        double gammaDeg, wimmer, engine, unit;
+    };
+    const Row rows[] = {
+        {false, 90.0, 3.26, 3.26, 0.01},  {false, 45.0, 4.61, 4.11, 0.01},
+        {false, 10.0, 18.8, 8.69, 0.1},   {false, 2.0, 93.5, 21.3, 0.1},
+        {true, 90.0, 22.08, 22.08, 0.01}, {true, 45.0, 31.2, 23.8, 0.1},
+        {true, 10.0, 127.0, 47.3, 1.0},   {true, 2.0, 633.0, 201.0, 1.0},
+    };
+    const Camera camera = LevelCamera();
+    for (const Row& row : rows) {
+        const std::vector<glm::dvec3> body = BodyVertices(camera, row.slab);
+        Bounds bounds = BoxAround(body);  // the scene: the body, and for the frustum room above
+        if (!row.slab) bounds.Add(camera.position + glm::dvec3(0.0, 60.0, 0.0));
+        const std::string what = std::string(row.slab ? "slab" : "frustum") + " at " +
+                                 std::to_string(row.gammaDeg) + "°";
+        for (bool engine : {false, true}) {
+            LispsmNearRule rule;
+            if (engine) rule.kind = LispsmNearRule::Kind::kEngine;
+            const RuleRun run = RunRule(camera, body, LightAtGamma(row.gammaDeg), rule, bounds);
+            const BaselineDiagnostics& d = run.diagnostics;
+            EXPECT_TRUE(d.fallback.empty()) << what << ": " << d.fallback;
+            double warpDepth = 0.0;
+            const double expected = ExpectedNear(camera, body, row.gammaDeg, engine, &warpDepth);
+            EXPECT_NEAR(d.sinGamma, std::sin(row.gammaDeg * std::numbers::pi / 180.0), 1e-12);
+            EXPECT_NEAR(d.zNear, row.slab ? 2.0 * std::sqrt(3.0) : 0.1, 1e-9) << what;
+            EXPECT_NEAR(d.zFar, 100.0, 1e-9) << what;
+            EXPECT_NEAR(d.warpDepth, warpDepth, 1e-9 * warpDepth) << what;
+            EXPECT_NEAR(d.nOpt, expected, 1e-9 * expected) << what << (engine ? " engine" : "");
+            EXPECT_TRUE(RoundsTo(d.nOpt, engine ? row.engine : row.wimmer, row.unit))
+                << what << (engine ? " engine" : " wimmer");
+        }
+    }
+}
+
+TEST(LispsmNearRule, ClosedFormsAndFilamentsVirtualPlanes) {
+    const LispsmNearRule wimmer, engine{LispsmNearRule::Kind::kEngine};
+    // γ = 90° on the frustum body: d = z_f - z_n, so z₁ = z_f and both are 0.1 + √10.
+    const LispsmDepths frustum{0.1, 100.0, 99.9};
+    EXPECT_DOUBLE_EQ(*LispsmNear(wimmer, frustum, 1.0, 0.1), 0.1 + std::sqrt(10.0));
+    EXPECT_NEAR(*LispsmNear(engine, frustum, 1.0, 0.1), 0.1 + std::sqrt(10.0), 1e-14);
+    // z₁ = z₀ + d sin γ: z_n = 1, d = 48, sin γ = 1/2 → z₁ = 25, n = (1 + 5) / (1/2) = 12.
+    EXPECT_NEAR(*LispsmNear(engine, {1.0, 100.0, 48.0}, 0.5, 0.1), 12.0, 1e-13);
+    // ... capped at z_f: d = 400 would put z₁ at 201; it stays 100: n = (1 + 10) / (1/2) = 22.
+    EXPECT_NEAR(*LispsmNear(engine, {1.0, 100.0, 400.0}, 0.5, 0.1), 22.0, 1e-13);
+    // Filament's defaults (near hint 1 m, far hint 100 m) at γ = 90° on the frustum body: vz₀ = 1,
+    // vz₁ = 100, n = 0.1 + √100 = 10.1 (issue 29); its floor dzn / (2 - 3 dzn / 99.9) = 0.456.
+    LispsmNearRule filament = engine;
+    filament.virtualNear = 1.0;
+    filament.virtualFar = 100.0;
+    EXPECT_NEAR(*LispsmNear(filament, frustum, 1.0, 0.1), 10.1, 1e-13);
+    // A far hint below z₁ caps the root: vz₁ = 25 → n = 0.1 + √(0.1 · 25) (no near hint).
+    LispsmNearRule farOnly = engine;
+    farOnly.virtualFar = 25.0;
+    EXPECT_NEAR(*LispsmNear(farOnly, frustum, 1.0, 0.1), 0.1 + std::sqrt(2.5), 1e-14);
+    // The floor wins when the near hint nears 2/3 of the range: z 1..10, hint 6.5 (dzn 5.5):
+    // n ≥ 5.5 / (2 - 16.5 / 9) = 33.0 > (1 + √(6.5 · 10)) = 9.06; past 2/3 there is no warp.
+    LispsmNearRule deep = engine;
+    deep.virtualNear = 6.5;
+    EXPECT_NEAR(*LispsmNear(deep, {1.0, 10.0, 9.0}, 1.0, 1.0), 5.5 / (2.0 - 16.5 / 9.0), 1e-12);
+    deep.virtualNear = 7.0;  // dzn = 6 = 2/3 of 9
+    EXPECT_FALSE(LispsmNear(deep, {1.0, 10.0, 9.0}, 1.0, 1.0).has_value());
+    // Degenerate input is refused by value, never NaN.
+    EXPECT_FALSE(LispsmNear(engine, {0.0, 10.0, 9.0}, 1.0, 0.1).has_value());
+    EXPECT_FALSE(LispsmNear(engine, {1.0, 0.5, 9.0}, 1.0, 0.1).has_value());
+    EXPECT_FALSE(LispsmNear(engine, {1.0, 10.0, -1.0}, 1.0, 0.1).has_value());
+    EXPECT_FALSE(LispsmNear(wimmer, {1.0, 10.0, 9.0}, 0.0, 0.1).has_value());
+}
+
+TEST(LispsmNearRule, WarpFrustumIdentityHoldsForBothRules) {
+    // The warp is a frustum along f with its centre n before the body's near face: the map's
+    // denominator p4·X is proportional to f·(x - eye) - (z_min - n), z_min = min over the body of
+    // f·(x - eye) (for a directional light the tight body's sweep runs along l ⊥ f, so the
+    // visible points give z_min). Checked over the visible points and a grid through the bounds.
+    const Scene scene = MakeScene();
+    const Bounds bounds = FloorBounds();
+    const std::vector<glm::dvec3> relevant = RelevantFloorPoints(scene.camera);
+    const glm::dvec3 v = glm::normalize(scene.camera.target - scene.camera.position);
+    std::vector<glm::dvec3> grid = relevant;
+    for (int i = 0; i <= 4; ++i)
+        for (int j = 0; j <= 4; ++j)
+            for (int k = 0; k <= 4; ++k)
+                grid.push_back(bounds.lo + (bounds.hi - bounds.lo) * glm::dvec3(i, j, k) / 4.0);
+    for (const glm::dvec3& direction : {glm::dvec3(0.3, -1.0, 0.5), glm::dvec3(0.0, -1.0, -1.0),
+                                        glm::dvec3(1.0, -0.3, 0.2), glm::dvec3(0.0, -0.2, -1.0)}) {
+        const Light light = Directional(direction);
+        const LightSpace ls(light, bounds);
+        const BaselineContext context = MakeBaselineContext(scene, ls, bounds, relevant);
+        const glm::dvec3 l = light.direction;
+        const glm::dvec3 f = glm::normalize(v - glm::dot(v, l) * l);
+        double zMin = 1e300;
+        for (const glm::dvec3& x : relevant)
+            zMin = std::min(zMin, glm::dot(f, x - scene.camera.position));
+        for (bool engine : {false, true}) {
+            LispsmNearRule rule;
+            if (engine) rule.kind = LispsmNearRule::Kind::kEngine;
+            BaselineDiagnostics d;
+            const LightMatrix m = LispsmRuleLightMatrix(context, rule, &d);
+            ASSERT_TRUE(d.fallback.empty()) << d.fallback;
+            // p4·X = k·w with k from the first visible point; the residual relative to the
+            // largest |p4·X| (a ratio would lose digits where w crosses 0 in the grid).
+            auto w = [&](const glm::dvec3& x) {
+                return glm::dot(f, x - scene.camera.position) - (zMin - d.nOpt);
+            };
+            const double k = glm::dot(m.p4, ls.ToLight(relevant[0])) / w(relevant[0]);
+            double residual = 0.0, scale = 0.0;
+            for (const glm::dvec3& x : grid) {
+                const double denominator = glm::dot(m.p4, ls.ToLight(x));
+                residual = std::max(residual, std::abs(denominator - k * w(x)));
+                scale = std::max(scale, std::abs(denominator));
+            }
+            // Measured: ≤ 6e-16 (rounding).
+            EXPECT_LT(residual / scale, 1e-13)
+                << Describe(light) << (engine ? " engine" : " wimmer");
+        }
+    }
+}
+
+TEST(LispsmNearRule, ContinuousDownToTheCutoffThenFocusedTight) {
+    // n(γ) = g(sin γ) / sin γ with g non-decreasing (Wimmer: constant; engine: z₁ grows with
+    // sin γ), so on a grid of sin γ with ratio q from 1 down to the cutoff 1e-3 consecutive n
+    // differ by a factor in [1, q]: no jump, and no switch to the orthographic map at Filament's
+    // sin γ = 0.02.
+    const double q = 1.01;
+    for (const LispsmDepths& depths :
+         {LispsmDepths{0.1, 100.0, 115.0}, LispsmDepths{2.0 * std::sqrt(3.0), 100.0, 97.0}})
+        for (const auto kind : {LispsmNearRule::Kind::kWimmer, LispsmNearRule::Kind::kEngine}) {
+            const LispsmNearRule rule{kind};
+            double previous = *LispsmNear(rule, depths, 1.0, 0.1);
+            for (double s = 1.0 / q; s >= 1e-3; s /= q) {
+                const double n = *LispsmNear(rule, depths, s, 0.1);
+                EXPECT_GE(n / previous, 1.0 - 1e-12) << s;
+                EXPECT_LE(n / previous, q * (1.0 + 1e-12)) << s;
+                previous = n;
+            }
+        }
+    // Through the whole construction on the frustum body: lights at sin γ = 1e-3·(1 + ε) just
+    // above the cutoff warp, with n the closed form, and the maps converge as ε → 0 (the visible
+    // points move 100× less from ε = 1e-4 to 1e-6 than from 1e-2 to 1e-4); just below the cutoff
+    // both rules are focused-tight.
+    const Camera camera = LevelCamera();
+    const std::vector<glm::dvec3> body = BodyVertices(camera, false);
+    Bounds bounds = BoxAround(body);
+    bounds.Add(camera.position + glm::dvec3(0.0, 60.0, 0.0));
+    for (const auto kind : {LispsmNearRule::Kind::kWimmer, LispsmNearRule::Kind::kEngine}) {
+        const LispsmNearRule rule{kind};
+        std::vector<std::vector<glm::dvec2>> images;
+        for (double eps : {1e-2, 1e-4, 1e-6}) {
+            const double gammaDeg = std::asin(1e-3 * (1.0 + eps)) * 180.0 / std::numbers::pi;
+            const RuleRun run = RunRule(camera, body, LightAtGamma(gammaDeg), rule, bounds);
+            const BaselineDiagnostics& d = run.diagnostics;
+            EXPECT_TRUE(d.fallback.empty()) << d.fallback;
+            double warpDepth = 0.0;
+            const double expected = ExpectedNear(camera, body, gammaDeg,
+                                                 kind == LispsmNearRule::Kind::kEngine, &warpDepth);
+            EXPECT_NEAR(d.nOpt, expected, 1e-8 * expected) << eps;
+            images.push_back(run.images);
+        }
+        auto moved = [&](int a, int b) {
+            double most = 0.0;
+            for (std::size_t i = 0; i < body.size(); ++i)
+                most = std::max(most, glm::length(images[a][i] - images[b][i]));
+            return most;
+        };
+        // Measured: 0.064 / 6.4e-4 texel (Wimmer), 0.35 / 3.5e-3 (engine).
+        EXPECT_LT(moved(1, 2), 0.02 * moved(0, 1));
+        EXPECT_LT(moved(1, 2), 0.1);
+        const double below = std::asin(0.99e-3) * 180.0 / std::numbers::pi;
+        const RuleRun run = RunRule(camera, body, LightAtGamma(below), rule, bounds);
+        EXPECT_NE(run.diagnostics.fallback.find("focused-tight"), std::string::npos);
+    }
+}
+
+TEST(LispsmNearRule, OptimalNeverHasALargerHThanLispsmEngineOverASweep) {
+    // The multi-start guarantee (multi_start.h) through the registry `lexel sweep` uses: on every
+    // light of a shipped scene's sweep, h (eq. 6) of `optimal` is at most that of `lispsm-engine`,
+    // which is among its starts. (Street and walkthrough: `optimal` loses to lispsm-tight on
+    // misclassified pixels there.)
+    int total = 0;
+    for (const char* file : {"street.json", "walkthrough.json"}) {
+        const Scene scene =
+            cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) / "spatial" / file);
+        const std::unique_ptr<RenderBackend> backend = MakeCpuRenderer(scene.geometry);
+        const Evaluator evaluator(scene, *backend);
+        std::vector<Light> lights = cases::SweepLightsOf(scene, 25, Light::Type::kPoint);
+        for (const Light& l : cases::SweepLightsOf(scene, 25, Light::Type::kDirectional))
+            lights.push_back(l);
+        int engineStarts = 0;
+        for (const Light& light : lights) {
+            const LightOutcome o = evaluator.Evaluate(light, {});
+            const LightSpace ls(light, evaluator.bounds());
+            MethodContext context;
+            context.baseline =
+                MakeBaselineContext(scene, ls, evaluator.bounds(), evaluator.readback().wsRelevant,
+                                    evaluator.readback().wsRelevantHull);
+            context.baseline.samples = &o.samples;
+            context.samples = &o.samples;
+            const MethodMatrix optimal = ComputeLightMatrix("optimal", context);
+            const MethodMatrix engine = ComputeLightMatrix("lispsm-engine", context);
+            const double hOptimal = Energy(optimal.matrix, o.samples);
+            EXPECT_EQ(hOptimal, optimal.optimizer->h);
+            EXPECT_LE(hOptimal, Energy(engine.matrix, o.samples))
+                << file << " " << cases::LightLabel(light);
+            if (optimal.winner == "lispsm-engine") ++engineStarts;
+        }
+        total += engineStarts;
+    }
+    // The start matters: its map or its search wins on some lights (measured: 5 of 50 on the
+    // street, 2 of 50 on the walkthrough); without it h(optimal) > h(lispsm-engine) on one.
+    EXPECT_GT(total, 0);
 }
 
 TEST(PsmBaseline, LightPerpendicularToViewIsOrthographicInPostPerspectiveSpace) {
