@@ -1,6 +1,7 @@
 #include "lexel/cases/app/commands.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -66,10 +67,14 @@ std::string KnownList(const std::vector<std::string>& names) {
 std::vector<std::string> MethodsOf(std::vector<std::string> methods,
                                    const std::vector<std::string>& known, const char* world) {
     if (methods.empty()) return known;
-    for (const std::string& m : methods)
-        if (std::find(known.begin(), known.end(), m) == known.end())
-            throw InputError("--method: unknown " + std::string(world) + " method '" + m +
+    for (auto m = methods.begin(); m != methods.end(); ++m) {
+        if (std::find(known.begin(), known.end(), *m) == known.end())
+            throw InputError("--method: unknown " + std::string(world) + " method '" + *m +
                              "' (known: " + KnownList(known) + ")");
+        // A method given twice would run twice and print two columns of one name.
+        if (std::find(methods.begin(), m, *m) != m)
+            throw InputError("--method: '" + *m + "' is given twice");
+    }
     return methods;
 }
 
@@ -335,18 +340,35 @@ int TimingCommand(const TimingFlags& flags) {
 
 namespace {
 
-// The frustum flags, each checked against ViewFrustum's domain with the flag's name.
+// The frustum `lexel storage` evaluates, as flags allow it (stated in --help): inside these
+// limits every figure is finite and the warp searches converge (each corner of the box measured,
+// README "Lloyd's storage factor"); outside, the frustum is a sliver or a plane, tan θ or the
+// aspect overflow the light-space axes, or f - n falls below the searches' steps.
+constexpr double kMinFovYDeg = 0.1, kMaxFovYDeg = 179.0;             // degrees
+constexpr double kMinAspect = 0.01, kMaxAspect = 100.0;              // width / height
+constexpr double kMinPlane = 1e-6, kMaxPlane = 1e9;                  // world units, near and far
+constexpr double kMinDepthRatio = 1.0 + 1e-6, kMaxDepthRatio = 1e6;  // f / n
+
+// The frustum flags, each checked against those limits with the flag's name.
 spatial::ViewFrustum StorageFrustum(const StorageFlags& flags) {
-    const auto number = [](double v) { return Significant(v, 6); };
-    if (!(flags.fovYDeg > 0.0 && flags.fovYDeg < 180.0))
-        throw InputError("--fov-y: must be in (0, 180) degrees, got " + number(flags.fovYDeg));
-    if (!(flags.aspect > 0.0 && std::isfinite(flags.aspect)))
-        throw InputError("--aspect: must be finite and > 0, got " + number(flags.aspect));
-    if (!(flags.nearPlane > 0.0 && std::isfinite(flags.nearPlane)))
-        throw InputError("--near: must be finite and > 0, got " + number(flags.nearPlane));
-    if (!(flags.farPlane > flags.nearPlane && std::isfinite(flags.farPlane)))
-        throw InputError("--far: must be finite and > --near (" + number(flags.nearPlane) +
-                         "), got " + number(flags.farPlane));
+    const auto number = [](double v) {  // the shortest text that reads back as v
+        char text[32];
+        return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
+    };
+    const auto range = [&](const char* flag, double v, double lo, double hi, const char* unit) {
+        if (!(v >= lo && v <= hi))
+            throw InputError(std::string(flag) + ": must be in [" + number(lo) + ", " + number(hi) +
+                             "]" + unit + ", got " + number(v));
+    };
+    range("--fov-y", flags.fovYDeg, kMinFovYDeg, kMaxFovYDeg, " degrees");
+    range("--aspect", flags.aspect, kMinAspect, kMaxAspect, "");
+    range("--near", flags.nearPlane, kMinPlane, kMaxPlane, "");
+    range("--far", flags.farPlane, kMinPlane, kMaxPlane, "");
+    const double ratio = flags.farPlane / flags.nearPlane;
+    if (!(ratio >= kMinDepthRatio && ratio <= kMaxDepthRatio))
+        throw InputError("--far: must be " + number(kMinDepthRatio) + " to " +
+                         number(kMaxDepthRatio) + " times --near (" + number(flags.nearPlane) +
+                         "), got " + number(flags.farPlane) + " (" + number(ratio) + " times)");
     return {flags.fovYDeg, flags.aspect, flags.nearPlane, flags.farPlane};
 }
 

@@ -136,12 +136,18 @@ int RunLexel(int argc, char** argv) {
         "storage",
         "Lloyd et al. 2006's storage factor: the data and figures of Figs. 5-7, 10, 12, 13");
     lexel::cases::StorageFlags storageFlags;
-    storage->add_option("--fov-y", storageFlags.fovYDeg, "Vertical field of view in degrees")
+    storage
+        ->add_option("--fov-y", storageFlags.fovYDeg,
+                     "Vertical field of view in degrees, 0.1 to 179")
         ->capture_default_str();
-    storage->add_option("--aspect", storageFlags.aspect, "Image width / height")
+    storage->add_option("--aspect", storageFlags.aspect, "Image width / height, 0.01 to 100")
         ->capture_default_str();
-    storage->add_option("--near", storageFlags.nearPlane, "Near plane n")->capture_default_str();
-    storage->add_option("--far", storageFlags.farPlane, "Far plane f")->capture_default_str();
+    storage->add_option("--near", storageFlags.nearPlane, "Near plane n, 1e-6 to 1e9")
+        ->capture_default_str();
+    storage
+        ->add_option("--far", storageFlags.farPlane,
+                     "Far plane f, 1e-6 to 1e9, with f/n from 1 + 1e-6 to 1e6")
+        ->capture_default_str();
     auto* storageCase =
         storage
             ->add_option("--case", storageFlags.casePath,
