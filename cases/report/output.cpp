@@ -190,10 +190,11 @@ bool IsAppendOnly(const fs::path& dir) {
 
 // An exclusive flock(2) on a directory, held while this lives (or handed over by Release).
 // Not held where the file system refuses locks (then nothing relies on it: see RemoveDebris).
+// `wait`: block until it is free; else give up at once. `follow`: lock what a link names.
 class DirectoryLock {
   public:
-    DirectoryLock(const fs::path& dir, bool wait)
-        : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC)) {
+    DirectoryLock(const fs::path& dir, bool wait, bool follow = false)
+        : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC | (follow ? 0 : O_NOFOLLOW))) {
         int locked;
         do locked = ::flock(fd_, LOCK_EX | (wait ? 0 : LOCK_NB));
         while (locked != 0 && errno == EINTR);
@@ -285,7 +286,7 @@ std::unique_ptr<OutputSet::Staging> MakeStaging(const fs::path& parent, const fs
     std::error_code error;
     fs::create_directories(parent, error);
     if (error) throw InputError(shown + "cannot create the directory (" + error.message() + ")");
-    const DirectoryLock parentLock(parent, true);
+    const DirectoryLock parentLock(parent, true, true);  // --out may name it through a link
     if (parentLock.Held()) RemoveDebris(parent);
     std::string pattern = (parent / (std::string(kStagingPrefix) + "XXXXXX")).string();
     if (::mkdtemp(pattern.data()) == nullptr) {

@@ -413,6 +413,13 @@ TEST_F(OutputSetTest, DebrisOfKilledRunsIsRemovedButNoLiveStaging) {
     }
     EXPECT_EQ(ReadAll(base / "elsewhere" / "keep.txt"), "keep");
     EXPECT_TRUE(fs::exists(live.StagingDir()));
+    // An --out named through a directory link is cleaned the same.
+    fs::create_directories(outDir / ".lexel-staging-dead3");
+    fs::create_directory_symlink(outDir, base / "outlink");
+    {
+        OutputSet throughLink(base / "outlink", csv);
+        EXPECT_FALSE(fs::exists(outDir / ".lexel-staging-dead3"));
+    }
 }
 
 // The inode attributes of chattr(1), set through FS_IOC_SETFLAGS; false where the file system or
