@@ -1,6 +1,7 @@
 #include "lexel/cases/app/commands.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -66,10 +67,14 @@ std::string KnownList(const std::vector<std::string>& names) {
 std::vector<std::string> MethodsOf(std::vector<std::string> methods,
                                    const std::vector<std::string>& known, const char* world) {
     if (methods.empty()) return known;
-    for (const std::string& m : methods)
-        if (std::find(known.begin(), known.end(), m) == known.end())
-            throw InputError("--method: unknown " + std::string(world) + " method '" + m +
+    for (auto m = methods.begin(); m != methods.end(); ++m) {
+        if (std::find(known.begin(), known.end(), *m) == known.end())
+            throw InputError("--method: unknown " + std::string(world) + " method '" + *m +
                              "' (known: " + KnownList(known) + ")");
+        // A method given twice would run twice and print two columns of one name.
+        if (std::find(methods.begin(), m, *m) != m)
+            throw InputError("--method: '" + *m + "' is given twice");
+    }
     return methods;
 }
 
@@ -130,14 +135,16 @@ int RunSpatial(const RunFlags& flags) {
     options.mapTruth = flags.mapTruth;
     options.keepBuffers = !flags.outDir.empty();
     options.backend = BackendOf(flags.backend);
-    if (!flags.outDir.empty())
-        RefuseOverwritingInputs(flags.outDir, flags.cases, [&](const std::string& file) {
-            const std::string& name = scene.name;  // <name>.json/.csv, <name>_light<k>_*.png
-            return file == name + ".json" || file == name + ".csv" ||
-                   (file.starts_with(name + "_light") && file.ends_with(".png"));
-        });
     std::optional<OutputSet> out;  // --out is checked before anything is computed
-    if (!flags.outDir.empty()) out.emplace(flags.outDir);
+    if (!flags.outDir.empty())
+        out.emplace(
+            flags.outDir,
+            OutputPlan{{casePath}, [name = scene.name](const std::string& file) {
+                           // <name>.json/.csv, <name>_light<k>_*.png, the index page
+                           return file == name + ".json" || file == name + ".csv" ||
+                                  (file.starts_with(name + "_light") && file.ends_with(".png")) ||
+                                  file == "index.html";
+                       }});
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
     if (flags.format == "json")
         std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
@@ -156,19 +163,19 @@ int RunSpatial(const RunFlags& flags) {
     return 0;
 }
 
-// `run --out` with flatland cases writes <name>.json/.csv/.md per case: refuses two cases of one
-// name and outputs that would replace a case file.
-void RefuseFlatlandOutputClashes(const RunFlags& flags,
-                                 const std::vector<flatland::FlatScene>& scenes) {
+// `run --out` with flatland cases writes <name>.json/.csv/.md per case (and the index page):
+// refuses two cases of one name; the plan keeps the case files from being replaced.
+OutputPlan FlatlandOutputPlan(const RunFlags& flags,
+                              const std::vector<flatland::FlatScene>& scenes) {
     std::vector<std::string> names;
     for (const auto& scene : scenes) names.push_back(scene.name);
     RefuseDuplicateNames(names, flags.cases);
-    RefuseOverwritingInputs(flags.outDir, flags.cases, [&](const std::string& file) {
-        for (const std::string& name : names)
-            if (file == name + ".json" || file == name + ".csv" || file == name + ".md")
-                return true;
-        return false;
-    });
+    return {{flags.cases.begin(), flags.cases.end()}, [names](const std::string& file) {
+                for (const std::string& name : names)
+                    if (file == name + ".json" || file == name + ".csv" || file == name + ".md")
+                        return true;
+                return file == "index.html";
+            }};
 }
 
 int RunFlatland(const RunFlags& flags) {
@@ -182,9 +189,8 @@ int RunFlatland(const RunFlags& flags) {
     // Everything is computed before anything is written: a bad second case leaves no files.
     std::vector<flatland::FlatScene> scenes;
     for (const auto& path : flags.cases) scenes.push_back(LoadFlatScene(path));
-    if (!flags.outDir.empty()) RefuseFlatlandOutputClashes(flags, scenes);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
-    if (!flags.outDir.empty()) out.emplace(flags.outDir);
+    if (!flags.outDir.empty()) out.emplace(flags.outDir, FlatlandOutputPlan(flags, scenes));
     std::vector<flatland::CaseReport> reports;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         try {
@@ -249,17 +255,19 @@ int SweepCommand(const SweepFlags& flags) {
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
     const BackendKind backend = BackendOf(flags.backend);
-    if (!flags.outDir.empty())
-        RefuseOverwritingInputs(flags.outDir, {flags.casePath}, [&](const std::string& file) {
-            for (const char* name : {"table1.md", "table1.csv", "sweep.json", "lights.csv",
-                                     "cascades.csv", "cascades.png"})
-                if (file == name) return true;
-            return file.starts_with(scene.name + "_light") && file.ends_with(".png");
-        });
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     std::optional<OutputSet> out;  // --out is checked before anything is computed
-    if (!flags.outDir.empty()) out.emplace(flags.outDir);
+    if (!flags.outDir.empty())
+        out.emplace(flags.outDir,
+                    OutputPlan{{casePath}, [name = scene.name](const std::string& file) {
+                                   for (const char* fixed :
+                                        {"table1.md", "table1.csv", "sweep.json", "lights.csv",
+                                         "cascades.csv", "cascades.png", "index.html"})
+                                       if (file == fixed) return true;
+                                   return file.starts_with(name + "_light") &&
+                                          file.ends_with(".png");
+                               }});
     std::optional<spatial::Light::Type> type;
     if (!flags.lightType.empty())
         type = flags.lightType == "point" ? spatial::Light::Type::kPoint
@@ -335,18 +343,35 @@ int TimingCommand(const TimingFlags& flags) {
 
 namespace {
 
-// The frustum flags, each checked against ViewFrustum's domain with the flag's name.
+// The frustum `lexel storage` evaluates, as flags allow it (stated in --help): inside these
+// limits every figure is finite and the warp searches converge (each corner of the box measured,
+// README "Lloyd's storage factor"); outside, the frustum is a sliver or a plane, tan θ or the
+// aspect overflow the light-space axes, or f - n falls below the searches' steps.
+constexpr double kMinFovYDeg = 0.1, kMaxFovYDeg = 179.0;             // degrees
+constexpr double kMinAspect = 0.01, kMaxAspect = 100.0;              // width / height
+constexpr double kMinPlane = 1e-6, kMaxPlane = 1e9;                  // world units, near and far
+constexpr double kMinDepthRatio = 1.0 + 1e-6, kMaxDepthRatio = 1e6;  // f / n
+
+// The frustum flags, each checked against those limits with the flag's name.
 spatial::ViewFrustum StorageFrustum(const StorageFlags& flags) {
-    const auto number = [](double v) { return Significant(v, 6); };
-    if (!(flags.fovYDeg > 0.0 && flags.fovYDeg < 180.0))
-        throw InputError("--fov-y: must be in (0, 180) degrees, got " + number(flags.fovYDeg));
-    if (!(flags.aspect > 0.0 && std::isfinite(flags.aspect)))
-        throw InputError("--aspect: must be finite and > 0, got " + number(flags.aspect));
-    if (!(flags.nearPlane > 0.0 && std::isfinite(flags.nearPlane)))
-        throw InputError("--near: must be finite and > 0, got " + number(flags.nearPlane));
-    if (!(flags.farPlane > flags.nearPlane && std::isfinite(flags.farPlane)))
-        throw InputError("--far: must be finite and > --near (" + number(flags.nearPlane) +
-                         "), got " + number(flags.farPlane));
+    const auto number = [](double v) {  // the shortest text that reads back as v
+        char text[32];
+        return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
+    };
+    const auto range = [&](const char* flag, double v, double lo, double hi, const char* unit) {
+        if (!(v >= lo && v <= hi))
+            throw InputError(std::string(flag) + ": must be in [" + number(lo) + ", " + number(hi) +
+                             "]" + unit + ", got " + number(v));
+    };
+    range("--fov-y", flags.fovYDeg, kMinFovYDeg, kMaxFovYDeg, " degrees");
+    range("--aspect", flags.aspect, kMinAspect, kMaxAspect, "");
+    range("--near", flags.nearPlane, kMinPlane, kMaxPlane, "");
+    range("--far", flags.farPlane, kMinPlane, kMaxPlane, "");
+    const double ratio = flags.farPlane / flags.nearPlane;
+    if (!(ratio >= kMinDepthRatio && ratio <= kMaxDepthRatio))
+        throw InputError("--far: must be " + number(kMinDepthRatio) + " to " +
+                         number(kMaxDepthRatio) + " times --near (" + number(flags.nearPlane) +
+                         "), got " + number(flags.farPlane) + " (" + number(ratio) + " times)");
     return {flags.fovYDeg, flags.aspect, flags.nearPlane, flags.farPlane};
 }
 
@@ -355,7 +380,12 @@ int CaseStorageCommand(const StorageFlags& flags) {
     const spatial::Scene scene = LoadSpatialScene(casePath);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
-    if (!flags.outDir.empty()) out.emplace(flags.outDir);
+    const std::string stem = "storage_" + scene.name;
+    if (!flags.outDir.empty())
+        out.emplace(flags.outDir, OutputPlan{{casePath}, [stem](const std::string& file) {
+                                                 return file == stem + ".json" ||
+                                                        file == stem + ".csv";
+                                             }});
     const CaseStorage result =
         WithCaseName(casePath, [&] { return RunCaseStorage(scene, methods); });
     if (flags.format == "json")
@@ -365,7 +395,6 @@ int CaseStorageCommand(const StorageFlags& flags) {
     else
         std::cout << CaseStorageText(result);
     if (!out) return 0;
-    const std::string stem = "storage_" + scene.name;
     out->WriteText(stem + ".json", CaseStorageJson(result).dump(2) + "\n");
     out->WriteText(stem + ".csv", CaseStorageCsv(result));
     out->Commit();
@@ -381,7 +410,12 @@ int StorageCommand(const StorageFlags& flags) {
         throw InputError("--method: applies with --case (the measured storage factor)");
     const spatial::ViewFrustum frustum = StorageFrustum(flags);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
-    if (!flags.outDir.empty()) out.emplace(flags.outDir);
+    if (!flags.outDir.empty())
+        out.emplace(flags.outDir,
+                    OutputPlan{{}, [](const std::string& file) {
+                                   return file == "storage.json" || file == "storage.csv" ||
+                                          (file.starts_with("fig") && file.ends_with(".png"));
+                               }});
     const StorageStudy study = RunStorageStudy(frustum);
     if (flags.format == "json")
         std::cout << StorageJson(study).dump(2) << '\n';
@@ -414,7 +448,17 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
     const std::vector<ThesisTable> tables =
         LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
     const fs::path dir = casesDir.empty() ? DataDirectory() / "flatland" : fs::path(casesDir);
-    OutputSet out(outDir);  // checked before anything is computed
+    // Checked before anything is computed: tables.md/.csv, lowres.csv, <case>.png,
+    // lowres_<name>.png; the inputs are the thesis cases and their fitted versions.
+    OutputPlan plan{{}, [](const std::string& file) {
+                        return file == "tables.md" || file == "tables.csv" ||
+                               file == "lowres.csv" || file.ends_with(".png");
+                    }};
+    for (const ThesisTable& thesis : tables) {
+        plan.inputs.push_back(dir / thesis.file);
+        plan.inputs.push_back(dir / "fitted" / thesis.file);
+    }
+    OutputSet out(outDir, std::move(plan));
     const std::vector<TableResult> results = RunThesisTables(tables, dir);
     std::vector<std::vector<LowresRow>> lowres;
     std::vector<std::pair<std::string, std::vector<LowresRow>>> studies;
@@ -452,13 +496,12 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
 
 int LowresCommand(const std::string& casePath, const std::string& outDir) {
     const flatland::FlatScene scene = LoadFlatScene(casePath);
-    if (!outDir.empty())
-        RefuseOverwritingInputs(outDir, {casePath}, [&](const std::string& file) {
-            return file == "lowres_" + scene.name + ".md" ||
-                   file == "lowres_" + scene.name + ".png";
-        });
     std::optional<OutputSet> out;  // --out is checked before anything is computed
-    if (!outDir.empty()) out.emplace(outDir);
+    if (!outDir.empty())
+        out.emplace(outDir, OutputPlan{{casePath}, [name = scene.name](const std::string& file) {
+                                           return file == "lowres_" + name + ".md" ||
+                                                  file == "lowres_" + name + ".png";
+                                       }});
     std::vector<LowresRow> rows;
     try {
         rows = RunLowresStudy(scene);
@@ -495,16 +538,17 @@ std::vector<ThesisTable> SelectThesisTables(const std::vector<ThesisTable>& tabl
 
 // fit-thesis writes <case>.json (the family, named by the case file's stem) and parameters.json
 // into --out: none of them may replace a thesis case file it reads (e.g. --out cases/flatland).
-void RefuseOverwritingThesisCases(const fs::path& outDir, const fs::path& casesDir,
-                                  const std::vector<ThesisTable>& selected) {
-    std::vector<std::string> inputs;
-    for (const ThesisTable& thesis : selected) inputs.push_back((casesDir / thesis.file).string());
-    RefuseOverwritingInputs(outDir, inputs, [&](const std::string& file) {
-        if (file == "parameters.json") return true;
-        for (const ThesisTable& thesis : selected)
-            if (file == fs::path(thesis.file).stem().string() + ".json") return true;
-        return false;
-    });
+OutputPlan FitThesisOutputPlan(const fs::path& casesDir, const std::vector<ThesisTable>& selected) {
+    OutputPlan plan;
+    std::vector<std::string> names = {"parameters.json"};
+    for (const ThesisTable& thesis : selected) {
+        plan.inputs.push_back(casesDir / thesis.file);
+        names.push_back(fs::path(thesis.file).stem().string() + ".json");
+    }
+    plan.isOutput = [names](const std::string& file) {
+        return std::find(names.begin(), names.end(), file) != names.end();
+    };
+    return plan;
 }
 
 }  // namespace
@@ -514,8 +558,7 @@ int FitThesisCommand(const FitThesisFlags& flags) {
         LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
     const std::vector<ThesisTable> selected = SelectThesisTables(tables, flags.caseName);
     const fs::path casesDir = DataDirectory() / "flatland";
-    RefuseOverwritingThesisCases(flags.outDir, casesDir, selected);
-    OutputSet out(flags.outDir);  // checked before anything is fitted
+    OutputSet out(flags.outDir, FitThesisOutputPlan(casesDir, selected));  // before any fit
     // Everything is fitted before anything is written.
     const std::vector<CaseFit> fits =
         FitThesisCases(selected, casesDir, flags.options,

@@ -17,7 +17,8 @@
 //   lexel lowres CASE.json [--out DIR]
 //   lexel fit-thesis [--case NAME] [--out DIR] [--seed S] [--samples N] [--starts K] [--explain]
 // Exit status: 0 success, 2 bad input (one line on stderr naming the field and the reason) or
-// too little memory for it, 1 an I/O failure while writing results. Every failure is one line
+// too little memory for it, 1 an I/O failure while writing results, 128 + n stopped by signal n
+// (SIGINT, SIGTERM, SIGHUP; the --out staging removed). Every failure is one line
 // "lexel: error: ...".
 #include <CLI/CLI.hpp>
 #include <filesystem>
@@ -25,6 +26,7 @@
 #include <new>
 
 #include "lexel/cases/app/commands.h"
+#include "lexel/cases/report/output.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/partitions.h"
 
@@ -43,6 +45,15 @@ int Failure(std::string message, int status) {
     return status;
 }
 
+// A flag given as an empty string (`--out ''`) is refused rather than taken for "not given".
+CLI::Validator NonEmpty(const std::string& what) {
+    return CLI::Validator(
+        [what](std::string& value) {
+            return value.empty() ? "must name " + what + ", got an empty string" : std::string();
+        },
+        "", "NonEmpty");
+}
+
 int RunLexel(int argc, char** argv) {
     CLI::App app{"lexel: choose the light projection that minimizes shadow-map aliasing"};
     app.set_version_flag("--version", std::string("lexel ") + LEXEL_VERSION);
@@ -59,7 +70,8 @@ int RunLexel(int argc, char** argv) {
     run->add_option("--format", format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
     run->add_option("--out", runOut,
-                    "Also write <case>.json/.csv/.md (and for 3D cases the images) here");
+                    "Also write <case>.json/.csv/.md (and for 3D cases the images) here")
+        ->check(NonEmpty("a directory"));
     int runCascades = 0;
     run->add_option("--cascades", runCascades,
                     "3D: partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
@@ -88,10 +100,11 @@ int RunLexel(int argc, char** argv) {
     sweep->add_option("--methods,--method", sweepMethods, "Methods to run (default: all)");
     sweep->add_option("--format", sweepFormat, "Output format")
         ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
-    sweep->add_option(
-        "--out", sweepOut,
-        "Also write table1.md/.csv, sweep.json, lights.csv here (and with partitioned "
-        "methods the k = 1, 2, 4, 8 study and the first light's cascades)");
+    sweep
+        ->add_option("--out", sweepOut,
+                     "Also write table1.md/.csv, sweep.json, lights.csv here (and with partitioned "
+                     "methods the k = 1, 2, 4, 8 study and the first light's cascades)")
+        ->check(NonEmpty("a directory"));
     int sweepCascades = 0;
     sweep
         ->add_option("--cascades", sweepCascades,
@@ -136,12 +149,18 @@ int RunLexel(int argc, char** argv) {
         "storage",
         "Lloyd et al. 2006's storage factor: the data and figures of Figs. 5-7, 10, 12, 13");
     lexel::cases::StorageFlags storageFlags;
-    storage->add_option("--fov-y", storageFlags.fovYDeg, "Vertical field of view in degrees")
+    storage
+        ->add_option("--fov-y", storageFlags.fovYDeg,
+                     "Vertical field of view in degrees, 0.1 to 179")
         ->capture_default_str();
-    storage->add_option("--aspect", storageFlags.aspect, "Image width / height")
+    storage->add_option("--aspect", storageFlags.aspect, "Image width / height, 0.01 to 100")
         ->capture_default_str();
-    storage->add_option("--near", storageFlags.nearPlane, "Near plane n")->capture_default_str();
-    storage->add_option("--far", storageFlags.farPlane, "Far plane f")->capture_default_str();
+    storage->add_option("--near", storageFlags.nearPlane, "Near plane n, 1e-6 to 1e9")
+        ->capture_default_str();
+    storage
+        ->add_option("--far", storageFlags.farPlane,
+                     "Far plane f, 1e-6 to 1e9, with f/n from 1 + 1e-6 to 1e6")
+        ->capture_default_str();
     auto* storageCase =
         storage
             ->add_option("--case", storageFlags.casePath,
@@ -153,8 +172,10 @@ int RunLexel(int argc, char** argv) {
     storage->add_option("--method", storageFlags.methods, "With --case: methods (default: all)");
     storage->add_option("--format", storageFlags.format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
-    storage->add_option("--out", storageFlags.outDir,
-                        "Also write storage.json, storage.csv and the figures (PNG) here");
+    storage
+        ->add_option("--out", storageFlags.outDir,
+                     "Also write storage.json, storage.csv and the figures (PNG) here")
+        ->check(NonEmpty("a directory"));
 
     auto* info = app.add_subcommand("info", "The version and the renderers available here");
 
@@ -162,10 +183,13 @@ int RunLexel(int argc, char** argv) {
         app.add_subcommand("tables", "Reproduce the thesis tables (Chong 2003, ch. 4.1.3)");
     std::string tablesOut = "out", casesDir;
     tables->add_option("--out", tablesOut, "Directory for the Markdown, CSV and figures")
-        ->capture_default_str();
-    tables->add_option("--cases", casesDir,
-                       "Directory holding the four thesis cases (default: the shipped ones); "
-                       "fitted/<case>.json there replaces a case where it matches better");
+        ->capture_default_str()
+        ->check(NonEmpty("a directory"));
+    tables
+        ->add_option("--cases", casesDir,
+                     "Directory holding the four thesis cases (default: the shipped ones); "
+                     "fitted/<case>.json there replaces a case where it matches better")
+        ->check(NonEmpty("a directory"));
 
     auto* lowres =
         app.add_subcommand("lowres", "Low-resolution decision study (thesis 4.1.1, Fig. 4.1)");
@@ -173,14 +197,17 @@ int RunLexel(int argc, char** argv) {
     lowres->add_option("case", lowresCase, "Case file (JSON)")
         ->required()
         ->check(CLI::ExistingFile);
-    lowres->add_option("--out", lowresOut, "Also write the table as CSV/Markdown and a plot here");
+    lowres->add_option("--out", lowresOut, "Also write the table as CSV/Markdown and a plot here")
+        ->check(NonEmpty("a directory"));
 
     auto* fitThesis = app.add_subcommand(
         "fit-thesis", "Fit the thesis's scenes to its published tables (Chong 2003, ch. 4.1.3)");
     lexel::cases::FitThesisFlags fitFlags;
-    fitThesis->add_option("--case", fitFlags.caseName, "One case (file stem); default: all four");
+    fitThesis->add_option("--case", fitFlags.caseName, "One case (file stem); default: all four")
+        ->check(NonEmpty("a thesis case"));
     fitThesis->add_option("--out", fitFlags.outDir, "Directory for the fitted case files")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(NonEmpty("a directory"));
     fitThesis->add_option("--seed", fitFlags.options.seed, "Seed of the random starts")
         ->capture_default_str();
     fitThesis->add_option("--samples", fitFlags.options.samples, "Random starts screened per case")
@@ -238,6 +265,8 @@ int RunLexel(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Before any thread starts: SIGINT, SIGTERM and SIGHUP remove the --out staging and exit.
+    lexel::cases::StopCleanlyOnSignals();
     const int status = RunLexel(argc, argv);
     // Results that did not reach stdout (a full disk, a closed pipe) are a failed run.
     std::cout.flush();

@@ -18,7 +18,8 @@ inline constexpr std::size_t kMaxCaseNameBytes = 100;
 
 // Why `name` is not a safe file stem, or nullopt when it is. Refused: empty; longer than
 // kMaxCaseNameBytes bytes; containing '/', '\', "..", or a control character (U+0000–U+001F,
-// U+007F). The reason never echoes the name (it may hold control characters).
+// U+007F); not UTF-8 (a file stem of Latin-1 bytes, say: the JSON reports hold UTF-8 only). The
+// reason never echoes the name (it may hold control characters).
 std::optional<std::string> CaseNameProblem(std::string_view name);
 
 // The case's name: the document's /name when it has one, else `fallbackName` (the case file's

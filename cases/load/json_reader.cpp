@@ -230,6 +230,14 @@ NumberOverflow LocateNumberOverflow(const std::string& text) {
 }  // namespace
 
 nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceName) {
+    // nlohmann's lexer takes a NUL byte for the end of the input, so `{...}\0garbage` would parse.
+    if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+        const std::size_t line = 1 + std::count(text.begin(), text.begin() + nul, '\n');
+        const std::size_t lineStart = text.rfind('\n', nul);
+        const std::size_t column = lineStart == std::string::npos ? nul + 1 : nul - lineStart;
+        throw InputError(sourceName + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                         ": invalid JSON: a NUL byte (a case file is text)");
+    }
     try {
         return nlohmann::json::parse(text, DuplicateKeyCheck(sourceName));
     } catch (const nlohmann::json::parse_error& e) {

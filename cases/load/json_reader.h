@@ -18,9 +18,10 @@ namespace lexel::cases {
 // The largest case file read (bytes): the shipped cases are a few KiB; meshes are separate files.
 inline constexpr std::size_t kMaxCaseFileBytes = std::size_t{16} << 20;
 
-// Reads and parses a JSON file. Throws InputError "FILE:LINE:COLUMN: reason" on a syntax error,
-// "FILE: POINTER: duplicate key ..." for a key repeated in one object, and "FILE: reason" when it
-// cannot be read, is not a regular file, or is larger than kMaxCaseFileBytes.
+// Reads and parses a JSON file. Throws InputError "FILE:LINE:COLUMN: reason" on a syntax error
+// or a NUL byte, "FILE: POINTER: duplicate key ..." for a key repeated in one object, and
+// "FILE: reason" when it cannot be read, is not a regular file, or is larger than
+// kMaxCaseFileBytes.
 nlohmann::json ParseJsonFile(const std::filesystem::path& path);
 nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceName);
 

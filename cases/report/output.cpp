@@ -1,16 +1,26 @@
 #include "lexel/cases/report/output.h"
 
 #include <fcntl.h>
+#include <linux/fs.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/file.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace lexel::cases {
@@ -110,51 +120,321 @@ std::vector<std::string> StagedFiles(const fs::path& dir) {
     return names;
 }
 
-}  // namespace
+// The staging directories' name: lexel removes only what carries it (and is its user's, and no
+// live process holds locked).
+constexpr std::string_view kStagingPrefix = ".lexel-staging-";
+// A staging directory whose rollback could not restore every old version is renamed to this
+// prefix, so that no later run removes the old versions it keeps.
+constexpr std::string_view kKeptPrefix = ".lexel-kept-";
+// A staging directory's name (this run's, another's, or a kept one): never an output's.
+bool IsLexelDirectory(const std::string& name) {
+    return name.starts_with(kStagingPrefix) || name.starts_with(kKeptPrefix);
+}
+// The longest file name (NAME_MAX: ext4, xfs, btrfs, tmpfs) and path (PATH_MAX without its NUL)
+// the kernel takes, in bytes.
+constexpr std::size_t kMaxNameBytes = NAME_MAX, kMaxPathBytes = PATH_MAX - 1;
+// The most a staged file's path adds to DIR's: "/.lexel-staging-XXXXXX/.replaced/<name>".
+constexpr std::size_t kStagedSuffixBytes = 1 + 21 + 11 + kMaxNameBytes;
 
-OutputSet::OutputSet(const fs::path& outDir) : outDir_(WithoutTrailingSeparator(outDir)) {
-    const std::string shown = "--out: " + outDir_.string() + ": ";
-    if (outDir_.empty()) throw InputError("--out: must name a directory");
+// Why `dir` cannot be --out's path, before the file system is asked, or empty: a component no
+// file system takes, or a path that with its files' names passes what a system call takes.
+std::string PathLengthProblem(const fs::path& dir) {
+    for (const fs::path& part : dir)
+        if (part.native().size() > kMaxNameBytes)
+            return "a path component is " + std::to_string(part.native().size()) +
+                   " bytes; a file name has at most " + std::to_string(kMaxNameBytes);
     std::error_code error;
-    const fs::file_status status = fs::status(outDir_, error);
-    if (fs::exists(status) && !fs::is_directory(status))
-        throw InputError(shown + "not a directory");
-    // A missing DIR is staged beside it and renamed into place whole; "." and ".." cannot be.
-    wholeDirectory_ =
-        !fs::exists(status) && outDir_.filename() != "." && outDir_.filename() != "..";
-    fs::path stagingParent = outDir_;
-    if (wholeDirectory_) {
-        stagingParent = outDir_.has_parent_path() ? outDir_.parent_path() : fs::path(".");
-        createdTop_ = TopmostMissing(stagingParent);
-    } else if (!fs::exists(status)) {
-        createdTop_ = TopmostMissing(outDir_);
-    }
-    fs::create_directories(stagingParent, error);
-    if (error) {
-        RemoveEmptyChain(stagingParent, createdTop_);
-        throw InputError(shown + "cannot create the directory (" + error.message() + ")");
-    }
-    std::string pattern = (stagingParent / ".lexel-staging-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) {
-        const int reason = errno;
-        RemoveEmptyChain(stagingParent, createdTop_);
-        throw InputError(shown + "cannot create files there (" + ErrnoText(reason) + ")");
-    }
-    stagingDir_ = pattern;
+    const std::size_t bytes = fs::absolute(dir, error).native().size();
+    if (bytes + kStagedSuffixBytes > kMaxPathBytes)
+        return "the path is " + std::to_string(bytes) + " bytes; with its files' names it would " +
+               "pass the " + std::to_string(kMaxPathBytes) + " bytes a path may have";
+    return {};
 }
 
-OutputSet::~OutputSet() {
-    if (stagingDir_.empty()) return;
+// Whether `dir` exists as a directory (through links). Throws InputError `shown` + the reason
+// for a symbolic link loop, a dangling link, or anything else that is not a directory. A path
+// through a regular file counts as absent here; creating it reports that.
+bool ExistingDirectory(const fs::path& dir, const std::string& shown) {
+    struct stat st {};
+    if (::lstat(dir.c_str(), &st) != 0) {
+        const int reason = errno;
+        if (reason == ENOENT || reason == ENOTDIR) return false;
+        if (reason == ELOOP) throw InputError(shown + "a symbolic link loop on the way");
+        throw InputError(shown + "cannot be examined (" + ErrnoText(reason) + ")");
+    }
+    if (S_ISLNK(st.st_mode) && ::stat(dir.c_str(), &st) != 0) {
+        const int reason = errno;
+        std::error_code error;
+        const std::string target = fs::read_symlink(dir, error).string();
+        if (reason == ELOOP) throw InputError(shown + "a symbolic link loop");
+        if (reason == ENOENT)
+            throw InputError(shown + "a dangling symbolic link (to " + target +
+                             ", which does not exist)");
+        throw InputError(shown + "a symbolic link that cannot be followed (" + ErrnoText(reason) +
+                         ")");
+    }
+    if (!S_ISDIR(st.st_mode)) throw InputError(shown + "not a directory");
+    return true;
+}
+
+// Whether the directory carries the append-only attribute (chattr +a): files can be made in it
+// but none removed, renamed away or replaced. False where the file system has no attributes.
+bool IsAppendOnly(const fs::path& dir) {
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return false;
+    int flags = 0;
+    const bool appendOnly = ::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0 && (flags & FS_APPEND_FL);
+    ::close(fd);
+    return appendOnly;
+}
+
+// An exclusive flock(2) on a directory, held while this lives (or handed over by Release).
+// Not held where the file system refuses locks (then nothing relies on it: see RemoveDebris).
+// `wait`: block until it is free; else give up at once. `follow`: lock what a link names.
+class DirectoryLock {
+  public:
+    DirectoryLock(const fs::path& dir, bool wait, bool follow = false)
+        : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC | (follow ? 0 : O_NOFOLLOW))) {
+        int locked;
+        do locked = ::flock(fd_, LOCK_EX | (wait ? 0 : LOCK_NB));
+        while (locked != 0 && errno == EINTR);
+        if (fd_ >= 0 && locked != 0) ::close(std::exchange(fd_, -1));
+    }
+    ~DirectoryLock() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    DirectoryLock(const DirectoryLock&) = delete;
+    DirectoryLock& operator=(const DirectoryLock&) = delete;
+    bool Held() const { return fd_ >= 0; }
+    int Release() { return std::exchange(fd_, -1); }
+
+  private:
+    int fd_;
+};
+
+// Removes the staging directories that killed runs left in `dir`: real directories named
+// kStagingPrefix..., this user's, that no process holds locked (a run locks its own from the
+// moment it makes it until it removes it; the kernel drops the lock of a dead process). The
+// caller holds `dir`'s lock, which every run holds while it makes and locks its own, so none is
+// caught between the two.
+void RemoveDebris(const fs::path& dir) {
+    std::vector<fs::path> candidates;
     std::error_code error;
-    fs::remove_all(stagingDir_, error);  // after a file-by-file commit: the kept old versions
-    if (!committed_)
-        RemoveEmptyChain(wholeDirectory_ ? stagingDir_.parent_path() : outDir_, createdTop_);
+    for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error))
+        if (it->path().filename().native().starts_with(kStagingPrefix))
+            candidates.push_back(it->path());
+    for (const fs::path& candidate : candidates) {
+        struct stat st {};
+        if (::lstat(candidate.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) ||
+            st.st_uid != ::geteuid())
+            continue;
+        const DirectoryLock lock(candidate, false);
+        if (lock.Held()) fs::remove_all(candidate, error);
+    }
+}
+
+// Guards the live staging directories: a signal's cleanup and every change to them (making,
+// removing, publishing) hold it, so a signal waits for a Commit in progress.
+// Never destroyed: the signal thread may take them while the process exits.
+std::mutex& LiveMutex() {
+    static auto* mutex = new std::mutex;
+    return *mutex;
+}
+std::vector<OutputSet::Staging*>& LiveStagings() {
+    static auto* live = new std::vector<OutputSet::Staging*>;
+    return *live;
+}
+
+}  // namespace
+
+struct OutputSet::Staging {
+    fs::path dir;                  // the staging directory; empty once published or removed
+    fs::path chainFrom, chainTop;  // RemoveEmptyChain's: the directories made for DIR's parents
+    bool committed = false;
+    int lockFd = -1;  // holds the directory's flock (RemoveDebris)
+
+    // Removes the directory (then drops its lock) and, unless the set was committed, the parent
+    // directories made for it. With LiveMutex held.
+    void Discard() {
+        std::error_code error;
+        if (!dir.empty()) fs::remove_all(dir, error);
+        dir.clear();
+        if (lockFd >= 0) ::close(std::exchange(lockFd, -1));
+        if (!committed) RemoveEmptyChain(chainFrom, chainTop);
+        chainTop.clear();
+    }
+    ~Staging() {
+        const std::lock_guard live(LiveMutex());
+        Discard();
+        std::erase(LiveStagings(), this);
+    }
+};
+
+namespace {
+
+// Makes the staging directory in `parent` (and `parent` with the directories above it that are
+// missing; `createdTop` is the topmost of them), after removing the debris of killed runs there.
+// Throws InputError `shown` + the reason, leaving nothing.
+std::unique_ptr<OutputSet::Staging> MakeStaging(const fs::path& parent, const fs::path& createdTop,
+                                                const std::string& shown,
+                                                const std::string& where) {
+    auto staging = std::make_unique<OutputSet::Staging>();
+    staging->chainFrom = parent;
+    staging->chainTop = createdTop;
+    const std::lock_guard live(LiveMutex());  // a signal waits until the directory is registered
+    LiveStagings().push_back(staging.get());
+    std::error_code error;
+    fs::create_directories(parent, error);
+    if (error) throw InputError(shown + "cannot create the directory (" + error.message() + ")");
+    const DirectoryLock parentLock(parent, true, true);  // --out may name it through a link
+    if (parentLock.Held()) RemoveDebris(parent);
+    std::string pattern = (parent / (std::string(kStagingPrefix) + "XXXXXX")).string();
+    if (::mkdtemp(pattern.data()) == nullptr) {
+        const int reason = errno;
+        throw InputError(shown + "cannot create files " + where + " (" + ErrnoText(reason) + ")");
+    }
+    staging->dir = pattern;
+    staging->lockFd = DirectoryLock(staging->dir, false).Release();
+    return staging;
+}
+
+// The directory beside an append-only DIR where its files are staged (DIR's parent, on DIR's
+// file system and not append-only itself, so that the staging directory can be removed).
+fs::path AppendOnlyStagingParent(const fs::path& outDir, const std::string& shown) {
+    std::error_code error;
+    const fs::path resolved = fs::canonical(outDir, error);
+    const fs::path parent = resolved.parent_path();
+    struct stat dirStat {
+    }, parentStat{};
+    if (error || ::stat(resolved.c_str(), &dirStat) != 0 ||
+        ::stat(parent.c_str(), &parentStat) != 0 || dirStat.st_dev != parentStat.st_dev ||
+        IsAppendOnly(parent))
+        throw InputError(shown +
+                         "is append-only (chattr +a), and its parent cannot hold the staging "
+                         "directory (another file system, or append-only too)");
+    return parent;
+}
+
+// The nearest existing directory at or above `dir` (whose topmost missing one is `createdTop`).
+fs::path NearestExisting(const fs::path& dir, const fs::path& createdTop) {
+    const fs::path at = createdTop.empty() ? dir : createdTop.parent_path();
+    return at.empty() ? fs::path(".") : at;
+}
+
+// Throws InputError "--out: writing <file> would overwrite the case file <input>" when a file
+// that `isOutput` accepts (a file name inside outDir) is, once directories and links are
+// resolved, one of `inputs`.
+void RefuseOverwritingInputs(const fs::path& outDir, const std::vector<fs::path>& inputs,
+                             const std::function<bool(const std::string& fileName)>& isOutput) {
+    std::error_code error;
+    const fs::path outAt = fs::weakly_canonical(fs::absolute(outDir), error);
+    if (error) return;  // an --out that cannot be resolved is refused when it is made
+    for (const fs::path& input : inputs) {
+        const fs::path path = fs::absolute(input);
+        // Where the input's name lies (a link there is replaced by the output) and the file it
+        // resolves to (the link's target would be replaced through a directory link).
+        const fs::path named = fs::weakly_canonical(path.parent_path(), error) / path.filename();
+        const fs::path resolved = fs::weakly_canonical(path, error);
+        for (const fs::path& at : {named, resolved})
+            if (at.parent_path() == outAt && isOutput(at.filename().string()))
+                throw InputError("--out: writing " + (outDir / at.filename()).string() +
+                                 " would overwrite the case file " + input.string());
+    }
+}
+
+// Why link(2) refused to keep an old file, in words.
+std::string LinkRefusal(int reason) {
+    std::string text = "link: " + ErrnoText(reason);
+    if (reason == EPERM)
+        text +=
+            ": another user's file (fs.protected_hardlinks), or an immutable or append-only one";
+    return text;
+}
+
+}  // namespace
+
+OutputSet::OutputSet(const fs::path& outDir, OutputPlan plan)
+    : outDir_(WithoutTrailingSeparator(outDir)), plan_(std::move(plan)) {
+    if (!plan_.isOutput) throw std::logic_error("OutputSet: the plan names no outputs");
+    if (outDir_.empty()) throw InputError("--out: must name a directory, got an empty string");
+    const std::string shown = "--out: " + outDir_.string() + ": ";
+    if (const std::string problem = PathLengthProblem(outDir_); !problem.empty())
+        throw InputError(shown + problem);
+    const bool exists = ExistingDirectory(outDir_, shown);
+    RefuseOverwritingInputs(outDir_, plan_.inputs, plan_.isOutput);
+    fs::path stagingParent = outDir_, createdTop;
+    if (exists) {
+        const bool appendOnly = IsAppendOnly(outDir_);
+        CheckExistingOutputs(appendOnly);
+        if (appendOnly) stagingParent = AppendOnlyStagingParent(outDir_, shown);
+    } else {
+        // A missing DIR is staged beside it and renamed into place whole; "." and ".." cannot be.
+        wholeDirectory_ = outDir_.filename() != "." && outDir_.filename() != "..";
+        if (wholeDirectory_)
+            stagingParent = outDir_.has_parent_path() ? outDir_.parent_path() : fs::path(".");
+        createdTop = TopmostMissing(stagingParent);
+        const fs::path existing = NearestExisting(stagingParent, createdTop);
+        if (IsAppendOnly(existing))
+            throw InputError(shown + existing.string() +
+                             " is append-only (chattr +a): a failed run could not remove what it "
+                             "made there (make the directory first)");
+    }
+    staging_ = MakeStaging(stagingParent, createdTop, shown,
+                           stagingParent == outDir_ || wholeDirectory_
+                               ? "there"
+                               : "in " + stagingParent.string() +
+                                     ", where an append-only --out "
+                                     "is staged");
+    stagingDir_ = staging_->dir;
+    if (exists) ProbeBackups();
+}
+
+OutputSet::~OutputSet() = default;
+
+// In an existing DIR, the old files the outputs will replace: none may be a directory, and an
+// append-only DIR lets none be replaced.
+void OutputSet::CheckExistingOutputs(bool appendOnly) const {
+    std::error_code error;
+    for (fs::directory_iterator it(outDir_, error), end; !error && it != end; it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        if (IsLexelDirectory(name) || !plan_.isOutput(name)) continue;
+        const std::string shown = "--out: " + (outDir_ / name).string() + ": ";
+        struct stat st {};
+        if (::lstat(it->path().c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+            throw InputError(shown + "is a directory, and an output file has its name");
+        if (appendOnly)
+            throw InputError("--out: " + outDir_.string() + ": is append-only (chattr +a), so " +
+                             "its old " + name + " cannot be replaced");
+    }
+}
+
+// In an existing DIR, each old file an output replaces must be one whose old version can be kept
+// as a hard link (CommitFileByFile restores it from there if publishing fails): tried here, before
+// anything is computed, and again at Commit.
+void OutputSet::ProbeBackups() const {
+    const fs::path probe = stagingDir_ / ".probe";
+    std::error_code error;
+    for (fs::directory_iterator it(outDir_, error), end; !error && it != end; it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        if (IsLexelDirectory(name) || !plan_.isOutput(name)) continue;
+        if (::link(it->path().c_str(), probe.c_str()) == 0) {
+            ::unlink(probe.c_str());
+            continue;
+        }
+        const int reason = errno;
+        if (reason == ENOENT) continue;  // gone meanwhile
+        throw InputError("--out: " + (outDir_ / name).string() +
+                         ": cannot keep the old file to restore it if publishing fails (" +
+                         LinkRefusal(reason) + ")");
+    }
 }
 
 fs::path OutputSet::Staged(const std::string& fileName) const {
     if (fileName.empty() || fileName.find('/') != std::string::npos || fileName == "." ||
         fileName == "..")
         throw std::logic_error("OutputSet: '" + fileName + "' is not a plain file name");
+    if (!plan_.isOutput(fileName))
+        throw std::logic_error("OutputSet: '" + fileName + "' is not among the declared outputs");
     return stagingDir_ / fileName;
 }
 
@@ -193,6 +473,9 @@ void OutputSet::ThrowWithFinalNames(const std::string& message) const {
 
 void OutputSet::VerifyAndSync() const {
     for (const std::string& name : StagedFiles(stagingDir_)) {
+        if (!plan_.isOutput(name))
+            throw std::logic_error("OutputSet: the staged '" + name +
+                                   "' is not among the declared outputs");
         const fs::path path = stagingDir_ / name;
         const std::string shown = (outDir_ / name).string();
         if (const auto text = textSizes_.find(name); text != textSizes_.end()) {
@@ -212,14 +495,23 @@ void OutputSet::VerifyAndSync() const {
 }
 
 void OutputSet::Commit() {
-    if (committed_) throw std::logic_error("OutputSet: committed twice");
+    if (staging_->committed) throw std::logic_error("OutputSet: committed twice");
     VerifyAndSync();
-    if (!wholeDirectory_) return CommitFileByFile();
+    const std::lock_guard live(LiveMutex());  // a signal now waits until the set is published
+    if (wholeDirectory_)
+        CommitWholeDirectory();
+    else
+        CommitFileByFile();
+}
+
+void OutputSet::CommitWholeDirectory() {
     // The staging directory becomes DIR: give it the mode mkdir would have (mkdtemp made 0700).
     ::chmod(stagingDir_.c_str(), 0777 & ~ProcessUmask());
     if (::rename(stagingDir_.c_str(), outDir_.c_str()) == 0) {
-        committed_ = true;
-        stagingDir_.clear();
+        staging_->committed = true;
+        staging_->dir.clear();
+        // The lock was the staging directory's; DIR must not stay locked (a next run locks it).
+        if (staging_->lockFd >= 0) ::close(std::exchange(staging_->lockFd, -1));
         SyncPath(outDir_.has_parent_path() ? outDir_.parent_path() : fs::path("."), true);
         return;
     }
@@ -232,36 +524,122 @@ void OutputSet::Commit() {
                              ErrnoText(reason) + ")");
 }
 
-void OutputSet::CommitFileByFile() {
-    const std::vector<std::string> names = StagedFiles(stagingDir_);
-    // The old versions are kept as hard links, so that a failed rename can restore them.
-    const fs::path keptDir = stagingDir_ / ".replaced";
-    fs::create_directory(keptDir);
+namespace {
+
+// Keeps the old version of each of `names` in DIR as a hard link in `keptDir`; true where there
+// was one. Throws std::runtime_error "...; nothing was replaced" for an old file that is a
+// directory or cannot be kept: publishing then stops before any file is replaced.
+std::vector<bool> KeepOldVersions(const fs::path& outDir, const std::vector<std::string>& names,
+                                  const fs::path& keptDir) {
     std::vector<bool> kept(names.size(), false);
     for (std::size_t i = 0; i < names.size(); ++i) {
-        const fs::path target = outDir_ / names[i];
-        std::error_code error;
-        const fs::file_status old = fs::symlink_status(target, error);
-        if (fs::is_directory(old))
+        const fs::path target = outDir / names[i];
+        struct stat st {};
+        if (::lstat(target.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
             throw std::runtime_error(target.string() + ": is a directory; nothing was replaced");
-        if (fs::exists(old)) kept[i] = ::link(target.c_str(), (keptDir / names[i]).c_str()) == 0;
+        if (::link(target.c_str(), (keptDir / names[i]).c_str()) == 0) {
+            kept[i] = true;
+        } else if (errno != ENOENT) {
+            throw std::runtime_error(target.string() +
+                                     ": cannot keep the old file to restore it if publishing "
+                                     "fails (" +
+                                     LinkRefusal(errno) + "); nothing was replaced");
+        }
     }
+    return kept;
+}
+
+}  // namespace
+
+void OutputSet::CommitFileByFile() {
+    const std::vector<std::string> names = StagedFiles(stagingDir_);
+    const fs::path keptDir = stagingDir_ / ".replaced";
+    if (::mkdir(keptDir.c_str(), 0700) != 0)
+        throw std::runtime_error(outDir_.string() + ": cannot stage the old versions (" +
+                                 ErrnoText(errno) + "); nothing was replaced");
+    const std::vector<bool> kept = KeepOldVersions(outDir_, names, keptDir);
     for (std::size_t i = 0; i < names.size(); ++i) {
         const fs::path target = outDir_ / names[i];
         if (::rename((stagingDir_ / names[i]).c_str(), target.c_str()) == 0) continue;
         const int reason = errno;
+        // Roll back: the old versions return, the new names go.
+        std::size_t unrestored = 0;
         for (std::size_t j = 0; j < i; ++j) {
             const fs::path moved = outDir_ / names[j];
-            if (kept[j])
-                ::rename((keptDir / names[j]).c_str(), moved.c_str());
-            else
+            if (!kept[j])
                 ::unlink(moved.c_str());
+            else if (::rename((keptDir / names[j]).c_str(), moved.c_str()) != 0)
+                ++unrestored;
+        }
+        std::string outcome = "no file was replaced";
+        if (unrestored > 0) {
+            // Keep the old versions out of every later run's cleanup.
+            std::string keptName = stagingDir_.filename().string();
+            keptName.replace(0, kStagingPrefix.size(), kKeptPrefix);
+            const fs::path keptAt = stagingDir_.parent_path() / keptName;
+            if (::rename(stagingDir_.c_str(), keptAt.c_str()) == 0) staging_->dir.clear();
+            outcome = std::to_string(unrestored) +
+                      " replaced files could not be restored; their old versions are in " +
+                      ((staging_->dir.empty() ? keptAt : stagingDir_) / ".replaced").string();
         }
         throw std::runtime_error(target.string() + ": cannot move into place (" +
-                                 ErrnoText(reason) + "); no file was replaced");
+                                 ErrnoText(reason) + "); " + outcome);
     }
-    committed_ = true;
+    staging_->committed = true;
     SyncPath(outDir_, true);
+}
+
+namespace {
+
+const char* SignalName(int signal) {
+    switch (signal) {
+        case SIGINT:
+            return "SIGINT";
+        case SIGTERM:
+            return "SIGTERM";
+        case SIGHUP:
+            return "SIGHUP";
+        default:
+            return "a signal";
+    }
+}
+
+// The signal thread's work: waits for one of `signals`, removes every staging directory (a
+// Commit in progress holds LiveMutex and finishes first; the lock is then kept, so no set is
+// published after) and ends the process.
+[[noreturn]] void StopOnSignal(sigset_t signals) {
+    int signal = 0;
+    while (::sigwait(&signals, &signal) != 0) {
+    }
+    LiveMutex().lock();  // never unlocked: the process ends here
+    bool discarded = false;
+    for (OutputSet::Staging* staging : LiveStagings()) {
+        discarded = discarded || (!staging->dir.empty() && !staging->committed);
+        staging->Discard();
+    }
+    std::string line = std::string(::isatty(STDERR_FILENO) ? "\n" : "") +
+                       "lexel: error: interrupted by " + SignalName(signal) +
+                       (discarded ? "; no --out file was written" : "") + "\n";
+    for (std::size_t at = 0; at < line.size();) {
+        const ::ssize_t written = ::write(STDERR_FILENO, line.data() + at, line.size() - at);
+        if (written <= 0) break;
+        at += static_cast<std::size_t>(written);
+    }
+    ::_exit(128 + signal);
+}
+
+}  // namespace
+
+void StopCleanlyOnSignals() {
+    sigset_t signals;
+    sigemptyset(&signals);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction current {};
+        if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler != SIG_IGN)
+            sigaddset(&signals, signal);
+    }
+    if (sigisemptyset(&signals) || ::pthread_sigmask(SIG_BLOCK, &signals, nullptr) != 0) return;
+    std::thread(StopOnSignal, signals).detach();
 }
 
 }  // namespace lexel::cases

@@ -1,49 +1,80 @@
 // Writing a command's --out files as one set: every file is written into a private staging
 // directory with checked writes, verified, flushed to disk, and only then moved into place, so a
-// run leaves all of its files or none of them (issue 16, "atomic output, really").
+// run leaves all of its files or none of them (issue 16, "atomic output, really"), never deletes
+// or damages a file it did not create, and leaves nothing behind when stopped by a signal
+// (issue 24, "never lose a file").
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
 
+// What a command writes into --out, declared before it computes anything: the case files it
+// reads (none of them may be replaced by an output) and the names of the files it writes.
+struct OutputPlan {
+    std::vector<std::filesystem::path> inputs;
+    std::function<bool(const std::string& fileName)> isOutput;  // a plain file name in DIR
+};
+
 // One run's output files for `--out DIR`. Made before anything is computed, so a DIR that cannot
-// take files is refused at once; the command then writes every file into StagingDir() (text
+// take the files is refused at once; the command then writes every file into StagingDir() (text
 // through WriteText, images by their writers at Staged(name)) and calls Commit() once all exist.
 //
+// Refused at construction (InputError "--out: <DIR>: <reason>", nothing created):
+//  - an empty DIR, a path component longer than 255 bytes or a path too long for its files, a
+//    symbolic link loop, a dangling link, a path through a regular file, DIR not a directory;
+//  - an output that would replace one of plan.inputs (directories and links resolved);
+//  - in an existing DIR: an output name that is a directory there, an old output whose version
+//    cannot be kept for a rollback (link(2) refused: another user's file under Linux's
+//    fs.protected_hardlinks, an immutable or append-only file), an old output in an append-only
+//    DIR (chattr +a: it cannot be replaced), a DIR whose files cannot be created;
+//  - a new DIR whose nearest existing parent is append-only (a failed run could not remove what
+//    it made there).
+//
 // Guarantees:
-//  - No two runs share a temporary name: each stages in its own directory (mkdtemp).
-//  - Commit() publishes nothing unless every staged file is complete: text files are written with
-//    checked write, fsync and close; PNG files must have the PNG signature and a chunk sequence
-//    from IHDR to IEND that fills the file exactly (a 0-byte or truncated image is refused).
+//  - No two runs share a temporary name: each stages in its own directory (mkdtemp), named
+//    `.lexel-staging-XXXXXX`, and holds an flock(2) on it for as long as it lives.
+//  - Staging directories that killed runs left where this run stages (inside an existing DIR,
+//    beside a new one) are removed first: those of this user that no live process holds locked.
+//  - Commit() publishes nothing unless every staged file is complete and declared: text files are
+//    written with checked write, fsync and close; PNG files must have the PNG signature and a
+//    chunk sequence from IHDR to IEND that fills the file exactly; every file's name must pass
+//    plan.isOutput (else std::logic_error: a command writing a file it did not declare).
 //  - DIR absent before the run: the set is staged beside it and renamed into place in one step,
 //    so DIR appears with all of its files or not at all.
-//  - DIR already present: each file replaces its old version by one rename, after all files are
-//    staged complete; a failed rename moves the already published ones back (their old versions
-//    were kept as hard links) or removes them. Readers may see a mix of old and new files while
-//    the renames run, and a crash in that window leaves such a mix.
+//  - DIR already present (or made by another run meanwhile): the old version of every file to be
+//    replaced is first kept as a hard link in the staging directory; if one cannot be kept,
+//    nothing is replaced. Then each file replaces its old version by one rename; a failed rename
+//    moves the published ones back (old versions restored, new names removed). Readers may see a
+//    mix of old and new files while the renames run (milliseconds).
+//  - SIGINT, SIGTERM, SIGHUP (with StopCleanlyOnSignals): the staging directory is removed; a
+//    Commit in progress finishes first, so a signal never leaves a mix of old and new files.
 //  - Destroyed without Commit() (an exception, a refused input): the staging directory and the
 //    directories made for DIR's parents are removed; nothing is left behind.
-// A process killed outright (SIGKILL, power loss) can leave its staging directory, named
-// `.lexel-staging-XXXXXX`, beside or inside DIR.
+// Only a process killed outright (SIGKILL, power loss) can leave its staging directory behind
+// (the next run into DIR removes it) and, if killed during the renames into an existing DIR, a
+// mix: the files renamed so far are new, the rest old, and the old versions of the replaced ones
+// stay in `DIR/.lexel-staging-XXXXXX/.replaced/` until that next run.
 class OutputSet {
   public:
-    // Throws InputError "--out: <DIR>: <reason>" when DIR is not a directory or no file can be
-    // created there (a path through a regular file, a read-only file system, no permission).
-    explicit OutputSet(const std::filesystem::path& outDir);
+    explicit OutputSet(const std::filesystem::path& outDir, OutputPlan plan);
     ~OutputSet();
     OutputSet(const OutputSet&) = delete;
     OutputSet& operator=(const OutputSet&) = delete;
 
     // Where the files are staged; a writer given a directory writes into this one.
     const std::filesystem::path& StagingDir() const { return stagingDir_; }
-    // The staged path of the output named `fileName` (a plain file name, no directories).
+    // The staged path of the output named `fileName` (a plain file name the plan declares;
+    // std::logic_error otherwise).
     std::filesystem::path Staged(const std::string& fileName) const;
     // Writes `content` as the staged file `fileName`: every write checked, then fsync and close.
     // Throws std::runtime_error "<DIR>/<fileName>: <reason>".
@@ -69,18 +100,29 @@ class OutputSet {
 
     const std::filesystem::path& OutDir() const { return outDir_; }
 
+    struct Staging;  // the staging directory as the signal thread sees it (output.cpp)
+
   private:
     [[noreturn]] void ThrowWithFinalNames(const std::string& message) const;
+    void CheckExistingOutputs(bool appendOnly) const;
+    void ProbeBackups() const;
     void VerifyAndSync() const;
     void CommitWholeDirectory();
     void CommitFileByFile();
 
     std::filesystem::path outDir_;      // as given, without a trailing '/'
-    std::filesystem::path stagingDir_;  // inside outDir_, or beside it when it did not exist
-    std::filesystem::path createdTop_;  // the topmost parent directory this run created, if any
-    bool wholeDirectory_ = false;       // outDir_ did not exist: stagingDir_ becomes it
-    bool committed_ = false;
+    std::filesystem::path stagingDir_;  // inside outDir_, or beside it (new or append-only DIR)
+    OutputPlan plan_;
+    bool wholeDirectory_ = false;  // outDir_ did not exist: stagingDir_ becomes it
+    std::unique_ptr<Staging> staging_;
     std::map<std::string, std::uintmax_t> textSizes_;  // WriteText's files and their sizes
 };
+
+// Makes SIGINT, SIGTERM and SIGHUP (each unless ignored when the process started, as under nohup)
+// stop the process cleanly: a thread of its own takes them, waits for a Commit in progress,
+// removes every live OutputSet's staging directory, prints one line "lexel: error: interrupted by
+// SIGTERM ..." and exits with status 128 + the signal's number. Call once, first thing in main,
+// before any other thread starts: the signals are blocked in every thread made after it.
+void StopCleanlyOnSignals();
 
 }  // namespace lexel::cases

@@ -67,7 +67,7 @@ struct Digits {
     std::uint32_t wrapped = 0;
     double value = 0;
 };
-Digits ReadDigits(const std::string& text, std::size_t& at) {
+Digits ReadDigits(std::string_view text, std::size_t& at) {
     Digits digits;
     for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) {
         digits.wrapped = 10 * digits.wrapped + static_cast<std::uint32_t>(text[at] - '0');
@@ -78,7 +78,7 @@ Digits ReadDigits(const std::string& text, std::size_t& at) {
 
 // OFFLoader.cpp's NextToken (Assimp 5.2): blanks and line ends, then any '#' comment lines.
 // `text` ends with the '\0' Assimp appends, which stops every loop.
-void OffNextToken(const std::string& text, std::size_t& at) {
+void OffNextToken(std::string_view text, std::size_t& at) {
     const auto skipBlanks = [&] {
         while (text[at] == ' ' || text[at] == '\t' || text[at] == '\r' || text[at] == '\n') ++at;
     };
@@ -93,11 +93,12 @@ void OffNextToken(const std::string& text, std::size_t& at) {
 // statement (OFFLoader.cpp, InternReadFile): the optional prefixes ST, C, N, 4 and n glued to
 // "OFF", which the counts may follow without a blank ("OFF8 ..." declares 8 vertices); "n" puts
 // a dimension before the counts. Empty where Assimp refuses the header before allocating.
+// `text` ends with the '\0' TextFileToBuffer appends; `end` is one past it.
 struct OffCounts {
     Digits vertices, faces;
+    std::size_t bodyAt = 0;  // where the vertex lines begin (after the edge count)
 };
-std::optional<OffCounts> AssimpOffCounts(std::string text) {
-    text.push_back('\0');  // TextFileToBuffer's terminator; `end` is one past it
+std::optional<OffCounts> AssimpOffCounts(std::string_view text) {
     const std::size_t end = text.size();
     std::size_t at = 0;
     const auto before = [&](std::size_t n) { return at + n < end; };  // Assimp's car < end - n
@@ -124,9 +125,84 @@ std::optional<OffCounts> AssimpOffCounts(std::string text) {
     counts.vertices = ReadDigits(text, at);
     OffNextToken(text, at);
     counts.faces = ReadDigits(text, at);
+    OffNextToken(text, at);
+    ReadDigits(text, at);  // the edge count, unused
+    OffNextToken(text, at);
+    counts.bodyAt = std::min(at, text.size() - 1);
     // Assimp refuses a count of 0; one that wraps to 0 is still checked, with the count written.
     if (counts.vertices.value == 0 || counts.faces.value == 0) return std::nullopt;
     return counts;
+}
+
+// Line ends as Assimp's IsLineEnd has them.
+bool IsOffLineEnd(char c) { return c == '\r' || c == '\n' || c == '\f' || c == '\0'; }
+
+// Assimp 5.2's GetNextLine: the line at `at` (empty at the text's '\0': no line), `at` moved past
+// it and past every line end after it, so blank lines are skipped.
+std::optional<std::string_view> OffNextLine(std::string_view text, std::size_t& at) {
+    if (at >= text.size() || text[at] == '\0') return std::nullopt;
+    const std::size_t begin = at;
+    while (!IsOffLineEnd(text[at])) ++at;
+    const std::string_view line = text.substr(begin, at - begin);
+    while (at < text.size() && IsOffLineEnd(text[at]) && text[at] != '\0') ++at;
+    return line;
+}
+
+// The 1-based line number of byte `at`.
+std::size_t LineNumber(std::string_view text, std::size_t at) {
+    return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + at, '\n'));
+}
+
+// Assimp 5.2 reads each OFF face's indices with strtoul10 and clamps one past the vertices to
+// the last vertex, so "-1" (no digits: 0) and "7" of 4 vertices (clamped to 3) make wrong
+// triangles in silence. A line whose count is 0 or more than 9 (a comment among the faces, say)
+// it drops without counting it, one face fewer each time, so the faces after it are lost or, past
+// the declared count, read beyond the face array. Follows the reader line by line (vertex lines,
+// then face lines until the declared faces are read) and refuses the first such line or index.
+void CheckOffFaces(const std::filesystem::path& path, std::string_view text,
+                   const OffCounts& counts) {
+    std::size_t at = counts.bodyAt;
+    for (double v = 0; v < counts.vertices.value; ++v)
+        if (!OffNextLine(text, at)) return;  // Assimp reports the missing lines
+    for (std::size_t face = 0; face < static_cast<std::size_t>(counts.faces.value); ++face) {
+        const std::size_t lineAt = at;
+        const std::optional<std::string_view> line = OffNextLine(text, at);
+        if (!line) return;  // too few faces: their empty slots are refused after reading
+        std::string body(*line);
+        body.push_back('\0');
+        std::size_t p = 0;
+        const auto skipSpaces = [&] {
+            while (body[p] == ' ' || body[p] == '\t') ++p;
+        };
+        skipSpaces();
+        const std::string where = "face " + std::to_string(face) + " (line " +
+                                  std::to_string(LineNumber(text, lineAt)) + ")";
+        const Digits corners = ReadDigits(body, p);
+        if (corners.wrapped == 0 || corners.wrapped > 9)
+            Refuse(path, where +
+                             ": not a face of 1 to 9 vertices (Assimp 5.2 drops such a line "
+                             "and miscounts the faces after it)");
+        for (std::uint32_t m = 0; m < corners.wrapped; ++m) {
+            skipSpaces();
+            const std::size_t tokenAt = p;
+            const Digits index = ReadDigits(body, p);
+            if (p == tokenAt) {
+                const char next = body[p];
+                if (next == '\0' || next == '#')
+                    Refuse(path, where + " lists " + std::to_string(m) + " of its " +
+                                     std::to_string(corners.wrapped) + " vertex indices");
+                Refuse(path, where + ": vertex index " + std::to_string(m) + " is " +
+                                 (next == '-' ? std::string("negative")
+                                              : "not a number ('" + std::string(1, next) + "')") +
+                                 "; OFF indices count vertices from 0");
+            }
+            if (index.value >= counts.vertices.value)
+                Refuse(path, where + ": vertex index " + std::to_string(m) + " is " +
+                                 CountText(index.value) + ", past the file's " +
+                                 CountText(counts.vertices.value) + " vertices (0 to " +
+                                 CountText(counts.vertices.value - 1) + ")");
+        }
+    }
 }
 
 // The longest run of bytes between Assimp's line ends ('\r', '\n', '\f', '\0').
@@ -145,11 +221,13 @@ void CheckOff(const std::filesystem::path& path, std::string text, std::uintmax_
                          " bytes; Assimp 5.2 reads OFF lines of at most " +
                          std::to_string(kOffLineBufferBytes - 1));
     if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // TextFileToBuffer drops it too
-    const std::optional<OffCounts> counts = AssimpOffCounts(std::move(text));
+    text.push_back('\0');                                    // TextFileToBuffer's terminator
+    const std::optional<OffCounts> counts = AssimpOffCounts(text);
     if (!counts) return;  // Assimp reports the header's error
     const double vertices = counts->vertices.value, faces = counts->faces.value;
     CheckDeclared(path, (vertices + faces) * kMinLineBytes, size,
                   CountText(vertices) + " vertices and " + CountText(faces) + " faces");
+    CheckOffFaces(path, text, *counts);
 }
 
 // Binary STL: an 80-byte header, a 32-bit facet count, 50 bytes a facet. An ASCII STL ("solid"
@@ -181,11 +259,39 @@ bool StartsWithUtf16Or32Mark(std::string_view head) {
            head.starts_with("\0\0\xFE\xFF"sv);
 }
 
+// What the path names when it is not a regular file ("a directory", ...), or empty. Nothing is
+// opened: opening a FIFO blocks until a writer comes, and opening a device can act on it.
+std::string NotRegularFile(const std::filesystem::path& path) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    switch (status.type()) {
+        case fs::file_type::regular:
+            return {};
+        case fs::file_type::directory:
+            return "is a directory, not a mesh file";
+        case fs::file_type::fifo:
+            return "is a FIFO (named pipe), not a mesh file";
+        case fs::file_type::character:
+            return "is a character device, not a mesh file";
+        case fs::file_type::block:
+            return "is a block device, not a mesh file";
+        case fs::file_type::socket:
+            return "is a socket, not a mesh file";
+        case fs::file_type::not_found:
+            if (fs::is_symlink(fs::symlink_status(path, error)))
+                return "is a dangling symbolic link (mesh file not found)";
+            return "mesh file not found";
+        default:
+            return "cannot be examined (" + error.message() + ")";
+    }
+}
+
 }  // namespace
 
 void CheckMeshFile(const std::filesystem::path& path) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) Refuse(path, "mesh file not found");
+    if (const std::string problem = NotRegularFile(path); !problem.empty()) Refuse(path, problem);
     const std::uintmax_t size = std::filesystem::file_size(path, error);
     if (error) Refuse(path, "cannot read the mesh file's size");
     if (size > kMaxMeshFileBytes)

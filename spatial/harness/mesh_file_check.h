@@ -22,10 +22,13 @@ inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{64} << 20;
 inline constexpr const char* kMeshFormats = "obj, off, stl";
 
 // Throws DomainError (Subject::kGeometry) naming the file and the reason when it is not a regular
-// file, is larger than kMaxMeshFileBytes, has an extension outside kMeshFormats, starts with a
-// UTF-16 or UTF-32 byte order mark, declares more vertices, faces or facets than its size can hold
-// (the counts read where Assimp 5.2 reads them), or is an OFF file with a line of 4096 bytes or
-// more (Assimp's line buffer). Assimp picks its reader by the extension, so the checks do too.
+// file (saying what it is: missing, a directory, a FIFO, a device, a socket; nothing is opened to
+// find out), is larger than kMaxMeshFileBytes, has an extension outside kMeshFormats, starts with
+// a UTF-16 or UTF-32 byte order mark, declares more vertices, faces or facets than its size can
+// hold (the counts read where Assimp 5.2 reads them), or is an OFF file with a line of 4096 bytes
+// or more (Assimp's line buffer) or a face whose vertex index is negative, missing or past the
+// vertices (Assimp 5.2 reads "-1" as 0 and clamps a large index to the last vertex; the face and
+// its line are named). Assimp picks its reader by the extension, so the checks do too.
 void CheckMeshFile(const std::filesystem::path& path);
 
 }  // namespace lexel::spatial

@@ -2,16 +2,23 @@
 // never create, so its NullLogger keeps stdout and stderr clean.
 #include "lexel/spatial/harness/mesh_loader.h"
 
+#include <assimp/DefaultIOStream.h>
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <new>
 #include <string>
+#include <string_view>
 
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/allocation_cap.h"
@@ -27,6 +34,71 @@ std::string OneLine(std::string text) {
     while (!text.empty() && text.back() == ' ') text.pop_back();
     return text.empty() ? std::string("unknown error") : text;
 }
+
+// What a file type is, for a file that is not regular.
+std::string FileKind(::mode_t mode) {
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a regular file";
+}
+
+// An open regular file as Assimp reads it (DefaultIOStream's constructor is protected).
+class RegularFileStream : public Assimp::DefaultIOStream {
+  public:
+    RegularFileStream(FILE* file, const std::string& name) : DefaultIOStream(file, name) {}
+};
+
+// The files Assimp opens for a mesh — the mesh file and those it names, such as an OBJ's mtllib
+// or the <model>.mtl it falls back on — pass through this, and only regular files are opened,
+// for reading: a FIFO would block Assimp's fopen until a writer came (an OBJ whose mtllib named
+// one hung for ever), and opening a device can act on it. Each path is examined with stat before
+// it is opened, and the opened file again with fstat (it may have been replaced meanwhile); the
+// first refused path is kept for the error message.
+class RegularFileSystem : public Assimp::DefaultIOSystem {
+  public:
+    bool Exists(const char* file) const override { return IsRegular(file); }
+
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        if (std::string_view(mode).find_first_of("wa+") != std::string_view::npos) return nullptr;
+        if (!IsRegular(file)) return nullptr;
+        const int fd = ::open(file, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+        if (fd < 0) return nullptr;
+        struct stat st {};
+        if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) ||
+            ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK) != 0) {
+            Refuse(file, st.st_mode);
+            ::close(fd);
+            return nullptr;
+        }
+        FILE* stream = ::fdopen(fd, "rb");
+        if (stream == nullptr) {
+            ::close(fd);
+            return nullptr;
+        }
+        return new RegularFileStream(stream, file);
+    }
+
+    // "<path>, a FIFO (named pipe)" for the first path refused, or empty.
+    const std::string& Refused() const { return refused_; }
+
+  private:
+    // False for a missing path and (kept in refused_) for one that is not a regular file.
+    bool IsRegular(const char* file) const {
+        struct stat st {};
+        if (::stat(file, &st) != 0) return false;
+        if (S_ISREG(st.st_mode)) return true;
+        Refuse(file, st.st_mode);
+        return false;
+    }
+    void Refuse(const char* file, ::mode_t mode) const {
+        if (refused_.empty()) refused_ = std::string(file) + ", " + FileKind(mode);
+    }
+
+    mutable std::string refused_;
+};
 
 // What Assimp's post-processing would trip over in an importer's scene, or empty: more vertices
 // and faces than the file has bytes (each takes at least one), a face without indices, an index
@@ -72,6 +144,8 @@ constexpr std::uintmax_t kReadBaseBytes = std::uintmax_t{64} << 20, kReadBytesPe
 // instead of gigabytes. Throws DomainError.
 const aiScene* ReadScene(Assimp::Importer& importer, const std::filesystem::path& path) {
     const std::string name = path.string();
+    auto* files = new RegularFileSystem;  // the importer owns and deletes it
+    importer.SetIOHandler(files);
     const std::uintmax_t fileBytes = std::filesystem::file_size(path);
     const std::uintmax_t capBytes = kReadBaseBytes + kReadBytesPerFileByte * fileBytes;
     const aiScene* scene = nullptr;
@@ -96,6 +170,10 @@ const aiScene* ReadScene(Assimp::Importer& importer, const std::filesystem::path
         }
         refused = cap.Refused();
     }
+    if (!files->Refused().empty())
+        throw DomainError(Subject::kGeometry, name + ": cannot read mesh: reading it would open " +
+                                                  files->Refused() +
+                                                  "; only regular files are read");
     if (refused)
         throw DomainError(Subject::kGeometry,
                           name + ": cannot read mesh: reading it needs more than " +

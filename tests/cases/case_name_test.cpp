@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/spatial_case.h"
@@ -93,6 +95,28 @@ TEST(CaseName, TheFileStemFallbackObeysTheSameRule) {
                   "/name: absent, and the file's stem is not a safe file stem: contains the "
                   "control character U+0009");
     }
+}
+
+// Issue 24: a file stem of Latin-1 bytes ("caf\xE9") without /name passed, and the JSON report
+// then failed after computing with nlohmann's "[json.exception.type_error.316]" (exit 1). Names
+// must be UTF-8 (a /name string always is: the JSON parser checks it).
+TEST(CaseName, RefusesNamesThatAreNotUtf8) {
+    EXPECT_EQ(CaseNameProblem("caf\xC3\xA9"), std::nullopt);                    // é
+    EXPECT_EQ(CaseNameProblem("\xE2\x82\xAC \xF0\x9F\x98\x80"), std::nullopt);  // € and U+1F600
+    const std::pair<std::string, std::string> refused[] = {
+        {"caf\xE9", "byte 0xE9 at offset 3"},           // Latin-1 é: a lead byte without its tail
+        {"a\xC3", "byte 0xC3 at offset 1"},             // cut short
+        {"\xC0\xAF", "byte 0xC0 at offset 0"},          // overlong '/'
+        {"\xED\xA0\x80", "byte 0xED at offset 0"},      // a surrogate, U+D800
+        {"\xF4\x90\x80\x80", "byte 0xF4 at offset 0"},  // past U+10FFFF
+        {"ok\x80", "byte 0x80 at offset 2"},            // a lone continuation byte
+    };
+    for (const auto& [name, where] : refused)
+        EXPECT_EQ(CaseNameProblem(name), "not a safe file stem: not UTF-8 (" + where + ")");
+    for (auto* error : {&FlatError, &SpatialError})
+        EXPECT_EQ((*error)(std::nullopt, "caf\xE9"),
+                  "/name: absent, and the file's stem is not a safe file stem: not UTF-8 (byte "
+                  "0xE9 at offset 3)");
 }
 
 }  // namespace

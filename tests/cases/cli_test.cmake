@@ -589,13 +589,13 @@ foreach(f storage.json storage.csv fig5_6_warp.png fig7_hemisphere_no_warp.png
     endif()
 endforeach()
 # Bad flags: one line naming the flag, exit 2, nothing written.
-expect_run(2 "^$" "^lexel: error: --far: must be finite and > --near \\(1\\), got 0.5\n$"
+expect_run(2 "^$" "^lexel: error: --far: must be 1\\.000001 to 1e\\+06 times --near \\(1\\), got 0\\.5 \\(0\\.5 times\\)\n$"
            storage --far 0.5 --out "${WORK}/storage_bad")
-expect_run(2 "^$" "^lexel: error: --fov-y: must be in \\(0, 180\\) degrees, got 180\n$"
+expect_run(2 "^$" "^lexel: error: --fov-y: must be in \\[0\\.1, 179\\] degrees, got 180\n$"
            storage --fov-y 180 --out "${WORK}/storage_bad")
-expect_run(2 "^$" "^lexel: error: --aspect: must be finite and > 0, got 0\n$"
+expect_run(2 "^$" "^lexel: error: --aspect: must be in \\[0\\.01, 100\\], got 0\n$"
            storage --aspect 0 --out "${WORK}/storage_bad")
-expect_run(2 "^$" "^lexel: error: --near: must be finite and > 0, got -1\n$"
+expect_run(2 "^$" "^lexel: error: --near: must be in \\[1e-06, 1e\\+09\\], got -1\n$"
            storage --near -1 --out "${WORK}/storage_bad")
 expect_run(2 "^$" "" storage --format xml --out "${WORK}/storage_bad")
 expect_run(2 "^$" "--far excludes --case" storage --case "${small}" --far 10)

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string>
 
 #include "lexel/solvers/errors.h"
 
@@ -26,6 +27,18 @@ TEST(JsonReader, ParseErrorsNameLineAndColumn) {
     const std::string text = "{\n  \"a\": 1,\n  \"b\": [1, 2,,]\n}";
     const std::string message = ErrorOf([&] { ParseJsonText(text, "case.json"); });
     EXPECT_EQ(message.rfind("case.json:3:14: invalid JSON: ", 0), 0u) << message;
+}
+
+// Issue 24: nlohmann's lexer ends the input at a NUL byte, so `{...}\0 garbage` was read as
+// `{...}`. A NUL anywhere is refused with its line and column.
+TEST(JsonReader, NulBytesAreRefused) {
+    using namespace std::string_literals;
+    EXPECT_EQ(ErrorOf([] { ParseJsonText("{\"a\": 1}\0 garbage"s, "case.json"); }),
+              "case.json:1:9: invalid JSON: a NUL byte (a case file is text)");
+    EXPECT_EQ(ErrorOf([] { ParseJsonText("{\n  \"a\": \"x\0y\"\n}"s, "case.json"); }),
+              "case.json:2:10: invalid JSON: a NUL byte (a case file is text)");
+    EXPECT_EQ(ErrorOf([] { ParseJsonText("\0"s, "case.json"); }),
+              "case.json:1:1: invalid JSON: a NUL byte (a case file is text)");
 }
 
 TEST(JsonReader, DuplicateKeysAreNamedByTheirPointer) {

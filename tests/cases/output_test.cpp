@@ -3,11 +3,16 @@
 // full disk fails it with ENOSPC, also for root (mode bits do not stop root's writes).
 #include "lexel/cases/report/output.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <linux/fs.h>
 #include <signal.h>
 #include <stdlib.h>
+#include <sys/ioctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <fstream>
@@ -15,6 +20,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "lexel/cases/report/figures.h"
@@ -40,13 +46,18 @@ class OutputSetTest : public ::testing::Test {
     std::vector<std::string> Entries() const {
         std::vector<std::string> names;
         for (const auto& e : fs::recursive_directory_iterator(base))
-            names.push_back(fs::relative(e.path(), base).string());
+            names.push_back(e.path().lexically_relative(base).string());
         std::sort(names.begin(), names.end());
         return names;
     }
 
     fs::path base;
 };
+
+// A plan that declares every file name and no input.
+OutputPlan AnyName() {
+    return {{}, [](const std::string&) { return true; }};
+}
 
 std::string ReadAll(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -81,11 +92,13 @@ class FileSizeLimit {
 TEST_F(OutputSetTest, NewDirectoryAppearsWholeAtCommit) {
     const fs::path outDir = base / "a" / "b" / "out";
     {
-        OutputSet out(outDir.string() + "/");  // a trailing '/' names the same directory
+        OutputSet out(outDir.string() + "/", AnyName());  // a trailing '/' names the same directory
         out.WriteText("report.json", "{}\n");
         out.WriteText("report.csv", "x,y\n1,2\n");
         EXPECT_FALSE(fs::exists(outDir));  // nothing is visible before Commit
         out.Commit();
+        // DIR is not left locked by the staging directory it was: a next set stages in it.
+        OutputSet next(outDir, AnyName());
     }
     EXPECT_EQ(ReadAll(outDir / "report.json"), "{}\n");
     EXPECT_EQ(ReadAll(outDir / "report.csv"), "x,y\n1,2\n");
@@ -99,14 +112,14 @@ TEST_F(OutputSetTest, NewDirectoryAppearsWholeAtCommit) {
 
 TEST_F(OutputSetTest, WithoutCommitNothingIsLeft) {
     {
-        OutputSet out(base / "made" / "for" / "out");
+        OutputSet out(base / "made" / "for" / "out", AnyName());
         out.WriteText("report.md", "# report\n");
         EXPECT_EQ(Entries().size(), 4u);  // made, made/for, the staging dir, its file
     }
     EXPECT_TRUE(Entries().empty());  // the directories made for --out are gone too
     fs::create_directory(base / "existing");
     {
-        OutputSet out(base / "existing");
+        OutputSet out(base / "existing", AnyName());
         out.WriteText("report.md", "# report\n");
     }
     EXPECT_EQ(Entries(), std::vector<std::string>{"existing"});
@@ -117,7 +130,7 @@ TEST_F(OutputSetTest, ExistingDirectoryKeepsOtherFilesAndReplacesItsOwn) {
     WriteAll(base / "out" / "other.txt", "other");
     WriteAll(base / "out" / "report.csv", "old");
     {
-        OutputSet out(base / "out");
+        OutputSet out(base / "out", AnyName());
         out.WriteText("report.csv", "new");
         out.WriteText("report.md", "# new");
         out.Commit();
@@ -131,14 +144,14 @@ TEST_F(OutputSetTest, ExistingDirectoryKeepsOtherFilesAndReplacesItsOwn) {
 TEST_F(OutputSetTest, OutThatCannotHoldFilesIsBadInput) {
     WriteAll(base / "file", "x");
     try {
-        OutputSet out(base / "file");
+        OutputSet out(base / "file", AnyName());
         FAIL() << "a regular file accepted as --out";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
                   "--out: " + (base / "file").string() + ": not a directory");
     }
     try {
-        OutputSet out(base / "file" / "sub" / "out");
+        OutputSet out(base / "file" / "sub" / "out", AnyName());
         FAIL() << "a path through a regular file accepted as --out";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()), "--out: " + (base / "file/sub/out").string() +
@@ -156,7 +169,7 @@ TEST_F(OutputSetTest, FailedTextWritePublishesNothing) {
     const std::string big(64 * 1024, 'x');
     for (const fs::path& outDir : {base / "new", base / "old"}) {
         try {
-            OutputSet out(outDir);
+            OutputSet out(outDir, AnyName());
             const FileSizeLimit limit(4096);
             out.WriteText("report.csv", "small");
             out.WriteText("report.md", big);
@@ -184,7 +197,7 @@ TEST_F(OutputSetTest, FailedImageWritePublishesNothing) {
     curves[0].extraPercent = {4, 3, 2, 1};
     for (const std::string name : {"image.png", "plot.png"}) {
         try {
-            OutputSet out(base / "out");
+            OutputSet out(base / "out", AnyName());
             const FileSizeLimit limit(2000);
             out.Writing([&] {
                 if (name == "image.png")
@@ -209,7 +222,7 @@ TEST_F(OutputSetTest, IncompletePngIsRefusedAtCommit) {
         SCOPED_TRACE(damage);
         const fs::path outDir = base / damage;
         try {
-            OutputSet out(outDir);
+            OutputSet out(outDir, AnyName());
             const fs::path png = out.Staged("image.png");
             spatial::WriteImage(png.string(), image);
             const std::uintmax_t size = fs::file_size(png);
@@ -241,7 +254,7 @@ TEST_F(OutputSetTest, ConcurrentSetsDoNotCollide) {
         for (int r = 0; r < kRuns; ++r)
             runs.emplace_back([&, r] {
                 try {
-                    OutputSet out(outDir);
+                    OutputSet out(outDir, AnyName());
                     out.WriteText("report.csv", "run " + std::to_string(r) + "\n");
                     out.WriteText("report.md", "run " + std::to_string(r) + "\n");
                     out.Commit();
@@ -262,15 +275,24 @@ TEST_F(OutputSetTest, ConcurrentSetsDoNotCollide) {
     EXPECT_EQ(Entries().size(), 6u);
 }
 
-// A file that cannot be replaced (a directory of that name) stops the commit before any file of
-// the set is moved.
-TEST_F(OutputSetTest, CommitReplacesNoFileWhenOneCannotBeReplaced) {
+// An output named like a directory in DIR: refused before anything is computed (bad input), and,
+// when the directory appears only after that, at Commit before any file of the set is moved.
+TEST_F(OutputSetTest, OutputNamedLikeADirectoryReplacesNothing) {
     fs::create_directories(base / "out" / "b.csv");
     WriteAll(base / "out" / "a.csv", "old a");
     try {
-        OutputSet out(base / "out");
+        OutputSet out(base / "out", AnyName());
+        FAIL() << "an output named like a directory was accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "--out: " + (base / "out" / "b.csv").string() +
+                                             ": is a directory, and an output file has its name");
+    }
+    fs::remove(base / "out" / "b.csv");
+    try {
+        OutputSet out(base / "out", AnyName());
         out.WriteText("a.csv", "new a");
         out.WriteText("b.csv", "new b");
+        fs::create_directories(base / "out" / "b.csv");
         out.Commit();
         FAIL() << "a directory was replaced by a file";
     } catch (const std::runtime_error& e) {
@@ -279,6 +301,297 @@ TEST_F(OutputSetTest, CommitReplacesNoFileWhenOneCannotBeReplaced) {
     }
     EXPECT_EQ(ReadAll(base / "out" / "a.csv"), "old a");
     EXPECT_EQ(Entries(), (std::vector<std::string>{"out", "out/a.csv", "out/b.csv"}));
+}
+
+// Issue 24: every --out that cannot be a directory is refused before anything is computed, with
+// its reason (before, a symlink loop, a dangling link and a 300-byte name were found only by the
+// final rename, exit 1 after computing, and an empty --out was ignored).
+TEST_F(OutputSetTest, OutPathsThatCannotBeDirectoriesAreBadInput) {
+    fs::create_symlink("loop", base / "loop");
+    fs::create_symlink(base / "missing" / "target", base / "dangling");
+    const std::string longName(300, 'n');
+    std::string deep = base.string();
+    while (deep.size() < 4000) deep += "/" + std::string(200, 'd');
+    const std::vector<std::pair<fs::path, std::string>> refused = {
+        {"", "--out: must name a directory, got an empty string"},
+        {base / "loop", "--out: " + (base / "loop").string() + ": a symbolic link loop"},
+        {base / "loop" / "sub",
+         "--out: " + (base / "loop/sub").string() + ": a symbolic link loop on the way"},
+        {base / "dangling", "--out: " + (base / "dangling").string() +
+                                ": a dangling symbolic link (to " +
+                                (base / "missing" / "target").string() + ", which does not exist)"},
+        {base / longName, "--out: " + (base / longName).string() +
+                              ": a path component is 300 bytes; a file name has at most 255"},
+        {deep, "--out: " + deep + ": the path is " + std::to_string(deep.size()) +
+                   " bytes; with its files' names it would pass the 4095 bytes a path may have"},
+    };
+    for (const auto& [outDir, message] : refused) {
+        try {
+            OutputSet out(outDir, AnyName());
+            ADD_FAILURE() << outDir << " accepted";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), message);
+        }
+    }
+    EXPECT_EQ(Entries(), (std::vector<std::string>{"dangling", "loop"}));
+}
+
+// The plan names the files a command writes: a file outside it is a programming error, refused
+// when it is staged by name and, when a writer put it in the staging directory itself, at Commit
+// with nothing published.
+TEST_F(OutputSetTest, UndeclaredOutputIsRefused) {
+    const OutputPlan csvOnly{{}, [](const std::string& file) { return file.ends_with(".csv"); }};
+    {
+        OutputSet out(base / "out", csvOnly);
+        out.WriteText("a.csv", "a");
+        EXPECT_THROW(out.WriteText("a.json", "{}"), std::logic_error);
+        WriteAll(out.StagingDir() / "b.png", "not declared");
+        EXPECT_THROW(out.Commit(), std::logic_error);
+    }
+    EXPECT_TRUE(Entries().empty());
+}
+
+// The overwrite guard is the OutputSet's, so every command that reads a case has it (before, each
+// command called it and `storage --case DIR/storage_x.json --out DIR` did not: it replaced its
+// case file with its output). Through a directory link too.
+TEST_F(OutputSetTest, OutputReplacingAnInputIsRefused) {
+    fs::create_directory(base / "cases");
+    WriteAll(base / "cases" / "storage_x.json", "{\"name\": \"x\"}");
+    fs::create_directory_symlink(base / "cases", base / "link");
+    const OutputPlan plan{{base / "cases" / "storage_x.json"}, [](const std::string& file) {
+                              return file == "storage_x.json" || file == "storage_x.csv";
+                          }};
+    for (const fs::path& outDir : {base / "cases", base / "link"}) {
+        try {
+            OutputSet out(outDir, plan);
+            ADD_FAILURE() << outDir << ": an output replacing the case was accepted";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), "--out: writing " +
+                                                 (outDir / "storage_x.json").string() +
+                                                 " would overwrite the case file " +
+                                                 (base / "cases" / "storage_x.json").string());
+        }
+    }
+    EXPECT_EQ(ReadAll(base / "cases" / "storage_x.json"), "{\"name\": \"x\"}");
+    EXPECT_EQ(Entries(), (std::vector<std::string>{"cases", "cases/storage_x.json", "link"}));
+}
+
+// Issue 24: a later run removes what killed runs left — its own prefix, this user's directories,
+// none that a live run holds — and nothing else.
+TEST_F(OutputSetTest, DebrisOfKilledRunsIsRemovedButNoLiveStaging) {
+    const fs::path outDir = base / "out";
+    fs::create_directories(outDir / ".lexel-staging-dead1" / ".replaced");
+    WriteAll(outDir / ".lexel-staging-dead1" / "report.csv", "debris");
+    fs::create_directories(outDir / ".lexel-staging-dead2");
+    fs::create_directories(base / "elsewhere");
+    WriteAll(base / "elsewhere" / "keep.txt", "keep");
+    fs::create_directory_symlink(base / "elsewhere", outDir / ".lexel-staging-link");
+    fs::create_directories(outDir / ".lexel-staging-theirs");
+    const bool root = ::geteuid() == 0;
+    if (root) {
+        ASSERT_EQ(::chown((outDir / ".lexel-staging-theirs").c_str(), 65534, 65534), 0);
+    }
+    fs::create_directories(outDir / ".lexel-other");
+    fs::create_directories(base / ".lexel-staging-beside");  // beside a new DIR
+    const OutputPlan csv{{}, [](const std::string& file) { return file == "report.csv"; }};
+    OutputSet live(outDir, csv);
+    const std::string liveName = live.StagingDir().filename().string();
+    {
+        OutputSet later(outDir, csv);
+        OutputSet beside(base / "new", csv);
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(outDir))
+            names.push_back(e.path().filename().string());
+        std::sort(names.begin(), names.end());
+        std::vector<std::string> expected = {".lexel-other", ".lexel-staging-link",
+                                             later.StagingDir().filename().string(), liveName};
+        if (root) expected.push_back(".lexel-staging-theirs");
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(names, expected);
+        EXPECT_FALSE(fs::exists(base / ".lexel-staging-beside"));
+        EXPECT_TRUE(fs::exists(beside.StagingDir()));
+    }
+    EXPECT_EQ(ReadAll(base / "elsewhere" / "keep.txt"), "keep");
+    EXPECT_TRUE(fs::exists(live.StagingDir()));
+    // An --out named through a directory link is cleaned the same.
+    fs::create_directories(outDir / ".lexel-staging-dead3");
+    fs::create_directory_symlink(outDir, base / "outlink");
+    {
+        OutputSet throughLink(base / "outlink", csv);
+        EXPECT_FALSE(fs::exists(outDir / ".lexel-staging-dead3"));
+    }
+}
+
+// The inode attributes of chattr(1), set through FS_IOC_SETFLAGS; false where the file system or
+// the user cannot (then the tests that need them skip).
+bool SetAttribute(const fs::path& path, int flag, bool on) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return false;
+    int flags = 0;
+    bool done = ::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0;
+    flags = on ? (flags | flag) : (flags & ~flag);
+    done = done && ::ioctl(fd, FS_IOC_SETFLAGS, &flags) == 0;
+    ::close(fd);
+    return done;
+}
+
+// Clears an attribute again when the test ends (the fixture could not remove the file).
+class AttributeGuard {
+  public:
+    AttributeGuard(fs::path path, int flag) : path_(std::move(path)), flag_(flag) {
+        set_ = SetAttribute(path_, flag_, true);
+    }
+    ~AttributeGuard() {
+        if (set_) SetAttribute(path_, flag_, false);
+    }
+    bool Set() const { return set_; }
+
+  private:
+    fs::path path_;
+    int flag_;
+    bool set_ = false;
+};
+
+// Issue 24: an append-only --out (chattr +a) takes new files, and the staging directory, made
+// beside it, goes (before, one was left inside after every successful run); an old output there
+// cannot be replaced, so it is refused before anything is computed.
+TEST_F(OutputSetTest, AppendOnlyDirectoryKeepsNoStaging) {
+    const fs::path outDir = base / "out";
+    fs::create_directory(outDir);
+    WriteAll(outDir / "other.txt", "other");
+    const AttributeGuard appendOnly(outDir, FS_APPEND_FL);
+    if (!appendOnly.Set()) GTEST_SKIP() << "chattr +a is not available here";
+    const OutputPlan report{{}, [](const std::string& file) { return file == "report.csv"; }};
+    {
+        OutputSet out(outDir, report);
+        EXPECT_EQ(out.StagingDir().parent_path(), base);
+        out.WriteText("report.csv", "new");
+        out.Commit();
+    }
+    EXPECT_EQ(Entries(), (std::vector<std::string>{"out", "out/other.txt", "out/report.csv"}));
+    try {
+        OutputSet out(outDir, report);
+        FAIL() << "an old file in an append-only --out was to be replaced";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "--out: " + outDir.string() +
+                                             ": is append-only (chattr +a), so its old "
+                                             "report.csv cannot be replaced");
+    }
+    const OutputPlan csvOnly{{}, [](const std::string& file) { return file == "new.csv"; }};
+    {
+        OutputSet out(outDir, csvOnly);  // report.csv is not among its outputs
+        out.WriteText("new.csv", "new");
+        out.Commit();
+    }
+    EXPECT_EQ(Entries(),
+              (std::vector<std::string>{"out", "out/new.csv", "out/other.txt", "out/report.csv"}));
+}
+
+// Runs `body` in a child process as the user nobody (65534) with root as its saved user, so that
+// it can switch back with seteuid(0). Returns what the body returned (its exit status), 125 if
+// it could not switch. Another user's files in a directory of nobody's: Linux's
+// fs.protected_hardlinks forbids nobody to hard-link them (root's CAP_FOWNER would pass), but
+// nobody may rename over them.
+template <class Body>
+int AsNobody(Body body) {
+    const pid_t child = ::fork();
+    if (child == 0) {
+        if (::setresgid(65534, 65534, 0) != 0 || ::setresuid(65534, 65534, 0) != 0) ::_exit(125);
+        ::_exit(body());
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 126;
+}
+
+bool ProtectedHardlinks() {
+    std::ifstream setting("/proc/sys/fs/protected_hardlinks");
+    int value = 0;
+    return (setting >> value) && value == 1;
+}
+
+// Issue 24's data loss: the old files of an existing --out could not be kept as hard links
+// (another user's), and a later rename failed; the rollback then deleted each file it could not
+// restore (78 of 79 gone) and said "no file was replaced". Here a.csv cannot be kept and b.csv
+// cannot be replaced (immutable): now the run refuses before replacing anything — at once when
+// the old files are there before it computes, at Commit when they appear after.
+TEST_F(OutputSetTest, OldFilesThatCannotBeKeptAreNeverReplaced) {
+    if (::geteuid() != 0 || !ProtectedHardlinks())
+        GTEST_SKIP() << "needs root and fs.protected_hardlinks = 1";
+    const fs::path outDir = base / "out";
+    fs::create_directory(outDir);
+    ASSERT_EQ(::chown(base.c_str(), 65534, 65534), 0);
+    ASSERT_EQ(::chown(outDir.c_str(), 65534, 65534), 0);
+    // Root's old files; b.csv made immutable while the test runs.
+    const auto writeOldFiles = [&] {
+        WriteAll(outDir / "a.csv", "old a");
+        WriteAll(outDir / "b.csv", "old b");
+        return SetAttribute(outDir / "b.csv", FS_IMMUTABLE_FL, true);
+    };
+    const std::string keepA = (outDir / "a.csv").string() +
+                              ": cannot keep the old file to restore it if publishing fails "
+                              "(link: Operation not permitted: another user's file "
+                              "(fs.protected_hardlinks), or an immutable or append-only one)";
+    // Before computing: a bad --out.
+    if (!writeOldFiles()) GTEST_SKIP() << "chattr +i is not available here";
+    const int before = AsNobody([&] {
+        try {
+            OutputSet out(outDir, AnyName());
+        } catch (const InputError& e) {
+            return std::string(e.what()) == "--out: " + keepA ? 0 : 2;
+        }
+        return 1;
+    });
+    EXPECT_EQ(before, 0) << "1: accepted, 2: another message";
+    SetAttribute(outDir / "b.csv", FS_IMMUTABLE_FL, false);
+    fs::remove(outDir / "a.csv");
+    fs::remove(outDir / "b.csv");
+    // At Commit: the old files appear while the run computes.
+    const int atCommit = AsNobody([&] {
+        try {
+            OutputSet out(outDir, AnyName());
+            out.WriteText("a.csv", "new a");
+            out.WriteText("b.csv", "new b");
+            if (::seteuid(0) != 0 || !writeOldFiles() || ::seteuid(65534) != 0) return 3;
+            out.Commit();
+        } catch (const std::runtime_error& e) {
+            return std::string(e.what()) == keepA + "; nothing was replaced" ? 0 : 2;
+        }
+        return 1;
+    });
+    EXPECT_EQ(atCommit, 0) << "1: published, 2: another message, 3: setup failed";
+    SetAttribute(outDir / "b.csv", FS_IMMUTABLE_FL, false);
+    EXPECT_EQ(ReadAll(outDir / "a.csv"), "old a");  // before the fix: deleted
+    EXPECT_EQ(ReadAll(outDir / "b.csv"), "old b");
+    EXPECT_EQ(Entries(), (std::vector<std::string>{"out", "out/a.csv", "out/b.csv"}));
+}
+
+// Issue 24: SIGTERM (SIGINT, SIGHUP) removes the staging directory and exits with 128 + n
+// (before, no handler: the staging directory stayed like after SIGKILL).
+TEST_F(OutputSetTest, TerminationSignalRemovesTheStaging) {
+    for (const int signal : {SIGTERM, SIGINT}) {
+        int ready[2];
+        ASSERT_EQ(::pipe(ready), 0);
+        const pid_t child = ::fork();
+        if (child == 0) {
+            StopCleanlyOnSignals();
+            OutputSet out(base / "out", AnyName());
+            out.WriteText("report.csv", "half done");
+            const char byte = 1;
+            if (::write(ready[1], &byte, 1) != 1) ::_exit(1);
+            for (;;) ::pause();  // computing
+        }
+        char byte = 0;
+        ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+        ::close(ready[0]);
+        ::close(ready[1]);
+        EXPECT_EQ(Entries().size(), 2u);  // the staging directory and its file
+        ::kill(child, signal);
+        int status = 0;
+        ::waitpid(child, &status, 0);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + signal) << status;
+        EXPECT_TRUE(Entries().empty());
+    }
 }
 
 }  // namespace

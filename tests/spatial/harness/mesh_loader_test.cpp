@@ -1,14 +1,21 @@
 // Mesh loading through Assimp, on the models of Debian's assimp-testmodels package.
 #include "lexel/spatial/harness/mesh_loader.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -144,8 +151,9 @@ TEST(MeshLoader, ToleratesTheMissingMaterialOfMalformed2) {
 TEST(MeshLoader, MissingFileAndGarbage) {
     EXPECT_EQ(LoadError("/nonexistent-dir/model.obj"),
               "/nonexistent-dir/model.obj: mesh file not found");
-    EXPECT_EQ(LoadError(std::filesystem::temp_directory_path()),
-              std::filesystem::temp_directory_path().string() + ": mesh file not found");
+    EXPECT_EQ(
+        LoadError(std::filesystem::temp_directory_path()),
+        std::filesystem::temp_directory_path().string() + ": is a directory, not a mesh file");
     const auto garbage = std::filesystem::temp_directory_path() / "lexel_mesh_loader_garbage.obj";
     std::ofstream(garbage) << "this is not a model\nat all\n";
     const std::string message = LoadError(garbage);
@@ -288,6 +296,131 @@ TEST(MeshLoader, RefusesLongOffLinesAndUtf16Or32Text) {
                                        "read (save it as ASCII or UTF-8)");
         std::filesystem::remove(path);
     }
+}
+
+// A fresh directory for one test, removed afterwards.
+class ScratchDirectory {
+  public:
+    ScratchDirectory() {
+        std::string pattern =
+            (std::filesystem::temp_directory_path() / "lexel_mesh_paths_XXXXXX").string();
+        if (::mkdtemp(pattern.data()) != nullptr) path_ = pattern;
+    }
+    ~ScratchDirectory() {
+        std::error_code error;
+        if (!path_.empty()) std::filesystem::remove_all(path_, error);
+    }
+    const std::filesystem::path& Path() const { return path_; }
+
+  private:
+    std::filesystem::path path_;
+};
+
+// Issue 24: a mesh path that is not a regular file says what it is (before: "mesh file not
+// found" for all of them), and nothing is opened to find out.
+TEST(MeshLoader, RefusesPathsThatAreNotRegularFilesSayingWhatTheyAre) {
+    const ScratchDirectory scratch;
+    ASSERT_FALSE(scratch.Path().empty());
+    const auto dir = scratch.Path() / "model.obj";
+    std::filesystem::create_directory(dir);
+    const auto fifo = scratch.Path() / "pipe.obj";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto dangling = scratch.Path() / "dangling.obj";
+    std::filesystem::create_symlink(scratch.Path() / "gone.obj", dangling);
+    EXPECT_EQ(LoadError(dir), dir.string() + ": is a directory, not a mesh file");
+    EXPECT_EQ(LoadError(fifo), fifo.string() + ": is a FIFO (named pipe), not a mesh file");
+    EXPECT_EQ(LoadError("/dev/null"), "/dev/null: is a character device, not a mesh file");
+    EXPECT_EQ(LoadError(dangling),
+              dangling.string() + ": is a dangling symbolic link (mesh file not found)");
+}
+
+// Issue 24: an OBJ whose mtllib names a FIFO hung for ever (Assimp's default file system opened
+// it and waited for a writer). Now only regular files are opened, and the mesh is refused naming
+// what it would have opened. A watchdog opens the FIFO's write end after 10 s, which would free a
+// loader blocked on it, so the old behaviour fails the test instead of hanging it.
+TEST(MeshLoader, NeverOpensAFifoOrDirectoryAnObjNames) {
+    const ScratchDirectory scratch;
+    ASSERT_FALSE(scratch.Path().empty());
+    const auto fifo = scratch.Path() / "pipe.mtl";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::filesystem::create_directory(scratch.Path() / "folder.mtl");
+    const char* triangle = "v -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const auto obj = scratch.Path() / "names_fifo.obj";
+    std::ofstream(obj) << "mtllib pipe.mtl\n" << triangle;
+    const auto objDir = scratch.Path() / "names_folder.obj";
+    std::ofstream(objDir) << "mtllib folder.mtl\n" << triangle;
+
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
+    std::thread watchdog([&] {
+        std::unique_lock lock(mutex);
+        if (finished.wait_for(lock, std::chrono::seconds(10), [&] { return done; })) return;
+        const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+        if (fd >= 0) ::close(fd);
+    });
+    const std::string fifoError = LoadError(obj);
+    {
+        const std::lock_guard lock(mutex);
+        done = true;
+    }
+    finished.notify_all();
+    watchdog.join();
+    EXPECT_EQ(fifoError, obj.string() + ": cannot read mesh: reading it would open " +
+                             fifo.string() + ", a FIFO (named pipe); only regular files are read");
+    EXPECT_EQ(LoadError(objDir), objDir.string() + ": cannot read mesh: reading it would open " +
+                                     (scratch.Path() / "folder.mtl").string() +
+                                     ", a directory; only regular files are read");
+    // A missing material library is no error (Assimp uses a default material).
+    const auto objMissing = scratch.Path() / "names_missing.obj";
+    std::ofstream(objMissing) << "mtllib missing.mtl\n" << triangle;
+    EXPECT_EQ(LoadError(objMissing), "no error");
+}
+
+// Issue 24: Assimp 5.2 reads an OFF face's indices with strtoul10 and clamps the ones past the
+// vertices, so "-1" became vertex 0 and "7" of 3 vertices the last one, silently (the same in OBJ
+// is refused). Now each is refused naming the face, its line and the index.
+TEST(MeshLoader, RefusesOffFaceIndicesThatAreNoVertex) {
+    const ScratchDirectory scratch;
+    ASSERT_FALSE(scratch.Path().empty());
+    // Line 1 OFF, 2 a comment, 3 the counts, 4-6 vertices (a blank line between), then faces.
+    const std::string head = "OFF\n# a triangle\n3 2 0\n0 0 0\n1 0 0\n\n0 1 0\n";
+    const std::pair<std::string, std::string> refused[] = {
+        {"3 0 1 2\n3 0 1 7\n",
+         "face 1 (line 9): vertex index 2 is 7, past the file's 3 vertices "
+         "(0 to 2)"},
+        {"3 0 -1 2\n3 0 1 2\n",
+         "face 0 (line 8): vertex index 1 is negative; OFF indices count vertices from 0"},
+        {"3 0 1 2\n3 0 1\n", "face 1 (line 9) lists 2 of its 3 vertex indices"},
+        {"3 0 1 2\n3 0 1 # 2\n", "face 1 (line 9) lists 2 of its 3 vertex indices"},
+        {"3 0 x 2\n3 0 1 2\n",
+         "face 0 (line 8): vertex index 1 is not a number ('x'); OFF indices count vertices from "
+         "0"},
+        // Assimp's unsigned int wraps 4294967296 to 0.
+        {"3 0 1 2\n3 4294967296 1 2\n",
+         "face 1 (line 9): vertex index 0 is 4294967296, past the file's 3 vertices (0 to 2)"},
+    };
+    const auto off = scratch.Path() / "faces.off";
+    for (const auto& [faces, reason] : refused) {
+        SCOPED_TRACE(faces);
+        std::ofstream(off) << head << faces;
+        EXPECT_EQ(LoadError(off), off.string() + ": " + reason);
+    }
+    // Lines Assimp drops among the faces, miscounting them (its 5.2 lost the face after a
+    // comment line, and the file read as 0 faces when the dropped lines followed the last one).
+    const std::string dropped =
+        ": not a face of 1 to 9 vertices (Assimp 5.2 drops such a line and miscounts the faces "
+        "after it)";
+    for (const char* faces :
+         {"# a comment\n3 0 1 2\n3 0 2 1\n", "3 0 1 2\n0\n", "3 0 1 2\n10 0 1 2 0 1 2 0 1 2 0\n"}) {
+        SCOPED_TRACE(faces);
+        std::ofstream(off) << head << faces;
+        EXPECT_EQ(LoadError(off), off.string() + ": face " +
+                                      (faces[0] == '#' ? "0 (line 8)" : "1 (line 9)") + dropped);
+    }
+    // Extra numbers after the indices (colours) and lines after the declared faces are no error.
+    std::ofstream(off) << head << "3 0 1 2 255 0 0\n3 0 2 1\n# the end\n";
+    EXPECT_EQ(LoadError(off), "no error");
 }
 
 }  // namespace
