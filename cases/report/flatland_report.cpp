@@ -61,13 +61,12 @@ nlohmann::json RunJson(std::span<const flatland::CaseReport> reports) {
 
 std::string RunCsv(std::span<const flatland::CaseReport> reports) {
     std::ostringstream out;
-    out.precision(17);
     out << "case,method,lexel_plane_deg,worst,average,mean_plus_sigma,median,l1,l2,linf,pixels_"
            "visible,"
            "solve_ms,frusta,note\n";
     for (const auto& r : reports)
         for (const auto& m : r.methods) {
-            const auto num = [](double v) { return CsvNumber(v, 17); };  // NaN: empty
+            const auto num = [](double v) { return CsvNumber(v); };  // NaN: empty
             out << CsvText(r.caseName) << ',' << CsvText(m.method) << ',' << num(m.lexelPlaneDeg)
                 << ',' << num(m.stats.worst()) << ',' << num(m.stats.average) << ','
                 << num(m.stats.meanPlusSigma) << ',' << num(m.stats.median) << ','

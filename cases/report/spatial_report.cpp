@@ -19,12 +19,13 @@ nlohmann::json FiniteOrNull(double v) {
 std::string LightHeader(std::size_t l, const spatial::LightOutcome& o) {
     std::ostringstream text;
     text << "light " << l << ": " << LightLabel(o.light) << " — " << o.receiverPixels
-         << " pixels face it, " << o.truthShadowed << " shadowed (Embree rays)";
+         << " pixels face it, " << o.truthShadowed << " shadowed (Embree rays), "
+         << o.samples.lsX.size() << " boundary samples\n";
     if (o.mapTruthDisagree >= 0)
-        text << "; the report's focused 4000² map disagrees on " << o.mapTruthDisagree << " ("
+        text << "  the report's focused 4000² truth map disagrees with the rays on "
+             << o.mapTruthDisagree << " pixels ("
              << Fixed(100.0 * o.mapTruthDisagree / std::max<std::int64_t>(1, o.receiverPixels), 3)
-             << "%)";
-    text << "; " << o.samples.lsX.size() << " boundary samples\n";
+             << "%)\n";
     return text.str();
 }
 
@@ -32,7 +33,7 @@ std::string IterationLines(const spatial::LightOutcome& o) {
     std::ostringstream text;
     for (const auto& m : o.methods) {
         if (m.hAfterIteration.empty()) continue;
-        text << m.method << ": h after each iteration (Algorithm 1)";
+        text << m.method << ": h by Algorithm 1 iteration";
         for (std::size_t i = 0; i < m.hAfterIteration.size(); ++i)
             text << (i ? " → " : " ") << Significant(m.hAfterIteration[i], 6);
         if (m.h < m.hBeforeRefine) text << "; refined " << Significant(m.h, 6);
@@ -41,19 +42,23 @@ std::string IterationLines(const spatial::LightOutcome& o) {
     return text.str();
 }
 
-// Per partitioned method, its cascades: depth interval, map, readback points, pixels, h.
+// Per partitioned method, its cascades, one line each: depth interval, map, readback points,
+// pixels, h.
 std::string CascadeLines(const spatial::LightOutcome& o) {
     std::ostringstream text;
     for (const auto& m : o.methods) {
         if (m.cascades.empty()) continue;
         text << m.method << ": " << m.cascades.size() << " cascades";
         if (m.emptyPartitions) text << " (" << m.emptyPartitions << " empty)";
-        for (const spatial::CascadeOutcome& c : m.cascades)
-            text << "; [" << Significant(c.cascade.zNear, 4) << ", "
-                 << Significant(c.cascade.zFar, 4) << ") " << c.cascade.map.width << "×"
-                 << c.cascade.map.height << " " << c.cascade.visiblePoints << " points " << c.pixels
-                 << " px h " << Significant(c.h, 4);
         text << '\n';
+        for (std::size_t c = 0; c < m.cascades.size(); ++c) {
+            const spatial::CascadeOutcome& cascade = m.cascades[c];
+            text << "  " << c << ": depth [" << Significant(cascade.cascade.zNear, 4) << ", "
+                 << Significant(cascade.cascade.zFar, 4) << "), map " << cascade.cascade.map.width
+                 << "×" << cascade.cascade.map.height << ", " << cascade.cascade.visiblePoints
+                 << " readback points, " << cascade.pixels << " pixels, h "
+                 << Significant(cascade.h, 4) << '\n';
+        }
     }
     return text.str();
 }
@@ -93,8 +98,8 @@ std::string SpatialRunText(const spatial::Scene&, const SpatialRun& run) {
     std::ostringstream text;
     for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
         const auto& o = run.outcomes[l];
-        TextTable table({"method", "misclassified", "false shadow", "false light", "uncovered",
-                         "mean σ1(J⁻¹)", "max σ1(J⁻¹)", "storage factor", "h (eq. 6)", "ms"});
+        TextTable table({"method", "misclassified", "false\nshadow", "false\nlight", "uncovered",
+                         "mean\nσ1(J⁻¹)", "max\nσ1(J⁻¹)", "storage\nfactor", "h\n(eq. 6)", "ms"});
         for (const auto& m : o.methods)
             table.AddRow({m.method, std::to_string(m.misclassified), std::to_string(m.falseShadow),
                           std::to_string(m.misclassified - m.falseShadow),
@@ -179,12 +184,10 @@ std::string SpatialRunCsv(const SpatialRun& run) {
     for (std::size_t l = 0; l < run.outcomes.size(); ++l)
         for (const auto& m : run.outcomes[l].methods)
             csv << l << ',' << m.method << ',' << m.misclassified << ',' << m.falseShadow << ','
-                << m.misclassified - m.falseShadow << ',' << Significant(m.h, 9) << ','
-                << Fixed(m.ms, 4) << ',' << m.uncovered << ',' << Significant(m.footprintMean, 9)
-                << ',' << Significant(m.footprintMax, 9) << ','
-                << std::max<std::size_t>(1, m.cascades.size()) << ','
-                << Significant(m.perspectiveMax, 9) << ',' << Significant(m.storageFactor, 9)
-                << '\n';
+                << m.misclassified - m.falseShadow << ',' << CsvNumber(m.h) << ','
+                << CsvNumber(m.ms) << ',' << m.uncovered << ',' << CsvNumber(m.footprintMean) << ','
+                << CsvNumber(m.footprintMax) << ',' << std::max<std::size_t>(1, m.cascades.size())
+                << ',' << CsvNumber(m.perspectiveMax) << ',' << CsvNumber(m.storageFactor) << '\n';
     return csv.str();
 }
 

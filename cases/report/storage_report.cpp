@@ -91,9 +91,9 @@ std::string CrossoverText(const StorageStudy& s) {
 
 std::string StorageText(const StorageStudy& s) {
     std::ostringstream out;
-    out << "Lloyd et al. 2006's storage factor S̄ (texels over image pixels for w_l/w_i ≤ 1): "
-        << FrustumLine(s.frustum) << "\nS̄_opt = ln(f/n) / (2 tanθ) = " << Significant(s.optimal, 6)
-        << " (Appendix C)\n"
+    out << "Lloyd et al. 2006's storage factor S̄ (texels over image pixels for w_l/w_i ≤ 1):\n  "
+        << FrustumLine(s.frustum) << "\n"
+        << "S̄_opt = ln(f/n) / (2 tanθ) = " << Significant(s.optimal, 6) << " (Appendix C)\n"
         << WarpText(s) << HemisphereText(s) << PartitionText(s) << MapCountText(s)
         << CrossoverText(s);
     return out.str();
@@ -152,17 +152,14 @@ std::string StorageCsv(const StorageStudy& s) {
     csv << "figure,series,x1,x2,value\n";
     const auto row = [&](const char* figure, const std::string& series, const std::string& x1,
                          const std::string& x2, double value) {
-        csv << figure << ',' << series << ',' << x1 << ',' << x2 << ',' << Significant(value, 9)
-            << '\n';
+        csv << figure << ',' << series << ',' << x1 << ',' << x2 << ',' << CsvNumber(value) << '\n';
     };
     for (std::size_t r = 0; r < s.warpRatios.size(); ++r)
         for (const spatial::WarpSweepPoint& p : s.warp[r])
-            row("fig5_6", "warp", Significant(p.eta, 9), Significant(s.warpRatios[r], 9),
-                p.storage);
+            row("fig5_6", "warp", CsvNumber(p.eta), CsvNumber(s.warpRatios[r]), p.storage);
     for (const HemisphereStudy& h : s.hemisphere)
         for (const spatial::HemisphereCell& c : h.grid.cells)
-            if (c.inside)
-                row("fig7", h.scheme, Significant(c.gx, 9), Significant(c.gy, 9), c.storage);
+            if (c.inside) row("fig7", h.scheme, CsvNumber(c.gx), CsvNumber(c.gy), c.storage);
     for (const spatial::PartitionSweepPoint& p : s.partitions) {
         row("fig10", "ZP", std::to_string(p.k), "", p.zp);
         row("fig10", "ZP + W", std::to_string(p.k), "", p.zpWarp);
@@ -308,11 +305,11 @@ std::vector<std::string> WriteStorageFigures(const std::filesystem::path& dir,
 
 std::string CaseStorageText(const CaseStorage& r) {
     std::ostringstream out;
-    out << "Measured storage factor beside Lloyd et al. 2006's S̄, " << r.caseName << ": camera "
-        << FrustumLine(r.camera) << "; visible planar depths "
+    out << "Measured storage factor beside Lloyd et al. 2006's S̄, " << r.caseName << ":\n  camera "
+        << FrustumLine(r.camera) << "\n  visible planar depths "
         << Significant(r.visible.nearPlane, 4) << "–" << Significant(r.visible.farPlane, 4)
         << " (f/n = " << Significant(r.visible.DepthRatio(), 4)
-        << "); partitioned methods k = " << r.partitions << "\n";
+        << ")\n  partitioned methods k = " << r.partitions << "\n";
     for (std::size_t l = 0; l < r.lights.size(); ++l) {
         const CaseStorageLight& light = r.lights[l];
         out << (l ? "\n" : "") << "light " << l << ": " << LightLabel(light.light)
@@ -324,9 +321,9 @@ std::string CaseStorageText(const CaseStorage& r) {
             << Significant(light.optimalVisible, 4) << " (visible depths); best single map "
             << Significant(light.bestSingleCamera, 4) << " / "
             << Significant(light.bestSingleVisible, 4) << "\n";
-        TextTable table({"method", "maps", "max w_l/w_i", "S measured", "S measured (p99)",
-                         "scheme", "S scheme (camera)", "S scheme (visible)",
-                         "measured / S_opt (visible)"});
+        TextTable table({"method", "maps", "max\nw_l/w_i", "S\nmeasured", "S measured\n(p99)",
+                         "scheme", "S scheme\n(camera)", "S scheme\n(visible)",
+                         "measured /\nS_opt\n(visible)"});
         for (const CaseStorageRow& row : light.rows)
             table.AddRow({row.method, std::to_string(row.maps), Significant(row.perspectiveMax, 4),
                           Significant(row.measured, 4), Significant(row.measuredP99, 4),
@@ -379,11 +376,11 @@ std::string CaseStorageCsv(const CaseStorage& r) {
     for (std::size_t l = 0; l < r.lights.size(); ++l)
         for (const CaseStorageRow& row : r.lights[l].rows)
             csv << l << ',' << row.method << ',' << row.maps << ',' << row.texels << ','
-                << Significant(row.perspectiveMax, 9) << ',' << Significant(row.measured, 9) << ','
-                << Significant(row.measuredP99, 9) << ',' << row.camera.scheme << ','
-                << Significant(row.camera.storage, 9) << ',' << Significant(row.visible.storage, 9)
-                << ',' << Significant(r.lights[l].optimalCamera, 9) << ','
-                << Significant(r.lights[l].optimalVisible, 9) << '\n';
+                << CsvNumber(row.perspectiveMax) << ',' << CsvNumber(row.measured) << ','
+                << CsvNumber(row.measuredP99) << ',' << row.camera.scheme << ','
+                << CsvNumber(row.camera.storage) << ',' << CsvNumber(row.visible.storage) << ','
+                << CsvNumber(r.lights[l].optimalCamera) << ','
+                << CsvNumber(r.lights[l].optimalVisible) << '\n';
     return csv.str();
 }
 

@@ -104,7 +104,6 @@ std::string TablesMarkdown(const std::vector<TableResult>& results) {
 
 std::string TablesCsv(const std::vector<TableResult>& results) {
     std::ostringstream out;
-    out.precision(17);
     out << "case,row,method,angle,worst,average,mean_plus_sigma,thesis_angle,thesis_worst,thesis_"
            "average,"
            "thesis_mean_plus_sigma,thesis_two_frusta_mean\n";
@@ -112,14 +111,14 @@ std::string TablesCsv(const std::vector<TableResult>& results) {
         for (const auto& [label, method] : TableRows()) {
             const auto& m = r.Method(method);
             const ThesisRow* p = r.thesis.RowFor(method);
-            const auto num = [](double v) { return CsvNumber(v, 17); };  // NaN: empty
+            const auto num = [](double v) { return CsvNumber(v); };  // NaN: empty
             out << CsvText(fs::path(r.thesis.file).stem().string()) << ',' << label << ',' << method
                 << ',' << num(m.lexelPlaneDeg) << ',' << num(m.stats.worst()) << ','
                 << num(m.stats.average) << ',' << num(m.stats.meanPlusSigma) << ',';
             if (p)
-                out << p->angle << ',' << p->worst << ',' << p->average << ',' << p->meanPlusSigma
-                    << ','
-                    << (p->twoFrustaMean ? std::to_string(*p->twoFrustaMean) : std::string());
+                out << num(p->angle) << ',' << num(p->worst) << ',' << num(p->average) << ','
+                    << num(p->meanPlusSigma) << ','
+                    << (p->twoFrustaMean ? num(*p->twoFrustaMean) : std::string());
             else
                 out << ",,,,";
             out << '\n';

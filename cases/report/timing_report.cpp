@@ -172,7 +172,7 @@ std::string TimingCsv(const TimingRun& run) {
         const auto* frames = method.second;
         const auto row = [&](const std::string& frame, const FrameTimes& t) {
             out << method.first << ',' << frame;
-            for (const auto& [column, value] : Columns(t)) out << ',' << Fixed(value, 4);
+            for (const auto& [column, value] : Columns(t)) out << ',' << CsvNumber(value);
             out << '\n';
         };
         for (std::size_t k = 0; k < frames->size(); ++k) row(std::to_string(k), (*frames)[k]);
