@@ -56,6 +56,32 @@ fs::path DataDirectory() {
 
 namespace {
 
+std::string MethodLines(const std::vector<std::string>& names,
+                        std::string_view (*describe)(std::string_view)) {
+    std::size_t width = 0;
+    for (const std::string& name : names) width = std::max(width, name.size());
+    std::string lines;
+    for (const std::string& name : names)
+        lines += "  " + name + std::string(width + 2 - name.size(), ' ') +
+                 std::string(describe(name)) + '\n';
+    return lines;
+}
+
+}  // namespace
+
+std::string MethodsHelp(bool flatland, bool spatial) {
+    std::string help;
+    if (flatland)
+        help += "Flatland methods (default: all):\n" +
+                MethodLines(flatland::FlatlandMethodNames(), &flatland::FlatlandMethodDescription);
+    if (spatial)
+        help += std::string(flatland ? "\n" : "") + "3D methods (default: all):\n" +
+                MethodLines(spatial::SpatialMethodNames(), &spatial::SpatialMethodDescription);
+    return help;
+}
+
+namespace {
+
 std::string KnownList(const std::vector<std::string>& names) {
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
@@ -138,6 +164,8 @@ int RunSpatial(const RunFlags& flags) {
         });
     std::optional<OutputSet> out;  // --out is checked before anything is computed
     if (!flags.outDir.empty()) out.emplace(flags.outDir);
+    Progress bar("run " + scene.name, SpatialRunSteps(scene, options), "steps");
+    options.onStep = [&] { bar.Step(); };
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
     if (flags.format == "json")
         std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
@@ -323,6 +351,8 @@ int TimingCommand(const TimingFlags& flags) {
     options.optimal = flags.optimizer;
     const ReportTiming report =
         LoadReportTiming(DataDirectory() / "published" / "report_timing.json");
+    Progress bar("timing", static_cast<std::size_t>(options.frames) + 1, "frames");
+    options.onFrameDone = [&] { bar.Step(); };
     const TimingRun run = WithCaseName(casePath, [&] { return RunTiming(scene, options); });
     if (flags.format == "json")
         std::cout << TimingJson(scene, run, report).dump(2) << '\n';
