@@ -38,15 +38,15 @@ struct PoseBuffers {
     std::vector<std::vector<spatial::Shade>> shades;  // per study method
 };
 
-spatial::LightOutcome EvaluatePose(const spatial::Scene& scene,
+// `poseScene` is the scene seen from the pose; the evaluator keeps a reference to it, so it must
+// outlive *evaluator.
+spatial::LightOutcome EvaluatePose(const spatial::Scene& poseScene,
                                    const spatial::RenderBackend& backend, std::size_t light,
                                    std::size_t pose, const spatial::EvaluationOptions& options,
                                    std::unique_ptr<spatial::Evaluator>* evaluator) {
-    spatial::Scene poseScene = scene;
-    poseScene.camera = scene.cameraPath[pose];
     *evaluator = MakeEvaluator(poseScene, backend, CameraPathField(pose));
     try {
-        return (*evaluator)->Evaluate(scene.lights[light], options);
+        return (*evaluator)->Evaluate(poseScene.lights[light], options);
     } catch (const DomainError& e) {
         throw InputError(SpatialErrorField(e, LightField(light), CameraPathField(pose)) + ": " +
                          e.what());
@@ -71,8 +71,12 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
     std::optional<spatial::LightMatrix> previous;
     std::optional<PoseBuffers> before;
     for (std::size_t k = 0; k < scene.cameraPath.size(); ++k) {
+        // Declared before the evaluator, which holds a reference to it (it used to be a local of
+        // EvaluatePose: Misclassified below then read a destroyed scene).
+        spatial::Scene poseScene = scene;
+        poseScene.camera = scene.cameraPath[k];
         std::unique_ptr<spatial::Evaluator> evaluator;
-        spatial::LightOutcome o = EvaluatePose(scene, backend, l, k, options, &evaluator);
+        spatial::LightOutcome o = EvaluatePose(poseScene, backend, l, k, options, &evaluator);
         const spatial::HysteresisDecision d = spatial::ApplyHysteresis(
             previous, o.methods[optimal].matrix, o.samples, scene.shadowMap, margin);
         PoseOutcome pose;
