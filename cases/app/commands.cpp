@@ -15,6 +15,7 @@
 #include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/fit_report.h"
 #include "lexel/cases/report/flatland_report.h"
+#include "lexel/cases/report/html_report.h"
 #include "lexel/cases/report/lowres_report.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/report/spatial_report.h"
@@ -159,7 +160,7 @@ int RunSpatial(const RunFlags& flags) {
     if (!flags.outDir.empty())
         RefuseOverwritingInputs(flags.outDir, flags.cases, [&](const std::string& file) {
             const std::string& name = scene.name;  // <name>.json/.csv, <name>_light<k>_*.png
-            return file == name + ".json" || file == name + ".csv" ||
+            return file == "index.html" || file == name + ".json" || file == name + ".csv" ||
                    (file.starts_with(name + "_light") && file.ends_with(".png"));
         });
     std::optional<OutputSet> out;  // --out is checked before anything is computed
@@ -174,13 +175,17 @@ int RunSpatial(const RunFlags& flags) {
     else
         std::cout << SpatialRunText(scene, run);
     if (!out) return 0;
-    const int images =
+    const std::vector<SpatialImageFile> images =
         out->Writing([&] { return WriteSpatialImages(out->StagingDir(), scene, run); });
     out->WriteText(scene.name + ".json", SpatialRunJson(scene, run).dump(2) + "\n");
     out->WriteText(scene.name + ".csv", SpatialRunCsv(run));
+    out->WriteText("index.html",
+                   SpatialRunHtml(scene, run, images,
+                                  {{scene.name + ".json", "every number of this run (JSON)"},
+                                   {scene.name + ".csv", "one row per light and method (CSV)"}}));
     out->Commit();
-    std::cerr << "lexel: wrote " << images << " images and " << scene.name << ".json/.csv to "
-              << flags.outDir << '\n';
+    std::cerr << "lexel: wrote " << images.size() << " images, index.html and " << scene.name
+              << ".json/.csv to " << flags.outDir << '\n';
     return 0;
 }
 
@@ -192,6 +197,7 @@ void RefuseFlatlandOutputClashes(const RunFlags& flags,
     for (const auto& scene : scenes) names.push_back(scene.name);
     RefuseDuplicateNames(names, flags.cases);
     RefuseOverwritingInputs(flags.outDir, flags.cases, [&](const std::string& file) {
+        if (file == "index.html") return true;
         for (const std::string& name : names)
             if (file == name + ".json" || file == name + ".csv" || file == name + ".md")
                 return true;
@@ -232,13 +238,19 @@ int RunFlatland(const RunFlags& flags) {
         for (std::size_t i = 0; i < reports.size(); ++i)
             std::cout << (i ? "\n" : "") << CaseTable(reports[i]);
     if (!out) return 0;
+    std::vector<LinkedFile> files;
     for (const auto& r : reports) {
         out->WriteText(r.caseName + ".json", CaseReportJson(r).dump(2) + "\n");
         out->WriteText(r.caseName + ".csv", RunCsv(std::span(&r, 1)));
         out->WriteText(r.caseName + ".md", CaseMarkdown(r));
+        files.push_back({r.caseName + ".json", "every number of " + r.caseName + " (JSON)"});
+        files.push_back({r.caseName + ".csv", "one row per method (CSV)"});
+        files.push_back({r.caseName + ".md", "the table in Markdown"});
     }
+    out->WriteText("index.html", FlatlandRunHtml(reports, files));
     out->Commit();
-    std::cerr << "lexel: wrote " << reports.size() * 3 << " files to " << flags.outDir << '\n';
+    std::cerr << "lexel: wrote index.html and " << reports.size() * 3 << " files to "
+              << flags.outDir << '\n';
     return 0;
 }
 
@@ -253,14 +265,15 @@ int RunCommand(const RunFlags& flags) {
 namespace {
 
 // For `lexel sweep --out`: the frame, errors and per-cascade maps of the partitioned methods for
-// the sweep's first light; the number of images.
-int WriteFirstLightCascades(const fs::path& dir, const spatial::Scene& scene, const SweepResult& r,
-                            BackendKind backend) {
+// the sweep's first light.
+std::vector<SpatialImageFile> WriteFirstLightCascades(const fs::path& dir,
+                                                      const spatial::Scene& scene,
+                                                      const SweepResult& r, BackendKind backend) {
     SpatialRunOptions options;
     options.backend = backend;
     for (const std::string& m : r.methods)
         if (spatial::IsPartitionedMethod(m)) options.methods.push_back(m);
-    if (options.methods.empty() || r.lights.empty()) return 0;
+    if (options.methods.empty() || r.lights.empty()) return {};
     options.mapTruth = false;
     options.keepBuffers = true;
     spatial::Scene first = scene;
@@ -279,8 +292,8 @@ int SweepCommand(const SweepFlags& flags) {
     const BackendKind backend = BackendOf(flags.backend);
     if (!flags.outDir.empty())
         RefuseOverwritingInputs(flags.outDir, {flags.casePath}, [&](const std::string& file) {
-            for (const char* name : {"table1.md", "table1.csv", "sweep.json", "lights.csv",
-                                     "cascades.csv", "cascades.png"})
+            for (const char* name : {"index.html", "table1.md", "table1.csv", "sweep.json",
+                                     "lights.csv", "cascades.csv", "cascades.png"})
                 if (file == name) return true;
             return file.starts_with(scene.name + "_light") && file.ends_with(".png");
         });
@@ -321,21 +334,33 @@ int SweepCommand(const SweepFlags& flags) {
     out->WriteText("table1.csv", SweepCsv(r, report));
     out->WriteText("sweep.json", SweepJson(r).dump(2) + "\n");
     out->WriteText("lights.csv", SweepLightsCsv(r));
+    std::vector<LinkedFile> files = {
+        {"table1.md", "the tables above in Markdown"},
+        {"table1.csv", "the tables above, one row per table, set of lights and method (CSV)"},
+        {"sweep.json", "every number of the tables (JSON)"},
+        {"lights.csv",
+         "one row per light: its position, counted pixels, and every method's "
+         "misclassified pixels, h and time"}};
     std::string also;
+    std::vector<SpatialImageFile> images;
     if (study) {
         out->WriteText("cascades.csv", CascadeStudyCsv(*study));
         out->Writing(
             [&] { WriteCascadeStudyPlot(out->Staged("cascades.png").string(), *study, r); });
-        const int images = WithCaseName(casePath, [&] {
+        images = WithCaseName(casePath, [&] {
             return out->Writing(
                 [&] { return WriteFirstLightCascades(out->StagingDir(), scene, r, backend); });
         });
-        also = ", cascades.csv, cascades.png and " + std::to_string(images) +
+        files.push_back({"cascades.csv", "mean misclassified pixels per method and k"});
+        files.push_back({"cascades.png", "the same as a plot"});
+        also = ", cascades.csv, cascades.png and " + std::to_string(images.size()) +
                " images of the first light";
     }
+    out->WriteText("index.html", SweepHtml(r, report, study ? &*study : nullptr,
+                                           study ? "cascades.png" : "", images, files));
     out->Commit();
-    std::cerr << "lexel: wrote table1.md, table1.csv, sweep.json, lights.csv" << also << " to "
-              << flags.outDir << '\n';
+    std::cerr << "lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv" << also
+              << " to " << flags.outDir << '\n';
     return 0;
 }
 

@@ -77,8 +77,7 @@ std::string RunCsv(std::span<const flatland::CaseReport> reports) {
     return out.str();
 }
 
-namespace {
-TextTable MethodTable(const flatland::CaseReport& report) {
+TextTable CaseMethodTable(const flatland::CaseReport& report) {
     TextTable table(
         {"method", "angle", "worst", "average", "mean+σ", "l1", "l2", "linf", "ms", "note"});
     for (const auto& m : report.methods) {
@@ -95,19 +94,19 @@ TextTable MethodTable(const flatland::CaseReport& report) {
     }
     return table;
 }
+
 std::string CaseHeader(const flatland::CaseReport& r) {
     return r.caseName + ": " + std::to_string(r.pixelsVisible) + " of " + std::to_string(r.pixels) +
            " pixels visible, " + std::to_string(r.lexels) + " lexels, decision pass " +
            std::to_string(r.decisionPixels) + " pixels";
 }
-}  // namespace
 
 std::string CaseTable(const flatland::CaseReport& report) {
-    return CaseHeader(report) + "\n" + MethodTable(report).Render();
+    return CaseHeader(report) + "\n" + CaseMethodTable(report).Render();
 }
 
 std::string CaseMarkdown(const flatland::CaseReport& report) {
-    return "## " + CaseHeader(report) + "\n\n" + MethodTable(report).RenderMarkdown();
+    return "## " + CaseHeader(report) + "\n\n" + CaseMethodTable(report).RenderMarkdown();
 }
 
 }  // namespace lexel::cases

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -184,12 +185,15 @@ std::string StorageCsv(const StorageStudy& s) {
 
 namespace {
 
-// log10 S̄ in [lo, hi] → a dark-blue, cyan, yellow, red ramp; white outside the hemisphere.
-spatial::Image HemisphereImage(const HemisphereStudy& h, double lo, double hi, int scale) {
+// Fig. 7's colours for log10 S̄ from the smallest to the largest decade.
+constexpr spatial::ImageColour kHemisphereRamp[4] = {
+    {0.1f, 0.1f, 0.5f}, {0.0f, 0.8f, 0.9f}, {1.0f, 0.9f, 0.1f}, {0.8f, 0.05f, 0.05f}};
+
+// log10 S̄ in [lo, hi] → a dark-blue, cyan, yellow, red ramp; white outside the hemisphere. One
+// pixel per grid cell (the figure scales it up).
+spatial::Image HemisphereImage(const HemisphereStudy& h, double lo, double hi) {
     const int size = h.grid.size;
-    spatial::Image image = spatial::MakeImage(size * scale, size * scale, 3, 1.0f);
-    constexpr float kRamp[4][3] = {
-        {0.1f, 0.1f, 0.5f}, {0.0f, 0.8f, 0.9f}, {1.0f, 0.9f, 0.1f}, {0.8f, 0.05f, 0.05f}};
+    spatial::Image image = spatial::MakeImage(size, size, 3, 1.0f);
     for (int row = 0; row < size; ++row)
         for (int col = 0; col < size; ++col) {
             const spatial::HemisphereCell& cell = h.grid.cells[row * size + col];
@@ -199,13 +203,33 @@ spatial::Image HemisphereImage(const HemisphereStudy& h, double lo, double hi, i
             const double segment = std::min(2.999999, 3.0 * t);
             const int i = static_cast<int>(segment);
             const float w = static_cast<float>(segment - i);
-            for (int y = 0; y < scale; ++y)
-                for (int x = 0; x < scale; ++x)
-                    for (int c = 0; c < 3; ++c)
-                        image.at(col * scale + x, row * scale + y, c) =
-                            (1.0f - w) * kRamp[i][c] + w * kRamp[i + 1][c];
+            const spatial::ImageColour a = kHemisphereRamp[i], b = kHemisphereRamp[i + 1];
+            image.at(col, row, 0) = (1.0f - w) * a.r + w * b.r;
+            image.at(col, row, 1) = (1.0f - w) * a.g + w * b.g;
+            image.at(col, row, 2) = (1.0f - w) * a.b + w * b.b;
         }
     return image;
+}
+
+// Fig. 7's figure for one scheme: what the disc shows, its extremes, and the shared log scale.
+ImageFigure HemisphereFigure(const HemisphereStudy& h, const spatial::ViewFrustum& frustum,
+                             double lo, double hi) {
+    ImageFigure figure;
+    figure.title = "Fig. 7: storage factor S̄ over the hemisphere of light directions, " + h.scheme;
+    figure.lines = {
+        "The hemisphere seen from above (" + std::to_string(h.grid.size) + " × " +
+            std::to_string(h.grid.size) +
+            " cells): the light behind the viewer on the left, in front on the right, overhead "
+            "in the middle; frustum " +
+            FrustumLine(frustum) + ".",
+        "S̄ from " + Significant(h.minStorage, 4) + " to " + Significant(h.maxStorage, 4) + " for " +
+            h.scheme + "; the three schemes share one scale."};
+    figure.key = {{"outside the hemisphere", {1.0f, 1.0f, 1.0f}}};
+    figure.bar = ColourBar{
+        "storage factor S̄ (log scale)",
+        std::vector<spatial::ImageColour>(std::begin(kHemisphereRamp), std::end(kHemisphereRamp)),
+        lo, hi, true};
+    return figure;
 }
 
 std::string FileStem(const std::string& scheme) {
@@ -246,8 +270,8 @@ std::vector<std::string> WriteStorageFigures(const std::filesystem::path& dir,
         lo = std::min(lo, std::log10(h.minStorage)), hi = std::max(hi, std::log10(h.maxStorage));
     lo = std::floor(lo), hi = std::ceil(hi);
     for (const HemisphereStudy& h : s.hemisphere)
-        spatial::WriteImage(path("fig7_hemisphere_" + FileStem(h.scheme) + ".png"),
-                            HemisphereImage(h, lo, hi, 4));
+        WriteImageFigure(path("fig7_hemisphere_" + FileStem(h.scheme) + ".png"),
+                         HemisphereImage(h, lo, hi), HemisphereFigure(h, s.frustum, lo, hi));
 
     const std::vector<double> powersOfTwo = {1, 2, 4, 8, 16};
     CurvePlot partitions;

@@ -237,7 +237,7 @@ TextTable MisclassifiedTable(const SweepResult& r, const View& view, const Repor
             std::vector<std::string> published = ReportCells(report, row.set, r, view);
             if (!published.empty()) {
                 published.insert(published.begin(), kPublishedLabel);
-                table.AddRow(published);
+                table.AddRow(published, "published");
             }
         }
     }

@@ -241,7 +241,7 @@ std::string TextTable::RenderHtml(std::string_view cssClass) const {
     }
     out << "</tr></thead>\n<tbody>\n";
     for (std::size_t r = 1; r < rows_.size(); ++r) {
-        out << "<tr>";
+        out << (classes_[r].empty() ? "<tr>" : "<tr class=\"" + HtmlText(classes_[r]) + "\">");
         for (std::size_t c = 0; c < rows_[r].size(); ++c) {
             const std::string& cell = rows_[r][c];
             out << (c > 0 ? "<td class=\"num\">" : "<td>") << HtmlText(cell) << "</td>";
@@ -253,18 +253,22 @@ std::string TextTable::RenderHtml(std::string_view cssClass) const {
 }
 
 std::string WrapText(std::string_view text, std::size_t columns, std::string_view indent) {
-    std::string out, line;
-    std::size_t start = 0;
+    std::string out;
+    std::size_t start = text.find_first_not_of(' ');
+    if (start == std::string_view::npos) return "";
+    std::string line(text.substr(0, start));  // the text's own leading spaces stay
+    const std::size_t lead = start;
     while (start < text.size()) {
         std::size_t end = text.find(' ', start);
         if (end == std::string_view::npos) end = text.size();
         const std::string_view word = text.substr(start, end - start);
         start = end + 1;
         if (word.empty()) continue;
-        if (!line.empty() && DisplayWidth(line) + 1 + DisplayWidth(word) > columns) {
+        const bool fresh = line.size() == (out.empty() ? lead : indent.size());
+        if (!fresh && DisplayWidth(line) + 1 + DisplayWidth(word) > columns) {
             out += line + '\n';
             line = std::string(indent);
-        } else if (!line.empty() && line != indent) {
+        } else if (!fresh) {
             line += ' ';
         }
         line += word;

@@ -18,7 +18,11 @@ inline constexpr std::size_t kTerminalColumns = 120;
 class TextTable {
   public:
     explicit TextTable(std::vector<std::string> header) : rows_{std::move(header)} {}
-    void AddRow(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
+    // `htmlClass`: the row's class in RenderHtml (e.g. "published"); the other formats ignore it.
+    void AddRow(std::vector<std::string> row, std::string htmlClass = "") {
+        rows_.push_back(std::move(row));
+        classes_.push_back(std::move(htmlClass));
+    }
     // First column left-aligned, the rest right-aligned, a rule under the header; widths count
     // UTF-8 code points, so "σ" takes one column. A table wider than `maxColumns` is cut into
     // blocks of whole columns, one under the other, each repeating the first column, so every
@@ -32,6 +36,7 @@ class TextTable {
   private:
     std::string RenderColumns(const std::vector<std::size_t>& columns) const;
     std::vector<std::vector<std::string>> rows_;
+    std::vector<std::string> classes_ = {""};  // per row, the header's first
 };
 
 // A table with its title, a sentence or two saying what it shows, and notes under it: one unit of
@@ -48,7 +53,8 @@ std::string SectionsText(const std::vector<ReportSection>& sections);
 std::string SectionsMarkdown(const std::vector<ReportSection>& sections);
 
 // `text` cut at spaces into lines of at most `columns` display columns (a longer word stays
-// whole), every line after the first led by `indent`; each line ends in '\n'.
+// whole), every line after the first led by `indent` (the first keeps the text's own leading
+// spaces); each line ends in '\n'.
 std::string WrapText(std::string_view text, std::size_t columns = kTerminalColumns,
                      std::string_view indent = "");
 

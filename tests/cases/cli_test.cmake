@@ -3,6 +3,7 @@
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...)
+include("${CMAKE_CURRENT_LIST_DIR}/check_html_links.cmake")
 
 include("${CMAKE_CURRENT_LIST_DIR}/cli_expect_run.cmake")
 
@@ -25,13 +26,62 @@ endif()
 expect_run(0 "^case,method,lexel_plane_deg,.*\nsingle_plane,normal," "^$" run "${good}" --format csv --method normal)
 expect_run(0 "\"cases\": \\[" "" run "${good}" "${CASES}/flatland/simple_geometry.json" --format json --method normal)
 
-# --out writes the three files per case.
-expect_run(0 "" "wrote 3 files" run "${good}" --method normal --out "${WORK}/out")
+# --out writes the three files per case and index.html, whose every link resolves.
+expect_run(0 "" "wrote index.html and 3 files" run "${good}" --method normal --out "${WORK}/out")
 foreach(ext json csv md)
     if(NOT EXISTS "${WORK}/out/single_plane.${ext}")
         message(FATAL_ERROR "missing ${WORK}/out/single_plane.${ext}")
     endif()
 endforeach()
+check_html_links("${WORK}/out/index.html")
+if(NOT htmlLinks EQUAL 3)
+    message(FATAL_ERROR "${WORK}/out/index.html: ${htmlLinks} links, expected 3")
+endif()
+# A name with HTML's and URLs' special characters: escaped in the text, encoded in the links.
+file(READ "${good}" goodText)
+string(REPLACE "\"single_plane\"" "\"odd <i>name & \\\"quoted\\\", 50%\"" oddText "${goodText}")
+file(WRITE "${WORK}/odd.json" "${oddText}")
+expect_run(0 "" "wrote index.html and 3 files" run "${WORK}/odd.json" --method normal --out "${WORK}/odd")
+check_html_links("${WORK}/odd/index.html")
+file(READ "${WORK}/odd/index.html" page)
+if(NOT htmlLinks EQUAL 3 OR page MATCHES "<i>name" OR NOT page MATCHES "odd &lt;i&gt;name &amp; &quot;quoted&quot;, 50%"
+   OR NOT page MATCHES "href=\"odd%20%3Ci%3Ename%20%26%20%22quoted%22%2C%2050%25\\.json\"")
+    message(FATAL_ERROR "${WORK}/odd/index.html: the name is not escaped or encoded:\n${page}")
+endif()
+# The link checker itself fails on a missing file, an anchor without its id, a link out of the
+# directory, and a page cut short.
+file(MAKE_DIRECTORY "${WORK}/badhtml")
+file(WRITE "${WORK}/badhtml/there.png" "")
+set(head "<!DOCTYPE html>\n<html lang=\"en\">\n<body>")
+set(tail "</body>\n</html>\n")
+foreach(bad "no such file|<img src=\"there.png\"><img src=\"missing.png\">"
+            "names no id|<a href=\"#nowhere\">x</a>"
+            "leaves the output|<a href=\"../there.png\">x</a>"
+            "leaves the output|<img src=\"https://example.org/x.png\">"
+            "not a whole|<img src=\"there.png\">")
+    string(REPLACE "|" ";" bad "${bad}")
+    list(GET bad 0 why)
+    list(GET bad 1 content)
+    if(why STREQUAL "not a whole")
+        file(WRITE "${WORK}/badhtml/index.html" "${head}${content}")
+    else()
+        file(WRITE "${WORK}/badhtml/index.html" "${head}${content}${tail}")
+    endif()
+    execute_process(COMMAND "${CMAKE_COMMAND}" -DHTML=${WORK}/badhtml/index.html
+                            -P "${CMAKE_CURRENT_LIST_DIR}/check_html_links.cmake"
+                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(code EQUAL 0 OR NOT err MATCHES "${why}")
+        message(FATAL_ERROR "the HTML checker passed a page with ${content} (${code}): ${err}")
+    endif()
+endforeach()
+file(WRITE "${WORK}/badhtml/index.html" "${head}<img src=\"there.png\">${tail}")
+check_html_links("${WORK}/badhtml/index.html" ALL_IMAGES)
+
+# --help lists every method with one line (issue 24).
+expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  sdsm-optimal +[^\n]+\n+$"
+           "^$" run --help)
+expect_run(0 "\n3D methods \\(default: all\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  sdsm-optimal +[^\n]+\n+$"
+           "^$" sweep --help)
 
 # Bad input: one line naming the field and the reason, exit 2, no output files.
 expect_run(2 "^$" "^lexel: error: .*bad_fov.json: /camera/fov_deg: must be in \\(0, 180\\), got 190\n$"
@@ -279,7 +329,7 @@ function(expect_count json what)
 endfunction()
 
 # The table lists every method, in the registry's order.
-expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\n  the report's focused 4000² truth map disagrees with the rays on [0-9]+ pixels[^\n]*\n[^\n]*\nmethod +misclassified +shadow +light +uncovered[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal "
+expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\n  the report's focused 4000² truth map disagrees with the rays on [0-9]+ pixels?[^\n]*\n[^\n]*\nmethod +misclassified +shadow +light +uncovered[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal "
            "^$" run "${small}")
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" run "${small}" --format json)
 string(JSON nLights LENGTH "${lastStdout}" lights)
@@ -305,8 +355,15 @@ expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovere
 
 # --out writes the report and three images per light and method (a partitioned method: a map
 # image per cascade; fp-lispsm has 3 face wedges here).
-expect_run(0 "^light 0" "^lexel: wrote 77 images and spatial_small.json/.csv to [^\n]*\n$"
+expect_run(0 "^light 0" "^lexel: wrote 77 images, index.html and spatial_small.json/.csv to [^\n]*\n$"
            run "${small}" --out "${WORK}/out3d")
+# index.html shows every image and links both data files (issue 24: 154 loose PNGs, no index).
+check_html_links("${WORK}/out3d/index.html" ALL_IMAGES)
+file(READ "${WORK}/out3d/index.html" page)
+if(NOT htmlLinks GREATER 155 OR NOT page MATCHES "href=\"spatial_small\\.json\"" OR NOT page MATCHES "href=\"spatial_small\\.csv\""
+   OR NOT page MATCHES "<h2 id=\"light0\">Light 0: point \\(8, 8, 2\\)</h2>" OR NOT page MATCHES "<dt>misclassified</dt>")
+    message(FATAL_ERROR "${WORK}/out3d/index.html: ${htmlLinks} links:\n${page}")
+endif()
 foreach(file spatial_small.json spatial_small.csv)
     if(NOT EXISTS "${WORK}/out3d/${file}")
         message(FATAL_ERROR "missing ${WORK}/out3d/${file}")
@@ -331,6 +388,30 @@ file(READ "${WORK}/out3d/spatial_small.json" written)
 string(JSON method0 GET "${written}" lights 0 methods 0 method)
 if(NOT method0 STREQUAL "optimal")
     message(FATAL_ERROR "unexpected ${WORK}/out3d/spatial_small.json:\n${written}")
+endif()
+
+# Progress on a terminal (issue 24: lexel run on a 3D case was silent for 30-40 s): `script` gives
+# lexel a pseudo-terminal; the bar appears at once with "estimating" and ends with every step
+# done. Without a terminal (every other test here) stderr stays empty.
+find_program(SCRIPT_PROGRAM script)
+if(SCRIPT_PROGRAM)
+    foreach(command "run;run spatial_small;2/2 steps"
+                    "timing;timing;3/3 frames")
+        list(GET command 0 subcommand)
+        list(GET command 1 label)
+        list(GET command 2 done)
+        if(subcommand STREQUAL "run")
+            set(args "--method optimal --method focused --no-map-truth")
+        else()
+            set(args "--frames 2 --lights 1")
+        endif()
+        execute_process(COMMAND "${SCRIPT_PROGRAM}" -qec "'${LEXEL}' ${subcommand} '${small}' ${args} > /dev/null" /dev/null
+                        RESULT_VARIABLE code OUTPUT_VARIABLE tty ERROR_VARIABLE err)
+        if(NOT code EQUAL 0 OR NOT tty MATCHES "${label} \\[\\.+\\] 0/[0-9]+ [a-z]+, 0 s elapsed, estimating the time left"
+           OR NOT tty MATCHES "${label} \\[#+\\] ${done}, [0-9]+ s elapsed")
+            message(FATAL_ERROR "lexel ${subcommand} on a terminal: exit ${code}, no progress bar:\n${tty}${err}")
+        endif()
+    endforeach()
 endif()
 
 # The camera-path study kept its evaluator past the pose's scene it referenced (issue 24: with one
@@ -394,8 +475,13 @@ expect_run(0 "spatial_small, 2[ \n]+directional lights" "^$"
 
 # --out writes four files; --methods restricts the columns; the count defaults to the case's.
 expect_run(0 "^Table 1 as published [^\n]*spatial_small, 4 point lights; in[ \n]+parentheses: % more than focused"
-           "^lexel: wrote table1.md, table1.csv, sweep.json, lights.csv to [^\n]*\n$"
+           "^lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv to [^\n]*\n$"
            sweep "${small}" --methods focused --methods normal --out "${WORK}/sweep")
+check_html_links("${WORK}/sweep/index.html")
+file(READ "${WORK}/sweep/index.html" page)
+if(NOT page MATCHES "<h2 id=\"table0\">Table 1 as published" OR NOT page MATCHES "href=\"lights\\.csv\"")
+    message(FATAL_ERROR "${WORK}/sweep/index.html:\n${page}")
+endif()
 foreach(file table1.md table1.csv sweep.json lights.csv)
     if(NOT EXISTS "${WORK}/sweep/${file}")
         message(FATAL_ERROR "missing ${WORK}/sweep/${file}")
@@ -427,7 +513,7 @@ expect_run(0 "\"method\": \"psm\"" "^$" sweep "${small}" --lights 2 --method psm
 # Partitioned methods: the equal-texel table; --out adds the cascade-count study (k = 1, 2, 4, 8)
 # as CSV and a plot, and the first light's images with one map per cascade.
 expect_run(0 "\nEqual texels [^\n]*\n  spatial_small, 3 point lights; ref = optimal\n[^\n]*\n[^\n]*\nmethod +maps +misclassified +than ref[^\n]*\n-+\noptimal +1 [^\n]*\nsdsm +2 [^\n]*\nsdsm-optimal +2 "
-           "^lexel: wrote table1.md, table1.csv, sweep.json, lights.csv, cascades.csv, cascades.png and 8 images of the first light to [^\n]*\n$"
+           "^lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv, cascades.csv, cascades.png and 8 images of the first light to [^\n]*\n$"
            sweep "${small}" --lights 3 --methods optimal --methods sdsm --methods sdsm-optimal
            --cascades 2 --out "${WORK}/cascades")
 foreach(file cascades.csv cascades.png spatial_small_light0_sdsm_map1.png)
@@ -435,6 +521,7 @@ foreach(file cascades.csv cascades.png spatial_small_light0_sdsm_map1.png)
         message(FATAL_ERROR "missing ${WORK}/cascades/${file}")
     endif()
 endforeach()
+check_html_links("${WORK}/cascades/index.html" ALL_IMAGES)
 file(STRINGS "${WORK}/cascades/cascades.csv" rows)
 list(LENGTH rows nRows)
 list(GET rows 0 header)

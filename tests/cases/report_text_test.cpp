@@ -98,6 +98,7 @@ TEST(TextTable, WrapsTextAtSpacesWithinTheWidth) {
     EXPECT_EQ(WrapText("σσσσ σσσσ", 9), "σσσσ σσσσ\n");  // code points, not bytes
     EXPECT_EQ(WrapText("averyveryverylongword x", 5), "averyveryverylongword\nx\n");
     EXPECT_EQ(WrapText(""), "");
+    EXPECT_EQ(WrapText("  indented text here", 12, "    "), "  indented\n    text\n    here\n");
 }
 
 // ---- CSV and JSON numbers ----
