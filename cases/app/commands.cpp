@@ -175,8 +175,10 @@ int RunSpatial(const RunFlags& flags) {
     else
         std::cout << SpatialRunText(scene, run);
     if (!out) return 0;
-    const std::vector<SpatialImageFile> images =
-        out->Writing([&] { return WriteSpatialImages(out->StagingDir(), scene, run); });
+    Progress imageBar("run " + scene.name + ": images", SpatialImageCount(run), "images");
+    const std::vector<SpatialImageFile> images = out->Writing([&] {
+        return WriteSpatialImages(out->StagingDir(), scene, run, [&] { imageBar.Step(); });
+    });
     out->WriteText(scene.name + ".json", SpatialRunJson(scene, run).dump(2) + "\n");
     out->WriteText(scene.name + ".csv", SpatialRunCsv(run));
     out->WriteText("index.html",

@@ -288,9 +288,17 @@ ImageFigure MapFigure(const std::string& title, const std::string& what,
 
 }  // namespace
 
+std::size_t SpatialImageCount(const SpatialRun& run) {
+    std::size_t images = 0;
+    for (const spatial::LightOutcome& o : run.outcomes)
+        for (const spatial::MethodOutcome& m : o.methods)
+            images += 2 + (m.cascades.empty() ? 1 : m.cascadeMaps.size());
+    return images;
+}
+
 std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& dir,
-                                                 const spatial::Scene& scene,
-                                                 const SpatialRun& run) {
+                                                 const spatial::Scene& scene, const SpatialRun& run,
+                                                 const std::function<void()>& onImage) {
     std::vector<SpatialImageFile> files;
     const spatial::Evaluator& evaluator = *run.evaluator;
     const auto write = [&](std::size_t l, const std::string& method, const std::string& kind,
@@ -299,6 +307,7 @@ std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& di
             scene.name + "_light" + std::to_string(l) + "_" + method + "_" + kind + ".png";
         WriteImageFigure((dir / file).string(), image, figure);
         files.push_back({file, l, method, kind, figure.lines.front()});
+        if (onImage) onImage();
     };
     for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
         const spatial::LightOutcome& o = run.outcomes[l];

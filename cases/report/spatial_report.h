@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -47,8 +48,11 @@ struct SpatialImageFile {
 // the light and the method, its counts, its colour key, uncovered pixels marked and, for maps, the
 // depth scale. Returns the files in the order written. Throws std::runtime_error when a file
 // cannot be written.
+// `onImage` (may be empty) is called after each file (a progress bar; SpatialImageCount in all).
 std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& dir,
-                                                 const spatial::Scene& scene,
-                                                 const SpatialRun& run);
+                                                 const spatial::Scene& scene, const SpatialRun& run,
+                                                 const std::function<void()>& onImage = {});
+// The images WriteSpatialImages writes for `run`.
+std::size_t SpatialImageCount(const SpatialRun& run);
 
 }  // namespace lexel::cases

@@ -54,9 +54,11 @@ spatial::LightOutcome EvaluatePose(const spatial::Scene& poseScene,
 }
 
 CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBackend& backend,
-                           std::size_t l, const std::vector<std::string>& methods) {
+                           std::size_t l, const std::vector<std::string>& methods,
+                           const std::function<void()>& onMethodDone) {
     spatial::EvaluationOptions options;
     options.methods = methods;
+    if (onMethodDone) options.onMethodDone = [&](std::string_view) { onMethodDone(); };
     if (std::find(methods.begin(), methods.end(), "optimal") == methods.end())
         options.methods.push_back("optimal");
     options.keepBuffers = true;
@@ -120,11 +122,17 @@ int CameraPathStudy::Changes() const {
 
 std::vector<CameraPathStudy> RunCameraPathStudy(const spatial::Scene& scene,
                                                 const spatial::RenderBackend& backend,
-                                                const std::vector<std::string>& methods) {
+                                                const std::vector<std::string>& methods,
+                                                const std::function<void()>& onMethodDone) {
     std::vector<CameraPathStudy> studies;
     for (std::size_t l = 0; l < scene.lights.size(); ++l)
-        studies.push_back(StudyLight(scene, backend, l, methods));
+        studies.push_back(StudyLight(scene, backend, l, methods, onMethodDone));
     return studies;
+}
+
+std::size_t CameraPathSteps(const spatial::Scene& scene, const std::vector<std::string>& methods) {
+    const bool hasOptimal = std::find(methods.begin(), methods.end(), "optimal") != methods.end();
+    return scene.lights.size() * scene.cameraPath.size() * (methods.size() + (hasOptimal ? 0 : 1));
 }
 
 }  // namespace lexel::cases

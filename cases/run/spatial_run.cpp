@@ -6,7 +6,7 @@
 namespace lexel::cases {
 
 std::size_t SpatialRunSteps(const spatial::Scene& scene, const SpatialRunOptions& options) {
-    return scene.lights.size() * options.methods.size() + (scene.cameraPath.empty() ? 0 : 1);
+    return scene.lights.size() * options.methods.size() + CameraPathSteps(scene, options.methods);
 }
 
 SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& options) {
@@ -32,8 +32,7 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
         }
     }
     if (!scene.cameraPath.empty()) {
-        run.cameraPath = RunCameraPathStudy(scene, *run.backend, options.methods);
-        if (options.onStep) options.onStep();
+        run.cameraPath = RunCameraPathStudy(scene, *run.backend, options.methods, options.onStep);
     }
     return run;
 }

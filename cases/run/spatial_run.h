@@ -25,8 +25,8 @@ struct SpatialRunOptions {
     std::function<void()> onStep;
 };
 
-// The steps of RunSpatialCase: one per fixed light and method, and one for the camera-path study
-// when the case has a camera_path.
+// The steps of RunSpatialCase: one per fixed light and method, and the camera-path study's
+// (CameraPathSteps) when the case has a camera_path.
 std::size_t SpatialRunSteps(const spatial::Scene& scene, const SpatialRunOptions& options);
 
 struct SpatialRun {

@@ -85,9 +85,13 @@ TEST(SpatialImages, EveryImageIsListedWithItsLightMethodAndKind) {
         ("lexel_spatial_images_" +
          std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
     fs::create_directories(dir);
-    const std::vector<SpatialImageFile> files = WriteSpatialImages(dir, scene, run);
+    std::size_t calls = 0;
+    const std::vector<SpatialImageFile> files =
+        WriteSpatialImages(dir, scene, run, [&] { ++calls; });
     // 12 single-map methods × 3, 6 partitioned × (2 + 4 cascades), fp-lispsm 2 + 3 wedges.
     EXPECT_EQ(files.size(), 77u);
+    EXPECT_EQ(SpatialImageCount(run), 77u);
+    EXPECT_EQ(calls, 77u);
     std::set<std::string> names;
     for (const SpatialImageFile& f : files) {
         EXPECT_TRUE(fs::is_regular_file(dir / f.file)) << f.file;
@@ -103,6 +107,25 @@ TEST(SpatialImages, EveryImageIsListedWithItsLightMethodAndKind) {
     EXPECT_GT(frame.height, 3 * 120 + 60);
     std::error_code ignored;
     fs::remove_all(dir, ignored);
+}
+
+// Issue 24: lexel run on a 3D case was silent for 30-40 s; its progress bar counts these steps.
+TEST(SpatialRun, CallsOnStepOncePerCountedStep) {
+    spatial::Scene scene = SmallScene();
+    spatial::Camera moved = scene.camera;
+    moved.position += glm::dvec3(0.5, 0.0, 0.0);
+    scene.cameraPath = {scene.camera, moved};
+    SpatialRunOptions options;
+    options.methods = {"focused", "normal"};
+    options.mapTruth = false;
+    std::size_t calls = 0;
+    options.onStep = [&] { ++calls; };
+    // One light: 2 methods, then 2 poses × (2 methods + optimal for the hysteresis).
+    EXPECT_EQ(SpatialRunSteps(scene, options), 2u + 2u * 3u);
+    const SpatialRun run = RunSpatialCase(scene, options);
+    EXPECT_EQ(calls, SpatialRunSteps(scene, options));
+    ASSERT_EQ(run.cameraPath.size(), 1u);
+    EXPECT_EQ(run.cameraPath[0].poses.size(), 2u);
 }
 
 }  // namespace
