@@ -482,7 +482,7 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
     std::cout << TablesText(results);
     for (const auto& [name, rows] : studies) std::cout << LowresText(name, rows) << '\n';
     const std::string summary = LowresSummary(results, lowres);
-    std::cout << summary;
+    std::cout << WrapText(summary);
 
     std::string markdown =
         TablesMarkdown(results) + "## Low-resolution decision (thesis 4.1.1, Fig. 4.1)\n\n";

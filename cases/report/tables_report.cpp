@@ -17,12 +17,12 @@ namespace {
 TextTable ComparisonTable(const TableResult& r) {
     const bool twoFrusta = r.thesis.title == "Projection Aliasing";
     std::vector<std::string> header = {"row", "angle", "worst", "average", "mean+σ"};
-    if (twoFrusta) header.push_back("mean (2 frusta)");
-    for (const char* h : {"thesis angle", "thesis worst", "thesis average", "thesis mean+σ"})
+    if (twoFrusta) header.push_back("mean\n(2 frusta)");
+    for (const char* h : {"thesis\nangle", "thesis\nworst", "thesis\naverage", "thesis\nmean+σ"})
         header.push_back(h);
-    if (twoFrusta) header.push_back("thesis mean (2 frusta)");
-    header.push_back("avg / L1 opt");
-    header.push_back("thesis avg / L1 opt");
+    if (twoFrusta) header.push_back("thesis\nmean\n(2 frusta)");
+    header.push_back("avg /\nL1 opt");
+    header.push_back("thesis\navg /\nL1 opt");
     TextTable table(header);
     const double oursL1 = r.Method("optimal-l1").stats.average;
     const ThesisRow* thesisL1 = r.thesis.RowFor("optimal-l1");
@@ -81,7 +81,7 @@ std::string SceneLine(const TableResult& r) {
 std::string TablesText(const std::vector<TableResult>& results) {
     std::ostringstream out;
     for (const auto& r : results)
-        out << r.thesis.title << " (" << SceneLine(r) << ")\n"
+        out << WrapText(r.thesis.title + " (" + SceneLine(r) + ")", kTerminalColumns, "  ")
             << ComparisonTable(r).Render() << '\n';
     return out.str();
 }

@@ -253,6 +253,14 @@ std::string TextTable::RenderHtml(std::string_view cssClass) const {
 }
 
 std::string WrapText(std::string_view text, std::size_t columns, std::string_view indent) {
+    // Each line of the text on its own: '\n' is a hard break.
+    if (const std::size_t newline = text.find('\n'); newline != std::string_view::npos) {
+        const std::string_view rest = text.substr(newline + 1);
+        return WrapText(text.substr(0, newline), columns, indent) +
+               (text.substr(0, newline).find_first_not_of(' ') == std::string_view::npos ? "\n"
+                                                                                         : "") +
+               (rest.empty() ? "" : WrapText(rest, columns, indent));
+    }
     std::string out;
     std::size_t start = text.find_first_not_of(' ');
     if (start == std::string_view::npos) return "";

@@ -54,7 +54,7 @@ std::string SectionsMarkdown(const std::vector<ReportSection>& sections);
 
 // `text` cut at spaces into lines of at most `columns` display columns (a longer word stays
 // whole), every line after the first led by `indent` (the first keeps the text's own leading
-// spaces); each line ends in '\n'.
+// spaces); each line ends in '\n'. A '\n' in the text is a hard break (an empty line stays).
 std::string WrapText(std::string_view text, std::size_t columns = kTerminalColumns,
                      std::string_view indent = "");
 

@@ -123,7 +123,8 @@ std::string TimingText(const spatial::Scene& scene, const TimingRun& run,
             table.AddRow(TextRow(std::string(name) + " " + std::to_string(k), (*frames)[k]));
         table.AddRow(TextRow(std::string(name) + " mean", MeanTimes(*frames)));
     }
-    out << table.Render() << '\n' << WrapText(RatioText(run, report), kTerminalColumns, "  ");
+    out << table.Render() << '\n'
+        << WrapText(RatioText(run, report), kTerminalColumns, "  ") << '\n';
     out << "report Table 3 (" << report.table3Lights << " lights, " << report.table3MapSide
         << "² maps, GeForce 7800 GT) beside our means:\n"
         << Table3Text(run, report);

@@ -633,7 +633,7 @@ expect_run(0 "optimal-l1" "^$" run "${WORK}/fitted/single_plane.json" --method o
 expect_run(2 "^$" "^lexel: error: --case: unknown thesis case 'nope' \\(known: single_plane, simple_geometry, light_from_top, projection_aliasing\\)\n$"
            fit-thesis --case nope --out "${WORK}/fitted_bad")
 # tables: the fitted scenes, and how far each is from its published table.
-expect_run(0 "^Single Plane Geometry \\(fitted scene fitted/single_plane.json, 1000 visible pixels, 1028 lexels; against the published table: worst angle error 0.19°, worst footprint error 1.2%\\)"
+expect_run(0 "^Single Plane Geometry \\(fitted scene fitted/single_plane.json, 1000 visible pixels, 1028 lexels; against the published\n  table: worst angle error 0.19°, worst footprint error 1.2%\\)"
            "^$" tables --out "${WORK}/tables")
 message(STATUS "cli tests passed")
 

@@ -99,6 +99,8 @@ TEST(TextTable, WrapsTextAtSpacesWithinTheWidth) {
     EXPECT_EQ(WrapText("averyveryverylongword x", 5), "averyveryverylongword\nx\n");
     EXPECT_EQ(WrapText(""), "");
     EXPECT_EQ(WrapText("  indented text here", 12, "    "), "  indented\n    text\n    here\n");
+    EXPECT_EQ(WrapText("one two\nthree four\n", 9), "one two\nthree\nfour\n");
+    EXPECT_EQ(WrapText("a\n\nb", 9), "a\n\nb\n");
 }
 
 // ---- CSV and JSON numbers ----
