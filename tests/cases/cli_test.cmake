@@ -167,6 +167,19 @@ expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*spatial_small.json would 
 file(WRITE "${WORK}/self/sweep.json" "${smallText}")
 expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*sweep.json would overwrite the case file [^\n]*self/sweep.json\n$"
            sweep "${WORK}/self/sweep.json" --lights 1 --method focused --out "${WORK}/self")
+# index.html is an output of run and sweep too (issue 24): a case file of that name is kept.
+file(WRITE "${WORK}/selfhtml/flat/index.html" "${goodText}")
+file(WRITE "${WORK}/selfhtml/3d/index.html" "${smallText}")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*index.html would overwrite the case file [^\n]*flat/index.html\n$"
+           run "${WORK}/selfhtml/flat/index.html" --method normal --out "${WORK}/selfhtml/flat")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*index.html would overwrite the case file [^\n]*3d/index.html\n$"
+           run "${WORK}/selfhtml/3d/index.html" --method focused --out "${WORK}/selfhtml/3d")
+expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*index.html would overwrite the case file [^\n]*3d/index.html\n$"
+           sweep "${WORK}/selfhtml/3d/index.html" --lights 1 --method focused --out "${WORK}/selfhtml/3d")
+file(GLOB_RECURSE written "${WORK}/selfhtml/*")
+if(NOT written STREQUAL "${WORK}/selfhtml/3d/index.html;${WORK}/selfhtml/flat/index.html")
+    message(FATAL_ERROR "a refused --out changed ${WORK}/selfhtml: ${written}")
+endif()
 file(GLOB written "${WORK}/self/*")
 file(READ "${WORK}/self/single_plane.json" kept)
 list(LENGTH written nWritten)
