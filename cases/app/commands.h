@@ -15,6 +15,9 @@ namespace lexel::cases {
 // cases/published under this directory.
 std::filesystem::path DataDirectory();
 
+// The method names with one line each, for --help: the flatland methods, the 3D methods, or both.
+std::string MethodsHelp(bool flatland, bool spatial);
+
 struct RunFlags {
     std::vector<std::string> cases;    // case files
     std::vector<std::string> methods;  // empty: all

@@ -64,7 +64,8 @@ int RunLexel(int argc, char** argv) {
     std::vector<std::string> casePaths, methods;
     std::string metric = "l1", format = "table", runOut;
     run->add_option("cases", casePaths, "Case files (JSON)")->required()->check(CLI::ExistingFile);
-    run->add_option("--method", methods, "Methods to run (default: all)");
+    run->add_option("--method", methods, "Methods to run (default: all; listed below)");
+    run->footer(lexel::cases::MethodsHelp(true, true));
     run->add_option("--metric", metric, "Metric the sweep minimizes")
         ->check(CLI::IsMember({"l1", "l2", "linf"}));
     run->add_option("--format", format, "Output format")
@@ -97,7 +98,9 @@ int RunLexel(int argc, char** argv) {
         ->add_option("--light-type", sweepLightType,
                      "Sweep point or directional lights (default: the case's light_sweep type)")
         ->check(CLI::IsMember({"point", "directional"}));
-    sweep->add_option("--methods,--method", sweepMethods, "Methods to run (default: all)");
+    sweep->add_option("--methods,--method", sweepMethods,
+                      "Methods to run (default: all; listed below)");
+    sweep->footer(lexel::cases::MethodsHelp(false, true));
     sweep->add_option("--format", sweepFormat, "Output format")
         ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
     sweep
@@ -169,7 +172,9 @@ int RunLexel(int argc, char** argv) {
             ->check(CLI::ExistingFile);
     for (const char* flag : {"--fov-y", "--aspect", "--near", "--far"})
         storageCase->excludes(storage->get_option(flag));
-    storage->add_option("--method", storageFlags.methods, "With --case: methods (default: all)");
+    storage->add_option("--method", storageFlags.methods,
+                        "With --case: methods (default: all; listed below)");
+    storage->footer(lexel::cases::MethodsHelp(false, true));
     storage->add_option("--format", storageFlags.format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
     storage

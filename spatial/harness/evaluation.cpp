@@ -295,6 +295,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
         m.winner = computed.winner;
         Measure(lightSpace, computed, out, grazing, truth, options.keepBuffers, &m);
         out.methods.push_back(std::move(m));
+        if (options.onMethodDone) options.onMethodDone(method);
     }
     if (options.keepBuffers) out.truth = std::move(truth);
     return out;

@@ -21,9 +21,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lexel/spatial/cascades.h"
@@ -62,6 +64,8 @@ struct EvaluationOptions {
     bool mapTruth = false;             // also render the report's focused truth map
     int truthMapSize = 4000;           // its resolution (square)
     bool keepBuffers = false;          // keep shades and maps (for images)
+    // Called after each method is measured, with its name (a progress bar); may be empty.
+    std::function<void(std::string_view method)> onMethodDone;
 };
 
 // One cascade of a partitioned method: its matrix, map, depth interval and readback points
