@@ -69,14 +69,13 @@ void CheckDepthRange(const JsonField& field, const spatial::Camera& camera) {
 }
 
 // Refuses a geometry entry whose transformed vertices reach beyond kMaxCoordinate (a scale or
-// translate too large; measured in double, before the float vertices would overflow to inf) or
-// collapse to one point (a scale so small that every float vertex coincides).
+// translate too large) or collapse to one point (a scale so small that every vertex coincides).
 void CheckEntryExtent(const JsonField& entry, const spatial::TriangleMesh& osMesh,
                       const spatial::Transform& transform, const spatial::TriangleMesh& wsMesh) {
     const JsonField field = entry.Has("transform") ? entry["transform"] : entry;
     const glm::dmat4 wsFromOs = transform.Matrix();
     double largest = 0.0;
-    for (const glm::vec3& osPoint : osMesh.positions)
+    for (const glm::dvec3& osPoint : osMesh.positions)
         largest =
             std::max(largest, LargestMagnitude(glm::dvec3(wsFromOs * glm::dvec4(osPoint, 1.0))));
     if (!(largest <= kMaxCoordinate))
@@ -84,8 +83,8 @@ void CheckEntryExtent(const JsonField& entry, const spatial::TriangleMesh& osMes
                    ", coordinates must be at most " + FormatNumber(kMaxCoordinate));
     const spatial::Bounds wsBounds = wsMesh.ComputeBounds();
     if (!wsBounds.Empty() && !(wsBounds.Radius() > 0.0))
-        field.Fail("the transformed geometry collapses to the point " + FormatVec(wsBounds.lo) +
-                   " (its float vertices coincide)");
+        field.Fail("the transformed geometry collapses to the point " +
+                   FormatVec(wsBounds.Center()) + " (its extent rounds to zero)");
 }
 
 spatial::Resolution ReadResolution(const JsonField& field) {
