@@ -4,7 +4,7 @@
 // A view is given by a 3×4 map from homogeneous world points to homogeneous image points
 // (x·w, y·w, w), x and y in pixels. Triangles are clipped against w ≥ wMin (points behind the
 // camera or the light's plane p4·X = 0 never map), projected, and every pixel centre inside is
-// visited with the exact world point under it: for a projective map the perspective-correct
+// visited with the exact point under it: for a projective map the perspective-correct
 // barycentrics λ_i = (e_i/w_i) / Σ_j (e_j/w_j), with e_i the screen-space edge functions, give the
 // point on the triangle whose image is the pixel centre exactly (Heckbert & Moreton 1995). The
 // nearest point by a caller-chosen depth wins; ties go to the lower triangle index, so the result
@@ -35,19 +35,19 @@ using ImageFromWorld = glm::dmat4x3;
 ImageFromWorld ImageRows(const glm::dmat4& m);  // rows 0, 1, 3 of m
 
 // The result of a pass: per pixel the nearest depth key (+inf where nothing), the triangle
-// (-1 where nothing) and the world point.
+// (-1 where nothing) and the point, relative to the pass's view origin (RasterizeNearest).
 struct RasterBuffer {
     Resolution resolution;
     std::vector<double> depth;
     std::vector<std::int32_t> triangle;
-    std::vector<glm::dvec3> wsPoint;
+    std::vector<glm::dvec3> point;  // x - wsViewOrigin
 };
 
 namespace raster_detail {
 
 struct ClipVertex {
     glm::dvec3 image;  // (x·w, y·w, w)
-    glm::dvec3 world;
+    glm::dvec3 point;  // relative to the view origin
 };
 
 // Sutherland–Hodgman against the single plane w ≥ wMin; at most 4 vertices out.
@@ -60,7 +60,7 @@ inline int ClipNear(const std::array<ClipVertex, 3>& in, double wMin, ClipVertex
         if (aIn) out[n++] = a;
         if (aIn != bIn) {
             const double t = (wMin - a.image.z) / (b.image.z - a.image.z);
-            out[n++] = {a.image + t * (b.image - a.image), a.world + t * (b.world - a.world)};
+            out[n++] = {a.image + t * (b.image - a.image), a.point + t * (b.point - a.point)};
         }
     }
     return n;
@@ -88,11 +88,17 @@ inline bool OwnsTies(const glm::dvec2& a, const glm::dvec2& b) {
 }  // namespace raster_detail
 
 // Rasterizes `mesh` through `view` into `buffer` (which must be sized and initialised: depth
-// +inf, triangle -1). DepthFn(const glm::dvec3& wsPoint) → double is the depth key (smaller is
-// nearer). wMin > 0 is the clip distance in the units of w. Parallel over bands of rows.
+// +inf, triangle -1). Points are taken relative to wsViewOrigin before anything is computed:
+// `view` maps homogeneous x - wsViewOrigin, DepthFn(const glm::dvec3& point) → double gets the
+// point under the pixel centre so relative and returns its depth key (smaller is nearer), and the
+// buffer keeps it so. With the eye (or the light) as origin, a scene far from the world's origin
+// keeps its digits: no large translation cancels, and a point's rounding is relative to its
+// distance from the viewer, not from the world's origin. wMin > 0 is the clip distance in the
+// units of w. Parallel over bands of rows.
 template <class DepthFn>
 void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, double wMin,
-                      const DepthFn& depthOf, RasterBuffer* buffer) {
+                      const DepthFn& depthOf, RasterBuffer* buffer,
+                      const glm::dvec3& wsViewOrigin = glm::dvec3(0.0)) {
     using namespace raster_detail;
     const Resolution res = buffer->resolution;
     constexpr int kBandRows = 16;
@@ -102,7 +108,7 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
     struct Piece {
         std::array<glm::dvec2, 3> xy;
         std::array<double, 3> invW;
-        std::array<glm::dvec3, 3> world;
+        std::array<glm::dvec3, 3> point;
         glm::dvec2 lo, hi;
         std::int32_t triangle;
     };
@@ -111,8 +117,8 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         std::array<ClipVertex, 3> v;
         for (int k = 0; k < 3; ++k) {
-            const glm::dvec3 ws(mesh.positions[mesh.triangles[t][k]]);
-            v[k] = {view * glm::dvec4(ws, 1.0), ws};
+            const glm::dvec3 point = mesh.positions[mesh.triangles[t][k]] - wsViewOrigin;
+            v[k] = {view * glm::dvec4(point, 1.0), point};
         }
         ClipVertex clipped[4];
         const int n = ClipNear(v, wMin, clipped);
@@ -122,14 +128,14 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
             for (int k = 0; k < 3; ++k) {
                 p.invW[k] = 1.0 / c[k]->image.z;
                 p.xy[k] = glm::dvec2(c[k]->image) * p.invW[k];
-                p.world[k] = c[k]->world;
+                p.point[k] = c[k]->point;
             }
             // Orient counter-clockwise in the image (Edge > 0 inside); drop degenerate ones.
             double area = Edge(p.xy[0], p.xy[1], p.xy[2]);
             if (area < 0.0) {
                 std::swap(p.xy[1], p.xy[2]);
                 std::swap(p.invW[1], p.invW[2]);
-                std::swap(p.world[1], p.world[2]);
+                std::swap(p.point[1], p.point[2]);
                 area = -area;
             }
             if (!(area > 0.0)) continue;
@@ -173,15 +179,15 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
                     const double b0 = e[0] * p.invW[0], b1 = e[1] * p.invW[1],
                                  b2 = e[2] * p.invW[2];
                     const double sum = b0 + b1 + b2;
-                    const glm::dvec3 ws =
-                        (b0 * p.world[0] + b1 * p.world[1] + b2 * p.world[2]) / sum;
-                    const double key = depthOf(ws);
+                    const glm::dvec3 point =
+                        (b0 * p.point[0] + b1 * p.point[1] + b2 * p.point[2]) / sum;
+                    const double key = depthOf(point);
                     const std::size_t at = static_cast<std::size_t>(y) * res.width + x;
                     if (key < buffer->depth[at] ||
                         (key == buffer->depth[at] && p.triangle < buffer->triangle[at])) {
                         buffer->depth[at] = key;
                         buffer->triangle[at] = p.triangle;
-                        buffer->wsPoint[at] = ws;
+                        buffer->point[at] = point;
                     }
                 }
             }
