@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <limits>
 #include <span>
@@ -267,6 +268,29 @@ void CheckCameraOutside(const spatial::TriangleMesh& wsGeometry,
     }
 }
 
+// Refuses a scene outside the scale and offset range of spatial_case.h: smaller than
+// kMinSceneSize across, or centred more than kMaxCentreRadii bounding radii from the origin.
+void CheckSceneExtent(const std::string& field, const spatial::Bounds& wsBounds) {
+    const auto threeDigits = [](double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.3g", v);
+        return std::string(buffer);
+    };
+    const double across = 2.0 * wsBounds.Radius();
+    if (!(across >= kMinSceneSize))
+        throw InputError(field + ": the scene is " + threeDigits(across) +
+                         " across (its bounds' diagonal), must be at least " +
+                         FormatNumber(kMinSceneSize));
+    const double centreRadii = glm::length(wsBounds.Center()) / wsBounds.Radius();
+    if (!(centreRadii <= kMaxCentreRadii))
+        throw InputError(field + ": the scene's centre " + FormatVec(wsBounds.Center()) + " is " +
+                         threeDigits(centreRadii) +
+                         " bounding radii from the origin, must be at most " +
+                         threeDigits(kMaxCentreRadii) +
+                         " (farther, its coordinates keep under 8 digits within the scene); move "
+                         "it nearer the origin");
+}
+
 }  // namespace
 
 spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
@@ -391,6 +415,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     if (wsBounds.Empty())
         throw InputError(std::string(root.Has("geometry") ? "/geometry" : "/") +
                          ": the scene has no geometry (give geometry entries or a generator)");
+    CheckSceneExtent(root.Has("geometry") ? "/geometry" : "/generator", wsBounds);
     CheckCameraOutside(scene.geometry, entryEnd, scene.camera, root["camera"]);
     if (root.Has("camera_path")) {
         const auto poses = root["camera_path"].Array(1);
