@@ -21,7 +21,7 @@ RasterBuffer MakeRasterBuffer(Resolution resolution) {
     b.resolution = resolution;
     b.depth.assign(resolution.Count(), std::numeric_limits<double>::infinity());
     b.triangle.assign(resolution.Count(), -1);
-    b.point.assign(resolution.Count(), glm::dvec3(0.0));
+    b.wsPoint.assign(resolution.Count(), glm::dvec3(0.0));
     return b;
 }
 
@@ -98,19 +98,19 @@ class CpuRenderer final : public RenderBackend {
         CameraBuffer out;
         out.resolution = resolution;
         out.windowDepth.assign(resolution.Count(), 1.0);
-        out.wsPosition.assign(resolution.Count(), glm::dvec3(0.0));
+        out.wsPosition = std::move(raster.wsPoint);
         out.wsNormal.assign(resolution.Count(), glm::dvec3(0.0));
         out.triangle = std::move(raster.triangle);
         tbb::parallel_for(std::size_t(0), resolution.Count(), [&](std::size_t i) {
             if (out.triangle[i] < 0) return;
-            // The window depth from the eye-relative point, whose rounding is relative to its
-            // distance from the eye, not from the world's origin.
-            const glm::dvec3& eyeRelative = raster.point[i];
-            const glm::dvec4 h = screenFromEye * glm::dvec4(eyeRelative, 1.0);
+            // The window depth is a function of the view depth alone (the projection's depth row
+            // involves only z and w), so it comes from the eye-relative depth key, whose rounding
+            // is relative to the distance from the eye, not from the world's origin.
+            const glm::dvec4 h = screenFromEye * glm::dvec4(raster.depth[i] * forward, 1.0);
             out.windowDepth[i] = h.z / h.w;
-            out.wsPosition[i] = camera.position + eyeRelative;
+            const glm::dvec3& ws = out.wsPosition[i];
             glm::dvec3 n = normals_[out.triangle[i]];
-            if (glm::dot(n, eyeRelative) > 0.0) n = -n;
+            if (glm::dot(n, camera.position - ws) < 0.0) n = -n;
             out.wsNormal[i] = n;
         });
         return out;

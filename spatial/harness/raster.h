@@ -4,7 +4,7 @@
 // A view is given by a 3×4 map from homogeneous world points to homogeneous image points
 // (x·w, y·w, w), x and y in pixels. Triangles are clipped against w ≥ wMin (points behind the
 // camera or the light's plane p4·X = 0 never map), projected, and every pixel centre inside is
-// visited with the exact point under it: for a projective map the perspective-correct
+// visited with the exact world point under it: for a projective map the perspective-correct
 // barycentrics λ_i = (e_i/w_i) / Σ_j (e_j/w_j), with e_i the screen-space edge functions, give the
 // point on the triangle whose image is the pixel centre exactly (Heckbert & Moreton 1995). The
 // nearest point by a caller-chosen depth wins; ties go to the lower triangle index, so the result
@@ -35,19 +35,20 @@ using ImageFromWorld = glm::dmat4x3;
 ImageFromWorld ImageRows(const glm::dmat4& m);  // rows 0, 1, 3 of m
 
 // The result of a pass: per pixel the nearest depth key (+inf where nothing), the triangle
-// (-1 where nothing) and the point, relative to the pass's view origin (RasterizeNearest).
+// (-1 where nothing) and the world point.
 struct RasterBuffer {
     Resolution resolution;
     std::vector<double> depth;
     std::vector<std::int32_t> triangle;
-    std::vector<glm::dvec3> point;  // x - wsViewOrigin
+    std::vector<glm::dvec3> wsPoint;
 };
 
 namespace raster_detail {
 
 struct ClipVertex {
-    glm::dvec3 image;  // (x·w, y·w, w)
-    glm::dvec3 point;  // relative to the view origin
+    glm::dvec3 image;     // (x·w, y·w, w)
+    glm::dvec3 world;     // the world point
+    glm::dvec3 relative;  // the same relative to the view origin
 };
 
 // Sutherland–Hodgman against the single plane w ≥ wMin; at most 4 vertices out.
@@ -60,7 +61,8 @@ inline int ClipNear(const std::array<ClipVertex, 3>& in, double wMin, ClipVertex
         if (aIn) out[n++] = a;
         if (aIn != bIn) {
             const double t = (wMin - a.image.z) / (b.image.z - a.image.z);
-            out[n++] = {a.image + t * (b.image - a.image), a.point + t * (b.point - a.point)};
+            out[n++] = {a.image + t * (b.image - a.image), a.world + t * (b.world - a.world),
+                        a.relative + t * (b.relative - a.relative)};
         }
     }
     return n;
@@ -88,13 +90,14 @@ inline bool OwnsTies(const glm::dvec2& a, const glm::dvec2& b) {
 }  // namespace raster_detail
 
 // Rasterizes `mesh` through `view` into `buffer` (which must be sized and initialised: depth
-// +inf, triangle -1). Points are taken relative to wsViewOrigin before anything is computed:
-// `view` maps homogeneous x - wsViewOrigin, DepthFn(const glm::dvec3& point) → double gets the
-// point under the pixel centre so relative and returns its depth key (smaller is nearer), and the
-// buffer keeps it so. With the eye (or the light) as origin, a scene far from the world's origin
-// keeps its digits: no large translation cancels, and a point's rounding is relative to its
-// distance from the viewer, not from the world's origin. wMin > 0 is the clip distance in the
-// units of w. Parallel over bands of rows.
+// +inf, triangle -1). `view` maps homogeneous points relative to wsViewOrigin, x - wsViewOrigin,
+// and DepthFn(const glm::dvec3& relative) → double gives the depth key (smaller is nearer) of
+// the point under a pixel centre so relative; the buffer keeps the world point, interpolated from
+// the world vertices (so a point of a plane y = 0 has y = 0 exactly). With the eye as the view
+// origin a scene far from the world's origin keeps its digits in the image position and the
+// depth: no large translation cancels, and their rounding is relative to the distance from the
+// eye, not from the origin. wMin > 0 is the clip distance in the units of w. Parallel over bands
+// of rows.
 template <class DepthFn>
 void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, double wMin,
                       const DepthFn& depthOf, RasterBuffer* buffer,
@@ -108,7 +111,7 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
     struct Piece {
         std::array<glm::dvec2, 3> xy;
         std::array<double, 3> invW;
-        std::array<glm::dvec3, 3> point;
+        std::array<glm::dvec3, 3> world, relative;
         glm::dvec2 lo, hi;
         std::int32_t triangle;
     };
@@ -117,8 +120,9 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         std::array<ClipVertex, 3> v;
         for (int k = 0; k < 3; ++k) {
-            const glm::dvec3 point = mesh.positions[mesh.triangles[t][k]] - wsViewOrigin;
-            v[k] = {view * glm::dvec4(point, 1.0), point};
+            const glm::dvec3& ws = mesh.positions[mesh.triangles[t][k]];
+            const glm::dvec3 relative = ws - wsViewOrigin;
+            v[k] = {view * glm::dvec4(relative, 1.0), ws, relative};
         }
         ClipVertex clipped[4];
         const int n = ClipNear(v, wMin, clipped);
@@ -128,14 +132,16 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
             for (int k = 0; k < 3; ++k) {
                 p.invW[k] = 1.0 / c[k]->image.z;
                 p.xy[k] = glm::dvec2(c[k]->image) * p.invW[k];
-                p.point[k] = c[k]->point;
+                p.world[k] = c[k]->world;
+                p.relative[k] = c[k]->relative;
             }
             // Orient counter-clockwise in the image (Edge > 0 inside); drop degenerate ones.
             double area = Edge(p.xy[0], p.xy[1], p.xy[2]);
             if (area < 0.0) {
                 std::swap(p.xy[1], p.xy[2]);
                 std::swap(p.invW[1], p.invW[2]);
-                std::swap(p.point[1], p.point[2]);
+                std::swap(p.world[1], p.world[2]);
+                std::swap(p.relative[1], p.relative[2]);
                 area = -area;
             }
             if (!(area > 0.0)) continue;
@@ -179,15 +185,16 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
                     const double b0 = e[0] * p.invW[0], b1 = e[1] * p.invW[1],
                                  b2 = e[2] * p.invW[2];
                     const double sum = b0 + b1 + b2;
-                    const glm::dvec3 point =
-                        (b0 * p.point[0] + b1 * p.point[1] + b2 * p.point[2]) / sum;
-                    const double key = depthOf(point);
+                    const glm::dvec3 relative =
+                        (b0 * p.relative[0] + b1 * p.relative[1] + b2 * p.relative[2]) / sum;
+                    const double key = depthOf(relative);
                     const std::size_t at = static_cast<std::size_t>(y) * res.width + x;
                     if (key < buffer->depth[at] ||
                         (key == buffer->depth[at] && p.triangle < buffer->triangle[at])) {
                         buffer->depth[at] = key;
                         buffer->triangle[at] = p.triangle;
-                        buffer->point[at] = point;
+                        buffer->wsPoint[at] =
+                            (b0 * p.world[0] + b1 * p.world[1] + b2 * p.world[2]) / sum;
                     }
                 }
             }
