@@ -53,6 +53,7 @@ TEST(ScaleInvariance, CpuResultsDoNotDependOnTheScenesScaleOrOffset) {
         EXPECT_EQ(c.misclassified, reference.misclassified) << what;
         EXPECT_EQ(c.uncovered, reference.uncovered) << what;
         const double h = testing::WorstRelativeH(c, reference);
+        std::cout << "[   INFO   ] " << what << ": h within " << h << '\n';
         EXPECT_LE(h, m.hTolerance) << what;
         worstH = std::max(worstH, h);
     }
