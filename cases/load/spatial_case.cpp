@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <limits>
 #include <span>
@@ -69,14 +70,13 @@ void CheckDepthRange(const JsonField& field, const spatial::Camera& camera) {
 }
 
 // Refuses a geometry entry whose transformed vertices reach beyond kMaxCoordinate (a scale or
-// translate too large; measured in double, before the float vertices would overflow to inf) or
-// collapse to one point (a scale so small that every float vertex coincides).
+// translate too large) or collapse to one point (a scale so small that every vertex coincides).
 void CheckEntryExtent(const JsonField& entry, const spatial::TriangleMesh& osMesh,
                       const spatial::Transform& transform, const spatial::TriangleMesh& wsMesh) {
     const JsonField field = entry.Has("transform") ? entry["transform"] : entry;
     const glm::dmat4 wsFromOs = transform.Matrix();
     double largest = 0.0;
-    for (const glm::vec3& osPoint : osMesh.positions)
+    for (const glm::dvec3& osPoint : osMesh.positions)
         largest =
             std::max(largest, LargestMagnitude(glm::dvec3(wsFromOs * glm::dvec4(osPoint, 1.0))));
     if (!(largest <= kMaxCoordinate))
@@ -84,8 +84,8 @@ void CheckEntryExtent(const JsonField& entry, const spatial::TriangleMesh& osMes
                    ", coordinates must be at most " + FormatNumber(kMaxCoordinate));
     const spatial::Bounds wsBounds = wsMesh.ComputeBounds();
     if (!wsBounds.Empty() && !(wsBounds.Radius() > 0.0))
-        field.Fail("the transformed geometry collapses to the point " + FormatVec(wsBounds.lo) +
-                   " (its float vertices coincide)");
+        field.Fail("the transformed geometry collapses to the point " +
+                   FormatVec(wsBounds.Center()) + " (its extent rounds to zero)");
 }
 
 spatial::Resolution ReadResolution(const JsonField& field) {
@@ -268,6 +268,29 @@ void CheckCameraOutside(const spatial::TriangleMesh& wsGeometry,
     }
 }
 
+// Refuses a scene outside the scale and offset range of spatial_case.h: smaller than
+// kMinSceneSize across, or centred more than kMaxCentreRadii bounding radii from the origin.
+void CheckSceneExtent(const std::string& field, const spatial::Bounds& wsBounds) {
+    const auto threeDigits = [](double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.3g", v);
+        return std::string(buffer);
+    };
+    const double across = 2.0 * wsBounds.Radius();
+    if (!(across >= kMinSceneSize))
+        throw InputError(field + ": the scene is " + threeDigits(across) +
+                         " across (its bounds' diagonal), must be at least " +
+                         FormatNumber(kMinSceneSize));
+    const double centreRadii = glm::length(wsBounds.Center()) / wsBounds.Radius();
+    if (!(centreRadii <= kMaxCentreRadii))
+        throw InputError(field + ": the scene's centre " + FormatVec(wsBounds.Center()) + " is " +
+                         threeDigits(centreRadii) +
+                         " bounding radii from the origin, must be at most " +
+                         threeDigits(kMaxCentreRadii) +
+                         " (farther, its coordinates keep under 8 digits within the scene); move "
+                         "it nearer the origin");
+}
+
 }  // namespace
 
 spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
@@ -392,6 +415,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     if (wsBounds.Empty())
         throw InputError(std::string(root.Has("geometry") ? "/geometry" : "/") +
                          ": the scene has no geometry (give geometry entries or a generator)");
+    CheckSceneExtent(root.Has("geometry") ? "/geometry" : "/generator", wsBounds);
     CheckCameraOutside(scene.geometry, entryEnd, scene.camera, root["camera"]);
     if (root.Has("camera_path")) {
         const auto poses = root["camera_path"].Array(1);

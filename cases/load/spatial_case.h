@@ -17,11 +17,19 @@ namespace lexel::cases {
 // Screen, readback and shadow-map sides are at most this many pixels or texels.
 inline constexpr long long kMaxSide = 16384;
 
-// Every coordinate of the camera, its targets, the point lights and the transformed geometry is
-// at most this in magnitude (world units). Vertices are floats: within 1e15 their squares (1e30)
-// stay finite in float and the scene's products in double, so a bounding radius or a light
-// distance is a number, not inf.
+// The range of 3D scenes lexel accepts (world units). Every coordinate of the camera, its targets,
+// the point lights and the transformed geometry is at most kMaxCoordinate in magnitude; the
+// geometry is at least kMinSceneSize across (its bounds' diagonal); and the centre of its bounds
+// lies at most kMaxCentreRadii bounding radii from the origin. Inside this range 3D results do not
+// depend on the scene's scale or position (tests/spatial/harness/scale_invariance_test.cpp:
+// identical counts and samples, h to rounding): what works in float works in the scene's unit
+// frame (scene.h), squared lengths and the products of up to four stay normal doubles (1e±60),
+// and the case's coordinates keep about 8 significant digits within the scene (at 1e8 radii a
+// double's step is 2e-8 of the radius; measured on spatial_small: counts identical to 8e8 radii,
+// h within 1.2e-5 at 1e8).
 inline constexpr double kMaxCoordinate = 1e15;
+inline constexpr double kMinSceneSize = 1e-15;
+inline constexpr double kMaxCentreRadii = 1e8;
 // far / near of the camera is at most this. With the standard perspective depth mapping and a
 // depth buffer whose steps near 1 are 2^-24 (24-bit fixed or 32-bit float), the depth step at a
 // distance z is about z · (z / near) · 2^-24: at far = 1e5 · near that is 0.6% of the distance,

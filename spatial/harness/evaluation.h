@@ -53,7 +53,9 @@ double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
 // 0 when framePixels ≤ 0.
 double EffectiveStorageFactor(std::int64_t texels, double aliasing, std::int64_t framePixels);
 
-inline constexpr double kRayOffset = 1e-5;  // scene radii; Embree works in float
+// The truth rays' origin offset along the surface normal, in scene radii: Embree works in float,
+// in the scene's unit frame (ray_caster.h), where this is ~100 ulps of a coordinate.
+inline constexpr double kRayOffset = 1e-5;
 // A sample where |n · l| < kGrazingCos (the light within ~11.5° of the receiver's plane) is a
 // grazing sample: its footprint is mostly projection aliasing (Lloyd 2006 eq. 1's cosine ratio),
 // which no light matrix removes.
