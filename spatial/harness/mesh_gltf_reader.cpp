@@ -284,13 +284,14 @@ std::vector<T> ReadAccessor(const tinygltf::Model& model, const tinygltf::Access
         Fail("its count " + std::to_string(accessor.count) + " is more than 2^32 - 1");
     if (accessor.bufferView < 0 && !accessor.sparse.isSparse)
         Fail("it has neither a buffer view nor sparse values");
+    std::size_t stride = 0;  // the dense values' bounds are checked before anything is allocated
+    const unsigned char* data = accessor.bufferView < 0
+                                    ? nullptr
+                                    : CheckedView(model, accessor.bufferView, accessor.byteOffset,
+                                                  accessor.count, 0, elementBytes, &stride);
     std::vector<T> values(accessor.count);
-    if (accessor.bufferView >= 0) {
-        std::size_t stride = 0;
-        const unsigned char* data = CheckedView(model, accessor.bufferView, accessor.byteOffset,
-                                                accessor.count, 0, elementBytes, &stride);
+    if (data != nullptr)
         for (std::size_t i = 0; i < values.size(); ++i) values[i] = decode(data + i * stride);
-    }
     if (!accessor.sparse.isSparse) return values;
     const auto& sparse = accessor.sparse;
     if (sparse.count < 0 || static_cast<std::size_t>(sparse.count) > accessor.count)

@@ -516,6 +516,7 @@ TriangleMesh ReadPlyMesh(std::string_view bytes) {
     const auto vertex = std::find_if(header.elements.begin(), header.elements.end(),
                                      [](const PlyElement& e) { return e.name == "vertex"; });
     if (vertex == header.elements.end()) Fail("the file has no vertex element");
+    VertexRoles(*vertex);  // x, y and z before a vertex is reserved for
     if (vertex->count > std::numeric_limits<std::uint32_t>::max())
         Fail("it declares " + std::to_string(vertex->count) + " vertices, more than 2^32 - 1");
     TriangleMesh mesh;

@@ -279,6 +279,11 @@ TEST(GltfReader, RefusesBadAccessorsAndDocumentsInOneLine) {
     EXPECT_EQ(ReadError(Text(past)),
               "mesh 0 primitive 0: POSITION accessor 0: buffer view 0: 4 elements of 12 bytes "
               "every 12 from byte 0 reach past its 36 bytes");
+    // A count far past the data is refused from the view's bounds, before 12 GB are allocated.
+    past.json["accessors"][0]["count"] = 1000000000;
+    EXPECT_EQ(ReadError(Text(past)),
+              "mesh 0 primitive 0: POSITION accessor 0: buffer view 0: 1000000000 elements of 12 "
+              "bytes every 12 from byte 0 reach past its 36 bytes");
     Document stride = OnePrimitive(kTriangle, {});
     stride.json["bufferViews"][0]["byteStride"] = 8;
     EXPECT_EQ(ReadError(Text(stride)),
