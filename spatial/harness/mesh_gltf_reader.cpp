@@ -32,9 +32,14 @@ namespace {
 
 [[noreturn]] void Fail(const std::string& reason) { throw DomainError(Subject::kGeometry, reason); }
 
+// tinygltf's messages span lines and quote the document's strings, which may hold any byte: one
+// line of printable text (line ends as spaces, other control characters, NUL included, as '?').
 std::string OneLine(std::string text) {
     for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
+        if (c == '\n' || c == '\r')
+            c = ' ';
+        else if ((c >= 0 && c < 0x20) || c == 0x7f)
+            c = '?';
     while (!text.empty() && text.back() == ' ') text.pop_back();
     return text;
 }
@@ -478,7 +483,7 @@ GltfBufferFiles FindGltfBufferFiles(std::string_view bytes, bool binary,
         if (!uri.is_string() || tinygltf::IsDataURI(uri.get<std::string>())) continue;
         const std::string path =
             tinygltf::JoinPath(baseDir, tinygltf::dlib::urldecode(uri.get<std::string>()));
-        const std::string where = "buffer " + std::to_string(k) + "'s file " + path;
+        const std::string where = "buffer " + std::to_string(k) + "'s file " + OneLine(path);
         if (const std::string problem = NotRegular(path); !problem.empty())
             Fail(where + " " + problem + " (buffer files are regular files)");
         std::error_code error;

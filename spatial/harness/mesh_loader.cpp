@@ -32,10 +32,14 @@
 namespace lexel::spatial {
 namespace {
 
-// Assimp's messages can span lines; error messages are one line.
+// Assimp's and tinygltf's messages can span lines, and quote a file's bytes: error messages are one
+// line of printable text (line ends as spaces, other control characters as '?').
 std::string OneLine(std::string text) {
     for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
+        if (c == '\n' || c == '\r')
+            c = ' ';
+        else if ((c >= 0 && c < 0x20) || c == 0x7f)
+            c = '?';
     while (!text.empty() && text.back() == ' ') text.pop_back();
     return text.empty() ? std::string("unknown error") : text;
 }
@@ -197,7 +201,7 @@ const aiScene* ReadScene(Assimp::Importer& importer, const std::filesystem::path
 template <class T, class Read>
 T ReadUnderCap(const std::string& name, const char* format, std::uintmax_t capBytes, Read read) {
     std::optional<T> result;
-    std::string error;
+    std::optional<std::string> error;
     bool refused = false;
     {
         const ScopedAllocationCap cap(capBytes);
@@ -215,9 +219,9 @@ T ReadUnderCap(const std::string& name, const char* format, std::uintmax_t capBy
                           name + ": cannot read mesh: reading it needs more than " +
                               std::to_string(capBytes >> 20) +
                               " MiB (a count in the file larger than its data)");
-    if (!error.empty())
+    if (error)
         throw DomainError(Subject::kGeometry,
-                          name + ": cannot read " + format + ": " + OneLine(error));
+                          name + ": cannot read " + format + ": " + OneLine(*error));
     if (!result) throw std::bad_alloc();
     return std::move(*result);
 }

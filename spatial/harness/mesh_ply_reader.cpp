@@ -59,13 +59,17 @@ struct PlyHeader {
 
 [[noreturn]] void Fail(const std::string& reason) { throw DomainError(Subject::kGeometry, reason); }
 
-// A token of the file for a message: at most 32 bytes, bytes outside printable ASCII as '?'.
-std::string Shown(std::string_view token) {
+// A name or token of the file for a message: at most 32 bytes, bytes outside printable ASCII
+// (a NUL would end the message, a control character act on a terminal) as '?'.
+std::string Printable(std::string_view token) {
     std::string shown(token.substr(0, 32));
     for (char& c : shown)
         if (c < 0x20 || c > 0x7e) c = '?';
-    return "'" + shown + (token.size() > 32 ? "...'" : "'");
+    return token.size() > 32 ? shown + "..." : shown;
 }
+
+// Printable(token) quoted.
+std::string Shown(std::string_view token) { return "'" + Printable(token) + "'"; }
 
 bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -134,7 +138,7 @@ PlyProperty ParseProperty(const std::vector<std::string_view>& tokens, const Ply
     }
     for (const PlyProperty& other : element.properties)
         if (other.name == property.name)
-            Fail(where + ": element '" + element.name + "' declares property " +
+            Fail(where + ": element " + Shown(element.name) + " declares property " +
                  Shown(property.name) + " twice");
     return property;
 }
@@ -219,7 +223,7 @@ void CheckCounts(const PlyHeader& header, std::size_t bodyBytes) {
     for (const PlyElement& element : header.elements) {
         needed += double(element.count) * MinItemBytes(element, header.encoding);
         if (needed > room)
-            Fail("element '" + element.name + "' declares " + std::to_string(element.count) +
+            Fail("element " + Shown(element.name) + " declares " + std::to_string(element.count) +
                  " items, more than the " + std::to_string(bodyBytes) +
                  " bytes after the header can hold (a truncated or corrupt file)");
     }
@@ -258,7 +262,7 @@ class AsciiBody {
         std::int64_t value = 0;
         const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
         if (error != std::errc() || end != token.data() + token.size() || !FitsType(value, type))
-            Fail(Shown(token) + " is not a " + TypeInfo(type).name);
+            Fail(Shown(token) + " is not an integer of type " + TypeInfo(type).name);
         return value;
     }
 
@@ -462,7 +466,7 @@ void ReadItem(Body& body, const PlyElement& element, const std::vector<Role>& ro
         try {
             ReadProperty(body, element.properties[k], roles[k], vertexCount, position, mesh);
         } catch (const DomainError& e) {
-            Fail("property '" + element.properties[k].name + "' (" + body.Where() +
+            Fail("property " + Shown(element.properties[k].name) + " (" + body.Where() +
                  "): " + e.what());
         }
     }
@@ -486,7 +490,7 @@ void ReadBody(const PlyHeader& header, Body& body, TriangleMesh& mesh) {
             try {
                 ReadItem(body, element, roles, isVertex, vertexCount, mesh);
             } catch (const DomainError& e) {
-                Fail(element.name + " " + std::to_string(item) + " of " +
+                Fail(Printable(element.name) + " " + std::to_string(item) + " of " +
                      std::to_string(element.count) + ", " + e.what());
             }
         }

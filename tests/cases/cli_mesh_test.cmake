@@ -34,7 +34,7 @@ expect_run(0 "^light 0: point \\(12, 25, -8\\)${any}\nmethod +misclassified${any
            "^$" run "${CASES}/spatial/formats.json" --no-map-truth --method focused)
 
 # Refusals: one line, exit 2, nothing on stdout.
-expect_run(2 "^$" "^lexel: error: ${models}/PLY/issue623\\.ply: cannot read PLY: vertex 0 of 24, property 'vertex_indices' \\(line 14\\): '7\\.941797' is not a uchar\n$"
+expect_run(2 "^$" "^lexel: error: ${models}/PLY/issue623\\.ply: cannot read PLY: vertex 0 of 24, property 'vertex_indices' \\(line 14\\): '7\\.941797' is not an integer of type uchar\n$"
            mesh-info ${models}/PLY/issue623.ply)
 expect_run(2 "^$" "^lexel: error: ${models}/glTF2/RecursiveNodes/RecursiveNodes\\.gltf: cannot read glTF: node 0 is reached twice from the scene${any}\n$"
            mesh-info ${models}/glTF2/RecursiveNodes/RecursiveNodes.gltf)

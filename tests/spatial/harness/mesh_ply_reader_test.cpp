@@ -225,14 +225,14 @@ TEST(PlyReader, RefusesMalformedBodiesInOneLine) {
         {"not a number", head + "0 0 0\n1 0 0\n0 abc 0\n3 0 1 2\n",
          "vertex 2 of 3, property 'y' (line 12): 'abc' is not a number of type float"},
         {"not an integer", head + "0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n",
-         "face 0 of 1, property 'vertex_indices' (line 13): '1.5' is not a int"},
+         "face 0 of 1, property 'vertex_indices' (line 13): '1.5' is not an integer of type int"},
         {"index past", head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
          "face 0 of 1, property 'vertex_indices' (line 13): vertex index 3 is past the file's 3 "
          "vertices"},
         {"index negative", head + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n",
          "face 0 of 1, property 'vertex_indices' (line 13): vertex index -1 is negative"},
         {"uchar range", head + "0 0 0\n1 0 0\n0 1 0\n256 0 1 2\n",
-         "face 0 of 1, property 'vertex_indices' (line 13): '256' is not a uchar"},
+         "face 0 of 1, property 'vertex_indices' (line 13): '256' is not an integer of type uchar"},
         {"nan", head + "0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n",
          "vertex 2 of 3, property 'x' (line 12): the coordinate is nan, not a finite float"},
         {"beyond float", head + "0 0 0\n1 0 0\n1e39 1 0\n3 0 1 2\n",
@@ -251,6 +251,12 @@ TEST(PlyReader, RefusesMalformedBodiesInOneLine) {
          "file)"},
         {"binary trailing", trailing,
          "4 bytes follow the last element: the header does not describe the file"},
+        // Found by ply_fuzzer: a NUL in a name ended the message (what() is a C string), and
+        // the loader, finding it empty, took the refusal for running out of memory.
+        {"name with NUL",
+         kAsciiHead + std::string("element \0\x1b 1\nproperty int n\n", 28) +
+             "end_header\n0 0 0\n1 0 0\n0 1 0\nx\n",
+         "?? 0 of 1, property 'n' (line 13): 'x' is not an integer of type int"},
         {"no triangles", head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n",
          "it holds no triangles (no face of 3 or more vertices)"},
     };
@@ -320,7 +326,8 @@ TEST(PlyReader, RefusesMalformedFilesInOneLineNamingThem) {
     const auto issue623 = kModels / "PLY/issue623.ply";
     EXPECT_EQ(LoadError(issue623), issue623.string() +
                                        ": cannot read PLY: vertex 0 of 24, property "
-                                       "'vertex_indices' (line 14): '7.941797' is not a uchar");
+                                       "'vertex_indices' (line 14): '7.941797' is not an "
+                                       "integer of type uchar");
     const auto pond = kModels / "PLY/pond.0.ply";  // 69 bytes short of its 70051 vertices
     EXPECT_EQ(LoadError(pond), pond.string() +
                                    ": cannot read PLY: element 'vertex' declares 70051 items, "
