@@ -54,7 +54,8 @@ Document OnePrimitive(const std::vector<glm::vec3>& positions,
     Document d;
     d.buffer.resize(12 * positions.size() + 4 * indices.size());
     std::memcpy(d.buffer.data(), positions.data(), 12 * positions.size());
-    std::memcpy(d.buffer.data() + 12 * positions.size(), indices.data(), 4 * indices.size());
+    if (!indices.empty())  // memcpy from an empty vector's null data is undefined
+        std::memcpy(d.buffer.data() + 12 * positions.size(), indices.data(), 4 * indices.size());
     nlohmann::json primitive = {{"attributes", {{"POSITION", 0}}}, {"mode", mode}};
     nlohmann::json accessors = {{{"bufferView", 0},
                                  {"componentType", 5126},
