@@ -57,7 +57,7 @@ TEST(SpatialCaseMeshEntry, PlacesUpAxisAndUnitsBeforeTheTransform) {
     // A number is scene units per file unit; "m" and 1 and the default are the same.
     const spatial::Scene numeric = SpatialSceneFromJson(
         Case(R"({"mesh": ")" + ply.string() + R"(", "units": 0.5})"), "x", ".");
-    EXPECT_EQ(numeric.geometry.positions[7], glm::vec3(0, 0, 150));
+    EXPECT_EQ(numeric.geometry.positions[7], glm::dvec3(0, 0, 150));
     std::filesystem::remove(ply);
 }
 
