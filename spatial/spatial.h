@@ -27,3 +27,4 @@
 #include "lexel/spatial/standard_map.h"
 #include "lexel/spatial/storage_factor.h"
 #include "lexel/spatial/temporal.h"
+#include "lexel/spatial/tsm.h"
