@@ -22,6 +22,7 @@
 #include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/partitions.h"
+#include "lexel/spatial/perspective_aliasing.h"
 #include "lexel/spatial/readback.h"
 #include "lexel/spatial/samples.h"
 #include "lexel/spatial/standard_map.h"

@@ -32,21 +32,12 @@
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/perspective_aliasing.h"
 #include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 
 class RayCaster;
-
-// Lloyd et al. 2006 eq. 1's perspective factor w_l/w_i at a world point served by `matrix`:
-// w_l = σ₁ of the inverse of ∂u/∂x restricted to the plane perpendicular to the light's ray
-// through the point (world units per texel: the widest cross-section of the texel's beam), and
-// w_i = 2 tanθ z / H (eq. 2 per pixel: z the planar eye depth, H the frame's height in pixels,
-// square pixels). Unlike σ₁(J⁻¹) it leaves out the receiver's orientation (eq. 1's cosine ratio,
-// projection aliasing), as Lloyd's storage factor does. +inf where the map is singular there or
-// the point is not in front of the map; throws nothing.
-double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
-                           const LightMatrix& matrix, const glm::dvec3& wsPoint);
 
 // texels · aliasing² / framePixels: the storage factor S̄ (Lloyd 2006 eq. 12's texels over image
 // pixels) that brings a worst aliasing `aliasing` to 1 by scaling every map's resolution alike.
