@@ -29,3 +29,4 @@
 #include "lexel/spatial/storage_factor.h"
 #include "lexel/spatial/temporal.h"
 #include "lexel/spatial/tsm.h"
+#include "lexel/spatial/virtual_shadow_map.h"
