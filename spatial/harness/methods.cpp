@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "lexel/spatial/multi_start.h"
+#include "lexel/spatial/tsm.h"
 
 namespace lexel::spatial {
 
@@ -42,12 +43,15 @@ std::vector<std::string> PartitionedMethodNames() {
     return names;
 }
 
+std::vector<std::string> TsmMethodNames() { return {"tsm", "tsm-report"}; }
+
 std::vector<std::string> SpatialMethodNames() {
     std::vector<std::string> names = FairMethodNames();
     for (const std::string& m : ReportMethodNames())
         if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
     names.push_back("optimal-shear");
     for (const std::string& m : PartitionedMethodNames()) names.push_back(m);
+    for (const std::string& m : TsmMethodNames()) names.push_back(m);
     return names;
 }
 
@@ -79,6 +83,8 @@ constexpr MethodDescription kDescriptions[] = {
     {"zp-lispsm", "cascades: Lloyd et al. 2006's log z-partitions, LiSPSM in each"},
     {"fp-lispsm", "Lloyd et al. 2006's face partitioning: a LiSPSM map per face wedge"},
     {"sdsm-optimal", "sdsm's partitions, Algorithm 1 (multi-start) in each"},
+    {"tsm", "Martin & Tan 2004: the trapezoid around the visible points, 80% focus rule"},
+    {"tsm-report", "tsm as the paper fits it: the view frustum and scene bounds"},
 };
 
 }  // namespace
@@ -92,6 +98,10 @@ std::string_view SpatialMethodDescription(std::string_view name) {
 bool IsSpatialMethod(std::string_view name) {
     const std::vector<std::string> names = SpatialMethodNames();
     return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool IsFrustumFittedMethod(std::string_view name) {
+    return name == "focused" || name == "lispsm" || name == "psm" || name == "tsm-report";
 }
 
 bool IsPartitionedMethod(std::string_view name) {
@@ -133,6 +143,8 @@ constexpr NamedBaseline kBaselines[] = {
     {"lispsm-tight", &LispsmTightLightMatrix},
     {"lispsm-engine", &LispsmEngineLightMatrix},
     {"psm-tight", &PsmTightLightMatrix},
+    {"tsm", &TsmLightMatrix},
+    {"tsm-report", &TsmReportLightMatrix},
 };
 
 MethodMatrix Optimal(std::string_view name, const MethodContext& context) {

@@ -11,6 +11,7 @@
 // and `optimal-shear` (Algorithm 1 with the report's Fig. 3 shear, optimized exactly). The
 // partitioned methods (partitions.h) return k cascades at the same total texels: `pssm`, `sdsm`,
 // `sdsm-snap` (SDSM with texel snapping), `sdsm-rect`, `zp-lispsm`, `fp-lispsm`, `sdsm-optimal`.
+// Trapezoidal shadow maps (tsm.h): `tsm` (fair) and `tsm-report` (the paper's view frustum).
 #pragma once
 
 #include <optional>
@@ -48,10 +49,17 @@ std::vector<std::string> ReportMethodNames();
 std::vector<std::string> FairMethodNames();
 // The partitioned methods, each compared with optimal at the same total texels.
 std::vector<std::string> PartitionedMethodNames();
+// Trapezoidal shadow maps (tsm.h): tsm on the fair comparison's information, tsm-report fitted
+// as the paper does (view frustum ∩ scene bounds).
+std::vector<std::string> TsmMethodNames();
 bool IsSpatialMethod(std::string_view name);
 // One line saying what the method is (for `lexel --help`); empty for an unknown name.
 std::string_view SpatialMethodDescription(std::string_view name);
 bool IsPartitionedMethod(std::string_view name);
+// Whether the method fits the view frustum ∩ scene bounds as the report's baselines do (focused,
+// lispsm, psm, tsm-report) rather than the visible points: such a method belongs beside Table 1
+// as published, not in the fair comparison.
+bool IsFrustumFittedMethod(std::string_view name);
 
 // The matrix; for the optimal* methods the optimizer's trace (h per iteration, time profile)
 // and, for the multi-start ones, which start won; for a partitioned method its cascades (and
