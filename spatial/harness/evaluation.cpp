@@ -8,6 +8,7 @@
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/page_shading.h"
 #include "lexel/spatial/harness/ray_caster.h"
 
 namespace lexel::spatial {
@@ -217,6 +218,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     out.samples = backend_.BoundarySamples(readback_, lightSpace, standardMap);
     context.samples = &out.samples;
     context.baseline.samples = &out.samples;
+    context.readback = &readback_;
 
     // The counted frame pixels (covered, facing the light) and the truth there.
     std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
@@ -295,10 +297,17 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     const LightSamples& samples = light.samples;
     const std::vector<Cascade>& cascades = computed.cascades;
     m->matrix = computed.matrix;
-    FrameShading shading =
-        cascades.empty()
-            ? ShadeThroughMap(backend_, frame_, lightSpace, computed.matrix, scene_.shadowMap)
-            : ShadeThroughCascades(backend_, frame_, lightSpace, cascades, frameDepth_);
+    FrameShading shading;
+    if (computed.virtualMap) {
+        PageShading p =
+            ShadeThroughPages(backend_, frame_, lightSpace, scene_.camera, *computed.virtualMap);
+        shading = {std::move(p.shades), std::move(p.maps), std::move(p.page), std::move(p.outside)};
+    } else {
+        shading =
+            cascades.empty()
+                ? ShadeThroughMap(backend_, frame_, lightSpace, computed.matrix, scene_.shadowMap)
+                : ShadeThroughCascades(backend_, frame_, lightSpace, cascades, frameDepth_);
+    }
     m->misclassified = CountWrong(shading.shades, truth, &m->falseShadow);
     const Footprints footprints =
         MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
@@ -313,7 +322,13 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
         static_cast<std::int64_t>(scene_.camera.resolution.width) * scene_.camera.resolution.height;
     m->storageFactor = EffectiveStorageFactor(m->texels, m->perspectiveMax, framePixels);
     m->storageFactorP99 = EffectiveStorageFactor(m->texels, m->perspectiveP99, framePixels);
-    if (cascades.empty()) {
+    if (const auto& vsm = computed.virtualMap) {
+        m->h = PageEnergy(*vsm, scene_.camera, lightSpace, samples, grazing, &m->hGrazing);
+        m->pages =
+            PageOutcome{vsm->requested,        static_cast<std::int64_t>(vsm->resident.size()),
+                        vsm->dropped,          vsm->layout.pageTexels,
+                        vsm->layout.poolPages, vsm->lodBias};
+    } else if (cascades.empty()) {
         m->h = Energy(m->matrix, samples);
         for (std::size_t s = 0; s < grazing.size(); ++s)
             if (grazing[s])
@@ -329,7 +344,11 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
                 ++m->cascades[shading.cascade[i]].pixels;
         MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
     }
-    if (keepBuffers) {
+    if (keepBuffers && computed.virtualMap) {
+        m->shades = std::move(shading.shades);
+        m->map = PoolAtlas(shading.maps, computed.virtualMap->layout.pageTexels);
+        m->uncoveredPixels = std::move(shading.outside);
+    } else if (keepBuffers) {
         m->shades = std::move(shading.shades);
         m->map = shading.maps.front();
         if (!cascades.empty()) m->cascadeMaps = std::move(shading.maps);

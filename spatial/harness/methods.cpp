@@ -45,6 +45,10 @@ std::vector<std::string> PartitionedMethodNames() {
 
 std::vector<std::string> TsmMethodNames() { return {"tsm", "tsm-report"}; }
 
+std::vector<std::string> VirtualMethodNames() { return {"vsm", "vsm-dynamic"}; }
+
+bool IsVirtualMethod(std::string_view name) { return name == "vsm" || name == "vsm-dynamic"; }
+
 std::vector<std::string> SpatialMethodNames() {
     std::vector<std::string> names = FairMethodNames();
     for (const std::string& m : ReportMethodNames())
@@ -52,6 +56,7 @@ std::vector<std::string> SpatialMethodNames() {
     names.push_back("optimal-shear");
     for (const std::string& m : PartitionedMethodNames()) names.push_back(m);
     for (const std::string& m : TsmMethodNames()) names.push_back(m);
+    for (const std::string& m : VirtualMethodNames()) names.push_back(m);
     return names;
 }
 
@@ -85,6 +90,8 @@ constexpr MethodDescription kDescriptions[] = {
     {"sdsm-optimal", "sdsm's partitions, Algorithm 1 (multi-start) in each"},
     {"tsm", "Martin & Tan 2004: the trapezoid around the visible points, 80% focus rule"},
     {"tsm-report", "tsm as the paper fits it: the view frustum and scene bounds"},
+    {"vsm", "virtual shadow map: 16k² pages at the footprint's level, the single map's texels"},
+    {"vsm-dynamic", "vsm with the LOD bias raised until its pages fit the pool (UE5)"},
 };
 
 }  // namespace
@@ -155,14 +162,14 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
         options.refine = name == "optimal-refined";
         const std::vector<OptimizerStart> starts = StandardStarts(context.baseline);
         MultiStartResult r = OptimizeFromStarts(*context.samples, starts, map, options);
-        return {r.result.matrix, std::move(r.result), std::move(r.winner), {}};
+        return {r.result.matrix, std::move(r.result), std::move(r.winner), {}, std::nullopt};
     }
     // The report's single start (optimal-report), or with the shear (optimal-shear).
     options.shear = name == "optimal-shear";
     const BaselineContext& b = context.baseline;
     const glm::dvec3 initialP4 = InitialLightAxis(*b.lightSpace, b.wsBounds, b.wsRelevant);
     OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4, map, options);
-    return {r.matrix, std::move(r), {}, {}};
+    return {r.matrix, std::move(r), {}, {}, std::nullopt};
 }
 
 MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& context) {
@@ -177,16 +184,29 @@ MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& c
     return m;
 }
 
+MethodMatrix Virtual(std::string_view name, const MethodContext& context) {
+    if (!context.readback) throw std::invalid_argument(std::string(name) + " needs the readback");
+    VirtualMapOptions options;
+    options.fitPool = name == "vsm-dynamic";
+    MethodMatrix m;
+    m.virtualMap = BuildVirtualShadowMap(context.baseline, *context.readback, options);
+    const VirtualMapLayout& layout = m.virtualMap->layout;
+    m.matrix = layout.PageMatrix({layout.maxLevel, 0, 0});
+    return m;
+}
+
 }  // namespace
 
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
     for (const NamedBaseline& b : kBaselines)
-        if (b.name == name) return {b.compute(context.baseline, nullptr), std::nullopt, {}, {}};
+        if (b.name == name)
+            return {b.compute(context.baseline, nullptr), std::nullopt, {}, {}, std::nullopt};
     if (name == "optimal" || name == "optimal-refined" || name == "optimal-report" ||
         name == "optimal-shear")
         return Optimal(name, context);
     for (const NamedPartition& p : kPartitions)
         if (p.name == name) return Partitioned(p, context);
+    if (IsVirtualMethod(name)) return Virtual(name, context);
     throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 

@@ -78,9 +78,9 @@ file(WRITE "${WORK}/badhtml/index.html" "${head}<img src=\"there.png\">${tail}")
 check_html_links("${WORK}/badhtml/index.html" ALL_IMAGES)
 
 # --help lists every method with one line (issue 24).
-expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n  tsm-report +[^\n]+\n+$"
+expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n.*\n  vsm-dynamic +[^\n]+\n+$"
            "^$" run --help)
-expect_run(0 "\n3D methods \\(default: all\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n  tsm-report +[^\n]+\n+$"
+expect_run(0 "\n3D methods \\(default: all\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  vsm +virtual shadow map[^\n]*\n  vsm-dynamic +[^\n]+\n+$"
            "^$" sweep --help)
 
 # Bad input: one line naming the field and the reason, exit 2, no output files.
@@ -331,7 +331,7 @@ set(LEXEL "${sourceLexel}")
 set(small "${DATA}/spatial_small.json")
 set(methods3d optimal optimal-refined focused-tight lispsm-tight lispsm-engine psm-tight
     plane-optimal normal optimal-report focused lispsm psm optimal-shear pssm sdsm sdsm-snap sdsm-rect
-    zp-lispsm fp-lispsm sdsm-optimal tsm tsm-report)
+    zp-lispsm fp-lispsm sdsm-optimal tsm tsm-report vsm vsm-dynamic)
 set(partitioned3d pssm sdsm sdsm-snap sdsm-rect zp-lispsm fp-lispsm sdsm-optimal)
 
 # Asserts that a JSON value is a non-negative integer (string(JSON) reads numbers as text).
@@ -342,7 +342,7 @@ function(expect_count json what)
 endfunction()
 
 # The table lists every method, in the registry's order.
-expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\n  the report's focused 4000² truth map disagrees with the rays on [0-9]+ pixels?[^\n]*\n[^\n]*\nmethod +misclassified +shadow +light +uncovered[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\nlispsm-engine [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal [^\n]*\ntsm [^\n]*\ntsm-report "
+expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\n  the report's focused 4000² truth map disagrees with the rays on [0-9]+ pixels?[^\n]*\n[^\n]*\nmethod +misclassified +shadow +light +uncovered[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\nlispsm-engine [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal [^\n]*\ntsm [^\n]*\ntsm-report [^\n]*\nvsm [^\n]*\nvsm-dynamic "
            "^$" run "${small}")
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" run "${small}" --format json)
 string(JSON nLights LENGTH "${lastStdout}" lights)
@@ -350,7 +350,7 @@ string(JSON nMethods LENGTH "${lastStdout}" lights 0 methods)
 string(JSON method0 GET "${lastStdout}" lights 0 methods 0 method)
 string(JSON wrong0 GET "${lastStdout}" lights 0 methods 0 misclassified)
 string(JSON receivers GET "${lastStdout}" lights 0 receiver_pixels)
-if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 22 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
+if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 24 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
     message(FATAL_ERROR "unexpected 3D JSON document:\n${lastStdout}")
 endif()
 math(EXPR last "${nMethods} - 1")
@@ -363,12 +363,16 @@ foreach(k RANGE ${last})
     endif()
     expect_count("${wrong}" "lights/0/methods/${k}/misclassified")
 endforeach()
-expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps,max_perspective_aliasing,storage_factor\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+\n0,normal,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+\n$"
+expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps,max_perspective_aliasing,storage_factor,pages_requested,pages_resident,pages_dropped\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+,,,\n0,normal,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+,,,\n$"
            "^$" run "${small}" --format csv --method optimal --method normal --no-map-truth)
+# A virtual shadow map's maps are its resident pages, and it says how many it asked for and
+# dropped (the small case's 128² budget: 64 pages of 16²).
+expect_run(0 "^light,method,[^\n]*\n0,vsm,[0-9]+,[0-9]+,[0-9]+,[^\n]*,[0-9.e+-]+,[0-9]+,[0-9]+,[0-9]+\n$"
+           "^$" run "${small}" --format csv --method vsm --no-map-truth)
 
 # --out writes the report and three images per light and method (a partitioned method: a map
 # image per cascade; fp-lispsm has 3 face wedges here).
-expect_run(0 "^light 0" "^lexel: wrote 86 images, index.html and spatial_small.json/.csv to [^\n]*\n$"
+expect_run(0 "^light 0" "^lexel: wrote 92 images, index.html and spatial_small.json/.csv to [^\n]*\n$"
            run "${small}" --out "${WORK}/out3d")
 # index.html shows every image and links both data files (issue 24: 154 loose PNGs, no index).
 check_html_links("${WORK}/out3d/index.html" ALL_IMAGES)
