@@ -175,6 +175,15 @@ std::string LightSection(const SpatialRun& run, std::size_t l,
                    "pixels it shades and its part of h.") +
                cascades->RenderHtml();
     }
+    if (const std::optional<TextTable> pages = PageTable(o)) {
+        out += "<h3>Pages of the virtual shadow maps</h3>\n" +
+               Paragraph(
+                   "Each virtual shadow map's page size and physical pool (its pages hold at "
+                   "most the single map's texels), the distinct pages the readback's pixels "
+                   "asked for, those resident (the most requested) and those dropped, and the "
+                   "LOD bias the requests were made with.") +
+               pages->RenderHtml();
+    }
     const std::string grid = ImageGrid(images, l);
     if (!grid.empty())
         out += "<h3>Images</h3>\n" +

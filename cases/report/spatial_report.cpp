@@ -79,6 +79,22 @@ std::optional<TextTable> CascadeTable(const spatial::LightOutcome& o) {
     return table;
 }
 
+std::optional<TextTable> PageTable(const spatial::LightOutcome& o) {
+    TextTable table({"method", "page", "pool\npages", "pages\nrequested", "pages\nresident",
+                     "pages\ndropped", "LOD\nbias"});
+    bool any = false;
+    for (const auto& m : o.methods) {
+        if (!m.pages) continue;
+        const spatial::PageOutcome& p = *m.pages;
+        table.AddRow({m.method, std::to_string(p.pageTexels) + "²", std::to_string(p.poolPages),
+                      std::to_string(p.requested), std::to_string(p.resident),
+                      std::to_string(p.dropped), Fixed(p.lodBias, 3)});
+        any = true;
+    }
+    if (!any) return std::nullopt;
+    return table;
+}
+
 std::string CameraPathCaption(const CameraPathStudy& study, std::size_t light) {
     return "camera path, light " + std::to_string(light) + ": P changed in " +
            std::to_string(study.Changes()) + " of " + std::to_string(study.poses.size()) +
@@ -126,6 +142,8 @@ std::string SpatialRunText(const spatial::Scene&, const SpatialRun& run) {
             text << "\ncascades of the partitioned methods, light " << l
                  << " (depth: planar eye depth)\n"
                  << cascades->Render();
+        if (const std::optional<TextTable> pages = PageTable(o))
+            text << "\nvirtual shadow maps' pages, light " << l << '\n' << pages->Render();
     }
     for (std::size_t l = 0; l < run.cameraPath.size(); ++l)
         text << '\n'
@@ -171,6 +189,11 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                                               {"visible_points", c.cascade.visiblePoints},
                                               {"pixels", c.pixels},
                                               {"h", FiniteOrNull(c.h)}});
+            if (m.pages)
+                method["pages"] = {
+                    {"page_texels", m.pages->pageTexels}, {"pool_pages", m.pages->poolPages},
+                    {"requested", m.pages->requested},    {"resident", m.pages->resident},
+                    {"dropped", m.pages->dropped},        {"lod_bias", m.pages->lodBias}};
             light["methods"].push_back(method);
         }
         doc["lights"].push_back(light);
@@ -202,14 +225,24 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
 std::string SpatialRunCsv(const SpatialRun& run) {
     std::ostringstream csv;
     csv << "light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,"
-           "max_footprint,maps,max_perspective_aliasing,storage_factor\n";
+           "max_footprint,maps,max_perspective_aliasing,storage_factor,pages_requested,"
+           "pages_resident,pages_dropped\n";
     for (std::size_t l = 0; l < run.outcomes.size(); ++l)
-        for (const auto& m : run.outcomes[l].methods)
+        for (const auto& m : run.outcomes[l].methods) {
+            // A virtual shadow map's maps are its resident pages.
+            const std::size_t maps = m.pages ? static_cast<std::size_t>(m.pages->resident)
+                                             : std::max<std::size_t>(1, m.cascades.size());
             csv << l << ',' << m.method << ',' << m.misclassified << ',' << m.falseShadow << ','
                 << m.misclassified - m.falseShadow << ',' << CsvNumber(m.h) << ','
                 << CsvNumber(m.ms) << ',' << m.uncovered << ',' << CsvNumber(m.footprintMean) << ','
-                << CsvNumber(m.footprintMax) << ',' << std::max<std::size_t>(1, m.cascades.size())
-                << ',' << CsvNumber(m.perspectiveMax) << ',' << CsvNumber(m.storageFactor) << '\n';
+                << CsvNumber(m.footprintMax) << ',' << maps << ',' << CsvNumber(m.perspectiveMax)
+                << ',' << CsvNumber(m.storageFactor) << ',';
+            if (m.pages)
+                csv << m.pages->requested << ',' << m.pages->resident << ',' << m.pages->dropped;
+            else
+                csv << ",,";
+            csv << '\n';
+        }
     return csv.str();
 }
 
@@ -286,6 +319,21 @@ ImageFigure MapFigure(const std::string& title, const std::string& what,
     return figure;
 }
 
+// A virtual shadow map's pool: its resident pages tiled in the order of their requests.
+ImageFigure PoolFigure(const std::string& title, const spatial::MethodOutcome& m) {
+    ImageFigure figure = MapFigure(title + " · page pool", m.method, m.map, {});
+    const spatial::PageOutcome& p = *m.pages;
+    figure.lines = {m.method + "'s physical page pool, " + std::to_string(m.map.resolution.width) +
+                    "×" + std::to_string(m.map.resolution.height) + " texels: " +
+                    Count(p.resident, "resident pages") + " of " + std::to_string(p.pageTexels) +
+                    "² texels (pool " + std::to_string(p.poolPages) + ", " +
+                    std::to_string(p.requested) + " requested, " + std::to_string(p.dropped) +
+                    " dropped), the most requested first, row by row; each page is its own "
+                    "light matrix."};
+    figure.key = {{"empty texel", spatial::kEmptyTexelColour}};
+    return figure;
+}
+
 }  // namespace
 
 std::size_t SpatialImageCount(const SpatialRun& run) {
@@ -317,9 +365,12 @@ std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& di
                                       LightLabel(o.light) + " · " + m.method;
             std::vector<spatial::Cascade> cascades;
             for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
+            // A virtual shadow map knows its uncovered pixels (no page serves them).
             const std::vector<std::uint8_t> uncovered =
-                spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera, m.shades,
-                                         m.map.matrix, m.map.resolution, cascades);
+                m.pages
+                    ? m.uncoveredPixels
+                    : spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera,
+                                               m.shades, m.map.matrix, m.map.resolution, cascades);
             write(l, m.method, "frame",
                   spatial::FrameImage(evaluator.frame(), lightSpace, m.shades, uncovered),
                   FrameFigure(title + " · frame", o, m, false));
@@ -327,6 +378,10 @@ std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& di
                   spatial::MisclassificationImage(evaluator.frame(), lightSpace, m.shades, o.truth,
                                                   uncovered),
                   FrameFigure(title + " · errors", o, m, true));
+            if (m.pages) {
+                write(l, m.method, "map", spatial::ShadowMapImage(m.map, {}), PoolFigure(title, m));
+                continue;
+            }
             if (m.cascades.empty()) {
                 write(l, m.method, "map", spatial::ShadowMapImage(m.map, o.samples),
                       MapFigure(title + " · shadow map", m.method + "'s shadow map", m.map,

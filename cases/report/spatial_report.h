@@ -25,6 +25,9 @@ TextTable SpatialMethodTable(const spatial::LightOutcome& o);
 std::vector<std::string> IterationLines(const spatial::LightOutcome& o);
 // Every cascade of the partitioned methods; nullopt when none ran.
 std::optional<TextTable> CascadeTable(const spatial::LightOutcome& o);
+// The virtual shadow maps' pages per method (page size, pool, requested, resident, dropped, LOD
+// bias); nullopt when no vsm* method ran.
+std::optional<TextTable> PageTable(const spatial::LightOutcome& o);
 // The camera-path study of one light: the hysteresis per pose and the shimmer per method.
 std::string CameraPathCaption(const CameraPathStudy& study, std::size_t light);
 TextTable CameraPathTable(const CameraPathStudy& study);

@@ -42,9 +42,13 @@ std::optional<View> ViewOf(const SweepResult& r, const std::vector<std::string>&
     return view;
 }
 
-// Table 1 as published: the report-faithful methods in its column order, against optimal-report.
+// Table 1 as published: the report-faithful methods in its column order, against optimal-report,
+// then any other method fitted to the view frustum as the report's are (tsm-report).
 std::optional<View> ReportView(const SweepResult& r) {
-    return ViewOf(r, spatial::ReportMethodNames(), "optimal-report");
+    std::vector<std::string> names = spatial::ReportMethodNames();
+    for (const std::string& m : r.methods)
+        if (!Contains(names, m) && spatial::IsFrustumFittedMethod(m)) names.push_back(m);
+    return ViewOf(r, names, "optimal-report");
 }
 
 // The fair comparison, against optimal: its methods, then any other single map that is not
@@ -53,14 +57,17 @@ std::optional<View> FairView(const SweepResult& r) {
     std::vector<std::string> names = spatial::FairMethodNames();
     for (const std::string& m : r.methods)
         if (!Contains(names, m) && !Contains(spatial::ReportMethodNames(), m) &&
-            !spatial::IsPartitionedMethod(m))
+            !spatial::IsFrustumFittedMethod(m) && !spatial::IsPartitionedMethod(m) &&
+            !spatial::IsVirtualMethod(m))
             names.push_back(m);
     return ViewOf(r, names, "optimal");
 }
 
-// The equal-texel table: optimal (one map) against the partitioned methods, when any ran.
+// The equal-texel table: optimal (one map) against the partitioned methods and the virtual
+// shadow maps, when any ran.
 std::optional<View> EqualTexelView(const SweepResult& r) {
-    const std::vector<std::string> partitioned = spatial::PartitionedMethodNames();
+    std::vector<std::string> partitioned = spatial::PartitionedMethodNames();
+    for (const std::string& m : spatial::VirtualMethodNames()) partitioned.push_back(m);
     if (std::none_of(r.methods.begin(), r.methods.end(),
                      [&](const std::string& m) { return Contains(partitioned, m); }))
         return std::nullopt;
@@ -166,6 +173,12 @@ struct MethodSummary {
     // the lights (the median: one number for the hemisphere that a few lights near the view
     // axis, where every single map needs far more, do not dominate).
     double medianStorage = 0.0, maxStorage = 0.0;
+    // Virtual shadow maps: mean pages requested, resident and dropped per light, mean LOD bias
+    // (NaN for the other methods).
+    double meanPagesRequested = std::numeric_limits<double>::quiet_NaN();
+    double meanPagesResident = std::numeric_limits<double>::quiet_NaN();
+    double meanPagesDropped = std::numeric_limits<double>::quiet_NaN();
+    double meanLodBias = std::numeric_limits<double>::quiet_NaN();
 };
 
 MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t reference) {
@@ -212,6 +225,19 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
     out.beatingPercent = 100.0 * beating / lights;
     if (differ) out.hAgreesPercent = 100.0 * agree / differ;
     out.grazingShare = finite ? out.grazingShare / finite : 0.0;
+    if (!r.cells.empty() && r.cells.front()[m].pagesRequested >= 0) {
+        double requested = 0.0, resident = 0.0, dropped = 0.0, bias = 0.0;
+        for (const auto& light : r.cells) {
+            requested += static_cast<double>(light[m].pagesRequested);
+            resident += static_cast<double>(light[m].pagesResident);
+            dropped += static_cast<double>(light[m].pagesDropped);
+            bias += light[m].lodBias;
+        }
+        out.meanPagesRequested = requested / lights;
+        out.meanPagesResident = resident / lights;
+        out.meanPagesDropped = dropped / lights;
+        out.meanLodBias = bias / lights;
+    }
     return out;
 }
 
@@ -384,11 +410,13 @@ ReportSection FairSection(const SweepResult& r, const View& view) {
 
 ReportSection EqualTexelSection(const SweepResult& r, const View& view, bool terminal) {
     ReportSection section{
-        "Equal texels (every partitioned method's maps add up to the single map's texels; "
+        "Equal texels (a method's maps or page pool hold at most the single map's texels; "
         "σ1(J⁻¹): frame pixels per texel): " +
             r.caseName + ", " + Lights(r) + "; ref = " + r.methods[view.reference],
-        "The partitioned methods (cascades) against optimal's single map, all of a method's maps "
-        "together holding the same texels. Besides the summary's columns: the maps per light, the "
+        "The partitioned methods (cascades) and the virtual shadow maps against optimal's single "
+        "map, all of a method's maps (a virtual map's resident pages) together holding at most "
+        "the same texels. Besides the summary's columns: the maps per light (pages: the most "
+        "over the lights), the "
         "mean and largest σ1(J⁻¹) (the most frame pixels one texel spans; above 1 where the map "
         "undersamples the view), the counted pixels no map covers (mean per light), and the "
         "partitions that served no visible point (summed over the lights).",
@@ -396,6 +424,29 @@ ReportSection EqualTexelSection(const SweepResult& r, const View& view, bool ter
         {}};
     if (terminal) section.notes.push_back("max σ1(J⁻¹): in --format csv, json and markdown.");
     return section;
+}
+
+// The virtual shadow maps' pages, when any ran: mean per light.
+std::optional<ReportSection> PageSection(const SweepResult& r, const View& view) {
+    TextTable table({"method", "pages\nrequested\n(mean)", "pages\nresident\n(mean)",
+                     "pages\ndropped\n(mean)", "mean\nLOD bias"});
+    bool any = false;
+    for (std::size_t m : view.methods) {
+        const MethodSummary s = Summarize(r, m, view.reference);
+        if (std::isnan(s.meanPagesRequested)) continue;
+        table.AddRow({r.methods[m], Fixed(s.meanPagesRequested, 1), Fixed(s.meanPagesResident, 1),
+                      Fixed(s.meanPagesDropped, 1), Fixed(s.meanLodBias, 3)});
+        any = true;
+    }
+    if (!any) return std::nullopt;
+    return ReportSection{
+        "Virtual shadow maps' pages: " + r.caseName + ", " + Lights(r),
+        "Per light, the distinct pages the readback's pixels asked for at the level their "
+        "footprint asks for (plus the coarsest page), those the pool holds (the most requested; "
+        "the pool holds at most the single map's texels) and those dropped, and the LOD bias "
+        "added to every footprint level (vsm-dynamic raises it until the requests fit).",
+        std::move(table),
+        {}};
 }
 
 }  // namespace
@@ -406,8 +457,11 @@ std::vector<ReportSection> SweepSections(const SweepResult& r, const ReportTable
     if (const auto view = ReportView(r))
         for (ReportSection& s : ReportSections(r, *view, report)) sections.push_back(std::move(s));
     if (const auto view = FairView(r)) sections.push_back(FairSection(r, *view));
-    if (const auto view = EqualTexelView(r))
+    if (const auto view = EqualTexelView(r)) {
         sections.push_back(EqualTexelSection(r, *view, terminal));
+        if (std::optional<ReportSection> pages = PageSection(r, *view))
+            sections.push_back(std::move(*pages));
+    }
     return sections;
 }
 
@@ -441,6 +495,13 @@ nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) 
              {"median_storage_factor", s.medianStorage},
              {"max_storage_factor", s.maxStorage},
              {"mean_ms", s.meanMs}});
+        if (!std::isnan(s.meanPagesRequested)) {
+            nlohmann::json& entry = doc["methods"].back();
+            entry["mean_pages_requested"] = s.meanPagesRequested;
+            entry["mean_pages_resident"] = s.meanPagesResident;
+            entry["mean_pages_dropped"] = s.meanPagesDropped;
+            entry["mean_lod_bias"] = s.meanLodBias;
+        }
     }
     if (worstRows) {
         doc["worst_10_percent"] = nlohmann::json::array();  // empty under kWorstRowsMinLights
@@ -522,10 +583,17 @@ std::string SweepLightsCsv(const SweepResult& r) {
     const auto hasWinner = [&](std::size_t m) {
         return !r.cells.empty() && !r.cells[0][m].winner.empty();
     };
+    // The virtual shadow maps also say how many pages they requested, kept and dropped.
+    const auto hasPages = [&](std::size_t m) {
+        return !r.cells.empty() && r.cells[0][m].pagesRequested >= 0;
+    };
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
         const std::string& name = r.methods[m];
         perLight << ',' << name << "_misclassified," << name << "_h," << name << "_ms";
         if (hasWinner(m)) perLight << ',' << name << "_winner";
+        if (hasPages(m))
+            perLight << ',' << name << "_pages_requested," << name << "_pages_resident," << name
+                     << "_pages_dropped";
     }
     perLight << '\n';
     for (std::size_t l = 0; l < r.lights.size(); ++l) {
@@ -538,6 +606,9 @@ std::string SweepLightsCsv(const SweepResult& r) {
             const SweepCell& c = r.cells[l][m];
             perLight << ',' << c.misclassified << ',' << CsvNumber(c.h) << ',' << CsvNumber(c.ms);
             if (hasWinner(m)) perLight << ',' << c.winner;
+            if (hasPages(m))
+                perLight << ',' << c.pagesRequested << ',' << c.pagesResident << ','
+                         << c.pagesDropped;
         }
         perLight << '\n';
     }

@@ -111,6 +111,25 @@ SchemeValue AnalyticStorageOf(const std::string& method, int partitions,
     if (method == "zp-lispsm")
         return scheme("ZP + W (k = " + k + ")", spatial::Scheme::ZpWarp(partitions));
     if (method == "fp-lispsm") return scheme("FP + W", spatial::Scheme::FpZpWarp(1));
+    if (method.rfind("vsm", 0) == 0) {
+        // A virtual map's levels halve the texel width per level and each pixel takes the level
+        // its footprint asks for: unwarped z-partitions with ratio ρ ≤ 2, k = ⌈log₂ f/n⌉.
+        const int levels =
+            std::max(1, static_cast<int>(std::ceil(std::log2(frustum.DepthRatio()) - 1e-9)));
+        return scheme("ZP, k = ⌈log₂ f/n⌉", spatial::Scheme::Zp(levels));
+    }
+    if (method.rfind("tsm", 0) == 0) {
+        // The 80% rule with the focus at mid-depth puts the projection centre λ/3 before the near
+        // plane (tsm.h: η = λ δ'(1 + ξ)/(λ(1 − ξ) − 2δ'), δ' = λ/2, ξ = −0.6), λ = f − n for an
+        // overhead light; over sin γ for others, as the schemes' LiSPSM (Lloyd 2006 §4.4).
+        const glm::dvec3 toLight = glm::normalize(esToLight);
+        const double sinGamma = glm::length(glm::cross(glm::dvec3(0.0, 0.0, -1.0), toLight));
+        const double nPrime = sinGamma > 1e-3
+                                  ? (frustum.farPlane - frustum.nearPlane) / (3.0 * sinGamma)
+                                  : std::numeric_limits<double>::infinity();
+        return {"TSM (n' = (f − n) / 3 sin γ)",
+                spatial::StorageFactorForWarpOffset(frustum, esToLight, nPrime)};
+    }
     if (method.rfind("focused", 0) == 0) return scheme("no warp", spatial::Scheme::Zp(1));
     if (method.rfind("lispsm", 0) == 0) return scheme("LiSPSM", spatial::Scheme::ZpWarp(1, 0.0));
     if (method.rfind("psm", 0) == 0) return scheme("PSM", spatial::Scheme::ZpWarp(1, 1.0));
@@ -182,7 +201,8 @@ CaseStorage RunCaseStorage(const spatial::Scene& scene, const std::vector<std::s
         for (const spatial::MethodOutcome& m : outcome.methods) {
             CaseStorageRow row;
             row.method = m.method;
-            row.maps = std::max<int>(1, static_cast<int>(m.cascades.size()));
+            row.maps = m.pages ? static_cast<int>(m.pages->resident)
+                               : std::max<int>(1, static_cast<int>(m.cascades.size()));
             row.texels = m.texels;
             row.perspectiveMax = m.perspectiveMax;
             row.measured = m.storageFactor;

@@ -97,6 +97,14 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                                  std::max(1, static_cast<int>(o.cascades.size())),
                                  o.emptyPartitions,
                                  o.storageFactor};
+                if (o.pages) {
+                    SweepCell& c = r.cells[l][m];
+                    c.cascades = static_cast<int>(o.pages->resident);
+                    c.pagesRequested = o.pages->requested;
+                    c.pagesResident = o.pages->resident;
+                    c.pagesDropped = o.pages->dropped;
+                    c.lodBias = o.pages->lodBias;
+                }
             }
             r.receiverPixels[l] = outcome.receiverPixels;
             if (onLightDone) onLightDone();

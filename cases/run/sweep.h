@@ -22,11 +22,15 @@ struct SweepCell {
     std::string winner;     // optimal, optimal-refined: the start that won
     double footprintMean = 0.0, footprintMax = 0.0;  // σ₁(J⁻¹) over counted pixels
     std::int64_t uncovered = 0;                      // counted pixels no map covers
-    int cascades = 1;                                // maps (partitioned methods: k)
+    int cascades = 1;  // maps (partitioned methods: k; virtual shadow maps: resident pages)
     int emptyPartitions = 0;
     // Lloyd 2006's storage factor measured (MethodOutcome::storageFactor): texels for a worst
     // perspective aliasing of 1 over the frame's pixels.
     double storageFactor = 0.0;
+    // Virtual shadow maps (vsm*): pages requested, resident and dropped, and the LOD bias; -1
+    // for the other methods.
+    std::int64_t pagesRequested = -1, pagesResident = -1, pagesDropped = -1;
+    double lodBias = 0.0;
 };
 
 struct SweepResult {

@@ -8,6 +8,7 @@
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/page_shading.h"
 #include "lexel/spatial/harness/ray_caster.h"
 
 namespace lexel::spatial {
@@ -172,38 +173,6 @@ Footprints MeasureFootprints(const Camera& camera, const LightSpace& lightSpace,
 
 }  // namespace
 
-// ∂u/∂x on the plane ⊥ the ray: the rows ∂u^i/∂X (LightMatrix::MapJacobian) times ∂X/∂x
-// (LightSpace::LightFromWorldLinear) applied to a unit basis (e1, e2) of that plane give the 2×2
-// J_l in texels per world unit. The texel's beam cross-section is J_l⁻¹, whose largest singular
-// value is σ_max(J_l) / |det J_l| (σ_min σ_max = |det|), with σ_max² = (T + √(T² − 4 det²)) / 2,
-// T = ‖J_l‖_F²: no cancellation for the small singular value.
-double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
-                           const LightMatrix& matrix, const glm::dvec3& wsPoint) {
-    const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
-    if (!InFront(matrix.p4, lsX)) return std::numeric_limits<double>::infinity();
-    glm::dvec3 du1dX, du2dX;
-    matrix.MapJacobian(lsX, &du1dX, &du2dX);
-    const glm::dvec3 wsRay = -lightSpace.DirectionToLight(wsPoint);
-    const glm::dvec3 helper =
-        std::abs(wsRay.x) < 0.5 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-    const glm::dvec3 wsE1 = glm::normalize(glm::cross(wsRay, helper));
-    const glm::dvec3 wsE2 = glm::cross(wsRay, wsE1);
-    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
-    const glm::dvec3 lsE1 = lsFromWs * wsE1, lsE2 = lsFromWs * wsE2;
-    const double a = glm::dot(du1dX, lsE1), b = glm::dot(du1dX, lsE2);
-    const double c = glm::dot(du2dX, lsE1), d = glm::dot(du2dX, lsE2);
-    const double det = std::abs(a * d - b * c);
-    if (!(det > 0.0)) return std::numeric_limits<double>::infinity();
-    const double frobenius2 = a * a + b * b + c * c + d * d;
-    const double sigmaMax = std::sqrt(
-        0.5 * (frobenius2 + std::sqrt(std::max(0.0, frobenius2 * frobenius2 - 4.0 * det * det))));
-    const double wsTexelWidth = sigmaMax / det;
-    // Eq. 2 per pixel: the image beam's width at planar depth z.
-    const double wsPixelWidth = 2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) *
-                                PlanarEyeDepth(camera, wsPoint) / camera.resolution.height;
-    return wsTexelWidth / wsPixelWidth;
-}
-
 double EffectiveStorageFactor(std::int64_t texels, double aliasing, std::int64_t framePixels) {
     if (framePixels <= 0) return 0.0;
     return static_cast<double>(texels) * aliasing * aliasing / static_cast<double>(framePixels);
@@ -249,6 +218,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     out.samples = backend_.BoundarySamples(readback_, lightSpace, standardMap);
     context.samples = &out.samples;
     context.baseline.samples = &out.samples;
+    context.readback = &readback_;
 
     // The counted frame pixels (covered, facing the light) and the truth there.
     std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
@@ -327,10 +297,17 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     const LightSamples& samples = light.samples;
     const std::vector<Cascade>& cascades = computed.cascades;
     m->matrix = computed.matrix;
-    FrameShading shading =
-        cascades.empty()
-            ? ShadeThroughMap(backend_, frame_, lightSpace, computed.matrix, scene_.shadowMap)
-            : ShadeThroughCascades(backend_, frame_, lightSpace, cascades, frameDepth_);
+    FrameShading shading;
+    if (computed.virtualMap) {
+        PageShading p =
+            ShadeThroughPages(backend_, frame_, lightSpace, scene_.camera, *computed.virtualMap);
+        shading = {std::move(p.shades), std::move(p.maps), std::move(p.page), std::move(p.outside)};
+    } else {
+        shading =
+            cascades.empty()
+                ? ShadeThroughMap(backend_, frame_, lightSpace, computed.matrix, scene_.shadowMap)
+                : ShadeThroughCascades(backend_, frame_, lightSpace, cascades, frameDepth_);
+    }
     m->misclassified = CountWrong(shading.shades, truth, &m->falseShadow);
     const Footprints footprints =
         MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
@@ -345,7 +322,13 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
         static_cast<std::int64_t>(scene_.camera.resolution.width) * scene_.camera.resolution.height;
     m->storageFactor = EffectiveStorageFactor(m->texels, m->perspectiveMax, framePixels);
     m->storageFactorP99 = EffectiveStorageFactor(m->texels, m->perspectiveP99, framePixels);
-    if (cascades.empty()) {
+    if (const auto& vsm = computed.virtualMap) {
+        m->h = PageEnergy(*vsm, scene_.camera, lightSpace, samples, grazing, &m->hGrazing);
+        m->pages =
+            PageOutcome{vsm->requested,        static_cast<std::int64_t>(vsm->resident.size()),
+                        vsm->dropped,          vsm->layout.pageTexels,
+                        vsm->layout.poolPages, vsm->lodBias};
+    } else if (cascades.empty()) {
         m->h = Energy(m->matrix, samples);
         for (std::size_t s = 0; s < grazing.size(); ++s)
             if (grazing[s])
@@ -361,7 +344,11 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
                 ++m->cascades[shading.cascade[i]].pixels;
         MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
     }
-    if (keepBuffers) {
+    if (keepBuffers && computed.virtualMap) {
+        m->shades = std::move(shading.shades);
+        m->map = PoolAtlas(shading.maps, computed.virtualMap->layout.pageTexels);
+        m->uncoveredPixels = std::move(shading.outside);
+    } else if (keepBuffers) {
         m->shades = std::move(shading.shades);
         m->map = shading.maps.front();
         if (!cascades.empty()) m->cascadeMaps = std::move(shading.maps);

@@ -13,16 +13,19 @@
 //
 // A partitioned method (partitions.h) renders one map per cascade and shades each pixel through
 // the cascade CascadeFor picks by the pixel's planar eye depth; its h sums each sample's badness
-// under the cascade that serves it. Every method's footprint is measured per counted pixel as
-// σ₁(J⁻¹), J = ∂u/∂x in texels of the serving map per frame pixel, with ∂W/∂x exact on the
-// pixel's plane (PlaneDerivatives): the most frame pixels one texel spans, > 1 where the map
-// undersamples the view. Beside it, Lloyd et al. 2006's perspective aliasing w_l/w_i per covered
-// counted pixel (PerspectiveAliasing) and the effective storage factor it implies.
+// under the cascade that serves it. A virtual shadow map (virtual_shadow_map.h) renders its
+// resident pages and shades each pixel through the page that serves it (page_shading.h). Every
+// method's footprint is measured per counted pixel as σ₁(J⁻¹), J = ∂u/∂x in texels of the serving
+// map per frame pixel, with ∂W/∂x exact on the pixel's plane (PlaneDerivatives): the most frame
+// pixels one texel spans, > 1 where the map undersamples the view. Beside it, Lloyd et al. 2006's
+// perspective aliasing w_l/w_i per covered counted pixel (PerspectiveAliasing) and the effective
+// storage factor it implies.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -32,21 +35,12 @@
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/perspective_aliasing.h"
 #include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
 
 class RayCaster;
-
-// Lloyd et al. 2006 eq. 1's perspective factor w_l/w_i at a world point served by `matrix`:
-// w_l = σ₁ of the inverse of ∂u/∂x restricted to the plane perpendicular to the light's ray
-// through the point (world units per texel: the widest cross-section of the texel's beam), and
-// w_i = 2 tanθ z / H (eq. 2 per pixel: z the planar eye depth, H the frame's height in pixels,
-// square pixels). Unlike σ₁(J⁻¹) it leaves out the receiver's orientation (eq. 1's cosine ratio,
-// projection aliasing), as Lloyd's storage factor does. +inf where the map is singular there or
-// the point is not in front of the map; throws nothing.
-double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
-                           const LightMatrix& matrix, const glm::dvec3& wsPoint);
 
 // texels · aliasing² / framePixels: the storage factor S̄ (Lloyd 2006 eq. 12's texels over image
 // pixels) that brings a worst aliasing `aliasing` to 1 by scaling every map's resolution alike.
@@ -78,6 +72,16 @@ struct CascadeOutcome {
     double h = 0.0;           // eq. (6) over the samples it serves
 };
 
+// A virtual shadow map's pages for one light (virtual_shadow_map.h).
+struct PageOutcome {
+    std::int64_t requested = 0;  // distinct pages the readback's pixels asked for
+    std::int64_t resident = 0;   // ... backed by the pool (the most requested)
+    std::int64_t dropped = 0;    // requested − resident
+    int pageTexels = 0;          // P: a page is P × P texels
+    int poolPages = 0;           // the pool's pages (pool texels ≤ the single map's)
+    double lodBias = 0.0;        // the bias the requests were made with (vsm-dynamic: fitted)
+};
+
 struct MethodOutcome {
     std::string method;
     LightMatrix matrix;
@@ -105,9 +109,11 @@ struct MethodOutcome {
     double storageFactor = 0.0, storageFactorP99 = 0.0;
     std::vector<CascadeOutcome> cascades;  // partitioned methods: per cascade
     int emptyPartitions = 0;               // ... those serving no readback point
+    std::optional<PageOutcome> pages;      // virtual shadow maps (vsm*): their pages
     std::vector<Shade> shades;             // per frame pixel, when keepBuffers
-    ShadowMap map;                         // when keepBuffers (a partitioned method's first)
-    std::vector<ShadowMap> cascadeMaps;    // when keepBuffers, partitioned methods
+    ShadowMap map;  // when keepBuffers (a partitioned method's first; vsm*: the pool, PoolAtlas)
+    std::vector<ShadowMap> cascadeMaps;         // when keepBuffers, partitioned methods
+    std::vector<std::uint8_t> uncoveredPixels;  // when keepBuffers, vsm*: 1 where uncovered
 };
 
 struct LightOutcome {

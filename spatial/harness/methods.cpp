@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "lexel/spatial/multi_start.h"
+#include "lexel/spatial/tsm.h"
 
 namespace lexel::spatial {
 
@@ -42,12 +43,20 @@ std::vector<std::string> PartitionedMethodNames() {
     return names;
 }
 
+std::vector<std::string> TsmMethodNames() { return {"tsm", "tsm-report"}; }
+
+std::vector<std::string> VirtualMethodNames() { return {"vsm", "vsm-dynamic"}; }
+
+bool IsVirtualMethod(std::string_view name) { return name == "vsm" || name == "vsm-dynamic"; }
+
 std::vector<std::string> SpatialMethodNames() {
     std::vector<std::string> names = FairMethodNames();
     for (const std::string& m : ReportMethodNames())
         if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
     names.push_back("optimal-shear");
     for (const std::string& m : PartitionedMethodNames()) names.push_back(m);
+    for (const std::string& m : TsmMethodNames()) names.push_back(m);
+    for (const std::string& m : VirtualMethodNames()) names.push_back(m);
     return names;
 }
 
@@ -79,6 +88,10 @@ constexpr MethodDescription kDescriptions[] = {
     {"zp-lispsm", "cascades: Lloyd et al. 2006's log z-partitions, LiSPSM in each"},
     {"fp-lispsm", "Lloyd et al. 2006's face partitioning: a LiSPSM map per face wedge"},
     {"sdsm-optimal", "sdsm's partitions, Algorithm 1 (multi-start) in each"},
+    {"tsm", "Martin & Tan 2004: the trapezoid around the visible points, 80% focus rule"},
+    {"tsm-report", "tsm as the paper fits it: the view frustum and scene bounds"},
+    {"vsm", "virtual shadow map: 16k² pages at the footprint's level, the single map's texels"},
+    {"vsm-dynamic", "vsm with the LOD bias raised until its pages fit the pool (UE5)"},
 };
 
 }  // namespace
@@ -92,6 +105,10 @@ std::string_view SpatialMethodDescription(std::string_view name) {
 bool IsSpatialMethod(std::string_view name) {
     const std::vector<std::string> names = SpatialMethodNames();
     return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool IsFrustumFittedMethod(std::string_view name) {
+    return name == "focused" || name == "lispsm" || name == "psm" || name == "tsm-report";
 }
 
 bool IsPartitionedMethod(std::string_view name) {
@@ -133,6 +150,8 @@ constexpr NamedBaseline kBaselines[] = {
     {"lispsm-tight", &LispsmTightLightMatrix},
     {"lispsm-engine", &LispsmEngineLightMatrix},
     {"psm-tight", &PsmTightLightMatrix},
+    {"tsm", &TsmLightMatrix},
+    {"tsm-report", &TsmReportLightMatrix},
 };
 
 MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
@@ -143,14 +162,14 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
         options.refine = name == "optimal-refined";
         const std::vector<OptimizerStart> starts = StandardStarts(context.baseline);
         MultiStartResult r = OptimizeFromStarts(*context.samples, starts, map, options);
-        return {r.result.matrix, std::move(r.result), std::move(r.winner), {}};
+        return {r.result.matrix, std::move(r.result), std::move(r.winner), {}, std::nullopt};
     }
     // The report's single start (optimal-report), or with the shear (optimal-shear).
     options.shear = name == "optimal-shear";
     const BaselineContext& b = context.baseline;
     const glm::dvec3 initialP4 = InitialLightAxis(*b.lightSpace, b.wsBounds, b.wsRelevant);
     OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4, map, options);
-    return {r.matrix, std::move(r), {}, {}};
+    return {r.matrix, std::move(r), {}, {}, std::nullopt};
 }
 
 MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& context) {
@@ -165,16 +184,29 @@ MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& c
     return m;
 }
 
+MethodMatrix Virtual(std::string_view name, const MethodContext& context) {
+    if (!context.readback) throw std::invalid_argument(std::string(name) + " needs the readback");
+    VirtualMapOptions options;
+    options.fitPool = name == "vsm-dynamic";
+    MethodMatrix m;
+    m.virtualMap = BuildVirtualShadowMap(context.baseline, *context.readback, options);
+    const VirtualMapLayout& layout = m.virtualMap->layout;
+    m.matrix = layout.PageMatrix({layout.maxLevel, 0, 0});
+    return m;
+}
+
 }  // namespace
 
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
     for (const NamedBaseline& b : kBaselines)
-        if (b.name == name) return {b.compute(context.baseline, nullptr), std::nullopt, {}, {}};
+        if (b.name == name)
+            return {b.compute(context.baseline, nullptr), std::nullopt, {}, {}, std::nullopt};
     if (name == "optimal" || name == "optimal-refined" || name == "optimal-report" ||
         name == "optimal-shear")
         return Optimal(name, context);
     for (const NamedPartition& p : kPartitions)
         if (p.name == name) return Partitioned(p, context);
+    if (IsVirtualMethod(name)) return Virtual(name, context);
     throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 

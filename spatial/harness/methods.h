@@ -11,6 +11,8 @@
 // and `optimal-shear` (Algorithm 1 with the report's Fig. 3 shear, optimized exactly). The
 // partitioned methods (partitions.h) return k cascades at the same total texels: `pssm`, `sdsm`,
 // `sdsm-snap` (SDSM with texel snapping), `sdsm-rect`, `zp-lispsm`, `fp-lispsm`, `sdsm-optimal`.
+// Trapezoidal shadow maps (tsm.h): `tsm` (fair) and `tsm-report` (the paper's view frustum).
+// Virtual shadow maps (virtual_shadow_map.h): `vsm` and `vsm-dynamic`, pages at equal texels.
 #pragma once
 
 #include <optional>
@@ -24,6 +26,7 @@
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/partitions.h"
 #include "lexel/spatial/samples.h"
+#include "lexel/spatial/virtual_shadow_map.h"
 
 namespace lexel::spatial {
 
@@ -37,6 +40,7 @@ struct MethodContext {
     BaselineContext baseline;               // its samples are set: plane-optimal uses them
     const LightSamples* samples = nullptr;  // boundary samples and relevant points (light space)
     PartitionOptions partitions;            // k, λ and the allocation of the partitioned methods
+    const Readback* readback = nullptr;     // the readback the visible points come from (vsm*)
 };
 
 // Every method: the fair comparison's first (optimal its reference), then the report's, then
@@ -48,10 +52,22 @@ std::vector<std::string> ReportMethodNames();
 std::vector<std::string> FairMethodNames();
 // The partitioned methods, each compared with optimal at the same total texels.
 std::vector<std::string> PartitionedMethodNames();
+// Trapezoidal shadow maps (tsm.h): tsm on the fair comparison's information, tsm-report fitted
+// as the paper does (view frustum ∩ scene bounds).
+std::vector<std::string> TsmMethodNames();
+// Virtual shadow maps (virtual_shadow_map.h) at the single map's physical texels: `vsm` requests
+// pages at the level each pixel's footprint asks for and drops the least requested when the pool
+// is full; `vsm-dynamic` raises the LOD bias until the requests fit (UE5's dynamic resolution).
+std::vector<std::string> VirtualMethodNames();
+bool IsVirtualMethod(std::string_view name);
 bool IsSpatialMethod(std::string_view name);
 // One line saying what the method is (for `lexel --help`); empty for an unknown name.
 std::string_view SpatialMethodDescription(std::string_view name);
 bool IsPartitionedMethod(std::string_view name);
+// Whether the method fits the view frustum ∩ scene bounds as the report's baselines do (focused,
+// lispsm, psm, tsm-report) rather than the visible points: such a method belongs beside Table 1
+// as published, not in the fair comparison.
+bool IsFrustumFittedMethod(std::string_view name);
 
 // The matrix; for the optimal* methods the optimizer's trace (h per iteration, time profile)
 // and, for the multi-start ones, which start won; for a partitioned method its cascades (and
@@ -61,8 +77,11 @@ struct MethodMatrix {
     std::optional<OptimizerResult> optimizer;
     std::string winner;  // optimal, optimal-refined: the start whose map or search won; else empty
     std::vector<Cascade> cascades;  // partitioned methods only
+    // vsm*: the virtual map and its resident pages (`matrix` is then its coarsest page's).
+    std::optional<VirtualShadowMap> virtualMap;
 };
-// std::invalid_argument for an unknown name, or an optimal* or partitioned method without samples.
+// std::invalid_argument for an unknown name, an optimal* or partitioned method without samples,
+// or a vsm* method without the readback.
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context);
 
 }  // namespace lexel::spatial

@@ -80,9 +80,9 @@ file(WRITE "${WORK}/badhtml/index.html" "${head}<img src=\"there.png\">${tail}")
 check_html_links("${WORK}/badhtml/index.html" ALL_IMAGES)
 
 # --help lists every method with one line (issue 24).
-expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  sdsm-optimal +[^\n]+\n+$"
+expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n.*\n  vsm-dynamic +[^\n]+\n+$"
            "^$" run --help)
-expect_run(0 "\n3D methods \\(default: all\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  sdsm-optimal +[^\n]+\n+$"
+expect_run(0 "\n3D methods \\(default: all\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  vsm +virtual shadow map[^\n]*\n  vsm-dynamic +[^\n]+\n+$"
            "^$" sweep --help)
 
 # Bad input: one line naming the field and the reason, exit 2, no output files.
@@ -333,7 +333,7 @@ set(LEXEL "${sourceLexel}")
 set(small "${DATA}/spatial_small.json")
 set(methods3d optimal optimal-refined focused-tight lispsm-tight lispsm-engine psm-tight
     plane-optimal normal optimal-report focused lispsm psm optimal-shear pssm sdsm sdsm-snap sdsm-rect
-    zp-lispsm fp-lispsm sdsm-optimal)
+    zp-lispsm fp-lispsm sdsm-optimal tsm tsm-report vsm vsm-dynamic)
 set(partitioned3d pssm sdsm sdsm-snap sdsm-rect zp-lispsm fp-lispsm sdsm-optimal)
 
 # Asserts that a JSON value is a non-negative integer (string(JSON) reads numbers as text).
@@ -344,7 +344,7 @@ function(expect_count json what)
 endfunction()
 
 # The table lists every method, in the registry's order.
-expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\n  the report's focused 4000² truth map disagrees with the rays on [0-9]+ pixels?[^\n]*\n[^\n]*\nmethod +misclassified +shadow +light +uncovered[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\nlispsm-engine [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal "
+expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\n  the report's focused 4000² truth map disagrees with the rays on [0-9]+ pixels?[^\n]*\n[^\n]*\nmethod +misclassified +shadow +light +uncovered[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\nlispsm-engine [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal [^\n]*\ntsm [^\n]*\ntsm-report [^\n]*\nvsm [^\n]*\nvsm-dynamic "
            "^$" run "${small}")
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" run "${small}" --format json)
 string(JSON nLights LENGTH "${lastStdout}" lights)
@@ -352,7 +352,7 @@ string(JSON nMethods LENGTH "${lastStdout}" lights 0 methods)
 string(JSON method0 GET "${lastStdout}" lights 0 methods 0 method)
 string(JSON wrong0 GET "${lastStdout}" lights 0 methods 0 misclassified)
 string(JSON receivers GET "${lastStdout}" lights 0 receiver_pixels)
-if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 20 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
+if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 24 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
     message(FATAL_ERROR "unexpected 3D JSON document:\n${lastStdout}")
 endif()
 math(EXPR last "${nMethods} - 1")
@@ -365,12 +365,16 @@ foreach(k RANGE ${last})
     endif()
     expect_count("${wrong}" "lights/0/methods/${k}/misclassified")
 endforeach()
-expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps,max_perspective_aliasing,storage_factor\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+\n0,normal,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+\n$"
+expect_run(0 "^light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,max_footprint,maps,max_perspective_aliasing,storage_factor,pages_requested,pages_resident,pages_dropped\n0,optimal,[0-9]+,[0-9]+,[0-9]+,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+,,,\n0,normal,[^\n]*,1,[0-9.e+-]+,[0-9.e+-]+,,,\n$"
            "^$" run "${small}" --format csv --method optimal --method normal --no-map-truth)
+# A virtual shadow map's maps are its resident pages, and it says how many it asked for and
+# dropped (the small case's 128² budget: 64 pages of 16²).
+expect_run(0 "^light,method,[^\n]*\n0,vsm,[0-9]+,[0-9]+,[0-9]+,[^\n]*,[0-9.e+-]+,[0-9]+,[0-9]+,[0-9]+\n$"
+           "^$" run "${small}" --format csv --method vsm --no-map-truth)
 
 # --out writes the report and three images per light and method (a partitioned method: a map
 # image per cascade; fp-lispsm has 3 face wedges here).
-expect_run(0 "^light 0" "^lexel: wrote 80 images, index.html and spatial_small.json/.csv to [^\n]*\n$"
+expect_run(0 "^light 0" "^lexel: wrote 92 images, index.html and spatial_small.json/.csv to [^\n]*\n$"
            run "${small}" --out "${WORK}/out3d")
 # index.html shows every image and links both data files (issue 24: 154 loose PNGs, no index).
 check_html_links("${WORK}/out3d/index.html" ALL_IMAGES)
@@ -436,9 +440,9 @@ expect_run(0 "\ncamera path, light 1: P changed in 2 of 8 poses [^\n]*\n" "^$"
            run "${CASES}/spatial/walkthrough.json" --method optimal --no-map-truth)
 
 # lexel sweep: Table 1 as published and the fair comparison, as JSON, Markdown, CSV and text.
-set(reportMethods optimal-report focused lispsm plane-optimal normal psm)
+set(reportMethods optimal-report focused lispsm plane-optimal normal psm tsm-report)
 set(fairMethods optimal optimal-refined focused-tight lispsm-tight lispsm-engine psm-tight
-    plane-optimal normal optimal-shear)
+    plane-optimal normal optimal-shear tsm)
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" sweep "${small}" --lights 3 --format json)
 string(JSON sweepCase GET "${lastStdout}" case)
 string(JSON sweepLights GET "${lastStdout}" lights)
@@ -478,7 +482,7 @@ expect_run(0 "\nworst 10% by optimal-report [^\n]*\n  published \\(report\\) +30
            "^$" sweep "${small}" --lights 20 --methods optimal-report --methods focused)
 # The Markdown says what each table is; the report's published rows are labelled as its own
 # counts.
-expect_run(0 "^## Table 1 as published [^\n]*spatial_small, 3 point lights[^\n]*\n\nThe report's experiment [^\n]*\n\n\\| lights \\| optimal-report \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\|\n.*\\|   published \\(report\\) \\| 1886057 \\(0\\) \\|.*\nRows \"published \\(report\\)\" are the report's own Table 1 as printed: absolute counts summed over its 500 lights[^\n]*\n\nNo worst-10% rows: they need at least 20 lights \\(this sweep has 3[^\n]*\n.*## The fair comparison [^\n]*\n\nEvery method gets [^\n]*\n\n\\| method \\|"
+expect_run(0 "^## Table 1 as published [^\n]*spatial_small, 3 point lights[^\n]*\n\nThe report's experiment [^\n]*\n\n\\| lights \\| optimal-report \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\| tsm-report \\|\n.*\\|   published \\(report\\) \\| 1886057 \\(0\\) \\|.*\nRows \"published \\(report\\)\" are the report's own Table 1 as printed: absolute counts summed over its 500 lights[^\n]*\n\nNo worst-10% rows: they need at least 20 lights \\(this sweep has 3[^\n]*\n.*## The fair comparison [^\n]*\n\nEvery method gets [^\n]*\n\n\\| method \\|"
            "^$" sweep "${small}" --lights 3 --format markdown)
 expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor\nreport,all,optimal-report,[0-9.]+,0,.*\nfair,all,optimal,[0-9.]+,0,"
            "^$" sweep "${small}" --lights 3 --format csv)

@@ -216,7 +216,15 @@ SweepResult WideSweep(std::size_t lights) {
             c.footprintMean = 12.3456;
             c.footprintMax = 12345.678;
             c.uncovered = 123456;
-            c.cascades = spatial::IsPartitionedMethod(r.methods[m]) ? 16 : 1;
+            c.cascades = spatial::IsPartitionedMethod(r.methods[m]) ? 16
+                         : spatial::IsVirtualMethod(r.methods[m])   ? 156
+                                                                    : 1;
+            if (spatial::IsVirtualMethod(r.methods[m])) {
+                c.pagesRequested = 123456;
+                c.pagesResident = 156;
+                c.pagesDropped = 123300;
+                c.lodBias = 12.345;
+            }
             c.emptyPartitions = c.cascades > 1 ? 3 : 0;
             c.storageFactor = 98765.4321;
             cells.push_back(c);
@@ -256,9 +264,10 @@ TEST(SweepTable, HasWorstTenPercentRowsFromTwentyLights) {
     // One row per report method, and under each the report's own row.
     std::size_t worst = 0;
     for (const std::string& line : LinesOf(text)) worst += line.starts_with("worst 10% by ");
-    EXPECT_EQ(worst, 2u * spatial::ReportMethodNames().size()) << text;  // two column blocks
-    EXPECT_EQ(SweepJson(r)["report_table"]["worst_10_percent"].size(),
-              spatial::ReportMethodNames().size());
+    // The report's methods, then tsm-report (fitted to the view frustum as they are).
+    const std::size_t reportColumns = spatial::ReportMethodNames().size() + 1;
+    EXPECT_EQ(worst, 2u * reportColumns) << text;  // two column blocks
+    EXPECT_EQ(SweepJson(r)["report_table"]["worst_10_percent"].size(), reportColumns);
     EXPECT_EQ(text.find("No worst-10% rows"), std::string::npos);
 }
 
@@ -291,7 +300,12 @@ TEST(SweepTable, MarkdownSaysWhatEachTableMeans) {
             ++headings;
             explained += !lines[i + 2].empty() && lines[i + 2][0] != '|';
         }
-    EXPECT_EQ(headings, 4u) << markdown;  // Table 1, its summary, fair, equal texels
+    // Table 1, its summary, fair, equal texels, the virtual shadow maps' pages.
+    EXPECT_EQ(headings, 5u) << markdown;
+    EXPECT_NE(markdown.find("Virtual shadow maps' pages"), std::string::npos);
+    EXPECT_NE(markdown.find("| vsm-dynamic | 123456.0 | 156.0 | 123300.0 | 12.345 |"),
+              std::string::npos)
+        << markdown;
     EXPECT_EQ(explained, headings) << markdown;
     EXPECT_NE(markdown.find("| max σ1(J⁻¹) |"), std::string::npos);  // terminal-only cut
 }
