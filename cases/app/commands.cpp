@@ -514,11 +514,17 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
     const std::vector<ThesisTable> tables =
         LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
     const fs::path dir = casesDir.empty() ? DataDirectory() / "flatland" : fs::path(casesDir);
-    // Checked before anything is computed: tables.md/.csv, lowres.csv, <case>.png,
-    // lowres_<name>.png; the inputs are the thesis cases and their fitted versions.
-    OutputPlan plan{{}, [](const std::string& file) {
+    // Checked before anything is computed: tables.md/.csv, lowres.csv, <case file stem>.png,
+    // lowres_<name>.png (the name is the case's, read later); the inputs are the thesis cases and
+    // their fitted versions. Other PNGs in DIR are not the command's.
+    std::vector<std::string> figures;
+    for (const ThesisTable& thesis : tables)
+        figures.push_back(fs::path(thesis.file).stem().string() + ".png");
+    OutputPlan plan{{}, [figures](const std::string& file) {
                         return file == "tables.md" || file == "tables.csv" ||
-                               file == "lowres.csv" || file.ends_with(".png");
+                               file == "lowres.csv" ||
+                               std::find(figures.begin(), figures.end(), file) != figures.end() ||
+                               (file.starts_with("lowres_") && file.ends_with(".png"));
                     }};
     for (const ThesisTable& thesis : tables) {
         plan.inputs.push_back(dir / thesis.file);
