@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -566,30 +567,50 @@ TEST_F(OutputSetTest, OldFilesThatCannotBeKeptAreNeverReplaced) {
     EXPECT_EQ(Entries(), (std::vector<std::string>{"out", "out/a.csv", "out/b.csv"}));
 }
 
+// A child process that stops cleanly on signals, as lexel does, and stages a set in `outDir`:
+// `ready` runs first (files staged before the parent goes on), then `busy` (never returning:
+// computing or writing). Returns the child's pid once `ready` is done.
+pid_t ForkStagingRun(const fs::path& outDir, const std::function<void(OutputSet&)>& ready,
+                     const std::function<void(OutputSet&)>& busy) {
+    int pipeFds[2];
+    if (::pipe(pipeFds) != 0) return -1;
+    const pid_t child = ::fork();
+    if (child == 0) {
+        StopCleanlyOnSignals();
+        OutputSet out(outDir, AnyName());
+        ready(out);
+        const char byte = 1;
+        if (::write(pipeFds[1], &byte, 1) != 1) ::_exit(1);
+        busy(out);
+        ::_exit(1);
+    }
+    char byte = 0;
+    const bool started = child > 0 && ::read(pipeFds[0], &byte, 1) == 1;
+    ::close(pipeFds[0]);
+    ::close(pipeFds[1]);
+    return started ? child : -1;
+}
+
+// Sends `signal` and returns the child's exit status (-1 when it did not exit by itself).
+int StopWith(pid_t child, int signal) {
+    ::kill(child, signal);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 // Issue 24: SIGTERM (SIGINT, SIGHUP) removes the staging directory and exits with 128 + n
 // (before, no handler: the staging directory stayed like after SIGKILL).
 TEST_F(OutputSetTest, TerminationSignalRemovesTheStaging) {
     for (const int signal : {SIGTERM, SIGINT}) {
-        int ready[2];
-        ASSERT_EQ(::pipe(ready), 0);
-        const pid_t child = ::fork();
-        if (child == 0) {
-            StopCleanlyOnSignals();
-            OutputSet out(base / "out", AnyName());
-            out.WriteText("report.csv", "half done");
-            const char byte = 1;
-            if (::write(ready[1], &byte, 1) != 1) ::_exit(1);
-            for (;;) ::pause();  // computing
-        }
-        char byte = 0;
-        ASSERT_EQ(::read(ready[0], &byte, 1), 1);
-        ::close(ready[0]);
-        ::close(ready[1]);
+        const pid_t child = ForkStagingRun(
+            base / "out", [](OutputSet& out) { out.WriteText("report.csv", "half done"); },
+            [](OutputSet&) {
+                for (;;) ::pause();  // computing
+            });
+        ASSERT_GT(child, 0);
         EXPECT_EQ(Entries().size(), 2u);  // the staging directory and its file
-        ::kill(child, signal);
-        int status = 0;
-        ::waitpid(child, &status, 0);
-        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + signal) << status;
+        EXPECT_EQ(StopWith(child, signal), 128 + signal);
         EXPECT_TRUE(Entries().empty());
     }
 }
@@ -602,32 +623,20 @@ TEST_F(OutputSetTest, SignalWhileWritingRemovesTheStaging) {
     constexpr int kRuns = 30;
     int left = 0;
     for (int run = 0; run < kRuns; ++run) {
-        int ready[2];
-        ASSERT_EQ(::pipe(ready), 0);
-        const pid_t child = ::fork();
-        if (child == 0) {
-            StopCleanlyOnSignals();
-            OutputSet out(base / "out", AnyName());
-            const char byte = 1;
-            if (::write(ready[1], &byte, 1) != 1) ::_exit(1);
-            try {
-                for (int i = 0;; ++i) out.WriteText("f" + std::to_string(i) + ".csv", "x");
-            } catch (const std::runtime_error&) {
-                for (;;) ::pause();  // the staging directory is gone: wait for the exit
-            }
-        }
-        char byte = 0;
-        ASSERT_EQ(::read(ready[0], &byte, 1), 1);
-        ::close(ready[0]);
-        ::close(ready[1]);
+        const pid_t child = ForkStagingRun(
+            base / "out", [](OutputSet&) {},
+            [](OutputSet& out) {
+                try {
+                    for (int i = 0;; ++i) out.WriteText("f" + std::to_string(i) + ".csv", "x");
+                } catch (const std::runtime_error&) {
+                    for (;;) ::pause();  // the staging directory is gone: wait for the exit
+                }
+            });
+        ASSERT_GT(child, 0);
         ::usleep(5000 + 1000 * (run % 10));  // some files written
-        ::kill(child, SIGTERM);
-        int status = 0;
-        ::waitpid(child, &status, 0);
-        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGTERM) << status;
+        EXPECT_EQ(StopWith(child, SIGTERM), 128 + SIGTERM);
         if (!Entries().empty()) {
             ++left;
-            fs::remove_all(base / "out");
             for (const auto& e : fs::directory_iterator(base)) fs::remove_all(e.path());
         }
     }
