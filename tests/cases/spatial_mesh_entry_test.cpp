@@ -51,13 +51,13 @@ TEST(SpatialCaseMeshEntry, PlacesUpAxisAndUnitsBeforeTheTransform) {
     ASSERT_EQ(scene.geometry.positions.size(), 8u);
     const glm::vec3 expected[] = {{5, 0, 0}, {7, 0, 0}, {5, 0, -4}, {5, 6, 0}};
     for (int v = 0; v < 4; ++v) {
-        const glm::vec3 p = scene.geometry.positions[4 + v];
+        const glm::dvec3 p = scene.geometry.positions[4 + v];
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], expected[v][k], 1e-6) << v << " " << k;
     }
     // A number is scene units per file unit; "m" and 1 and the default are the same.
     const spatial::Scene numeric = SpatialSceneFromJson(
         Case(R"({"mesh": ")" + ply.string() + R"(", "units": 0.5})"), "x", ".");
-    EXPECT_EQ(numeric.geometry.positions[7], glm::vec3(0, 0, 150));
+    EXPECT_EQ(numeric.geometry.positions[7], glm::dvec3(0, 0, 150));
     std::filesystem::remove(ply);
 }
 

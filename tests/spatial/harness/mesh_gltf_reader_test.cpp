@@ -146,7 +146,7 @@ TEST(GltfReader, ReadsTheDefaultSceneOnly) {
     ASSERT_EQ(mesh.positions.size(), 3u);
     ExpectNear(mesh.positions[2], {0, 8, 0});
     d.json.erase("scene");  // no default: scene 0
-    EXPECT_EQ(Read(d).positions[2], glm::vec3(0, 1, 0));
+    EXPECT_EQ(Read(d).positions[2], glm::dvec3(0, 1, 0));
 }
 
 // glTF 2.0 §3.7.2.1: strip triangle i is (v_i, v_{i+1+i%2}, v_{i+2−i%2}), fan triangle i is
@@ -191,8 +191,8 @@ TEST(GltfReader, AppliesSparseAccessors) {
                                         {"indices", {{"bufferView", 1}, {"componentType", 5125}}},
                                         {"values", {{"bufferView", 1}, {"byteOffset", 4}}}};
     const TriangleMesh mesh = Read(d);
-    EXPECT_EQ(mesh.positions[1], kTriangle[1]);
-    EXPECT_EQ(mesh.positions[2], moved);
+    EXPECT_EQ(mesh.positions[1], glm::dvec3(kTriangle[1]));
+    EXPECT_EQ(mesh.positions[2], glm::dvec3(moved));
 }
 
 // Khronos's samples: the box as .glb, with an embedded buffer and with a .bin beside it, read the
@@ -327,7 +327,8 @@ TEST(GltfReader, ReadsBufferFilesAndRefusesFifos) {
     d.json["buffers"][0]["uri"] = "tri%20angle.bin";  // percent-decoded, as tinygltf does
     std::ofstream(dir / "tri angle.bin", std::ios::binary) << d.buffer;
     std::ofstream(dir / "scene.gltf") << Text(d);
-    EXPECT_EQ(LoadMesh(dir / "scene.gltf").positions, kTriangle);
+    EXPECT_EQ(LoadMesh(dir / "scene.gltf").positions,
+              std::vector<glm::dvec3>(kTriangle.begin(), kTriangle.end()));
 
     d.json["buffers"][0]["uri"] = "pipe.bin";
     std::ofstream(dir / "pipe.gltf") << Text(d);

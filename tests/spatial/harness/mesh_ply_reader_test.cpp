@@ -91,7 +91,8 @@ std::string TetraBinary(bool bigEndian) {
 
 void ExpectTetra(const TriangleMesh& mesh) {
     ASSERT_EQ(mesh.positions.size(), 4u);
-    for (std::size_t v = 0; v < 4; ++v) EXPECT_EQ(mesh.positions[v], kTetra[v]) << "vertex " << v;
+    for (std::size_t v = 0; v < 4; ++v)
+        EXPECT_EQ(mesh.positions[v], glm::dvec3(kTetra[v])) << "vertex " << v;
     ASSERT_EQ(mesh.triangles.size(), 4u);
     for (std::size_t t = 0; t < 4; ++t)
         EXPECT_EQ(mesh.triangles[t],
@@ -130,9 +131,9 @@ TEST(PlyReader, ReadsIntegerCoordinatesAndFacesBeforeVertices) {
         "element vertex 3\nproperty int x\nproperty short y\nproperty char z\nend_header\n"
         "3 0 1 2\n-5 0 0\n7 32767 0\n0 0 -128\n");
     ASSERT_EQ(mesh.positions.size(), 3u);
-    EXPECT_EQ(mesh.positions[0], glm::vec3(-5, 0, 0));
-    EXPECT_EQ(mesh.positions[1], glm::vec3(7, 32767, 0));
-    EXPECT_EQ(mesh.positions[2], glm::vec3(0, 0, -128));
+    EXPECT_EQ(mesh.positions[0], glm::dvec3(-5, 0, 0));
+    EXPECT_EQ(mesh.positions[1], glm::dvec3(7, 32767, 0));
+    EXPECT_EQ(mesh.positions[2], glm::dvec3(0, 0, -128));
     EXPECT_EQ(mesh.triangles, std::vector<glm::uvec3>{glm::uvec3(0, 1, 2)});
 }
 
