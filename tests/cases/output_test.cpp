@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -641,6 +642,43 @@ TEST_F(OutputSetTest, SignalWhileWritingRemovesTheStaging) {
         }
     }
     EXPECT_EQ(left, 0) << "of " << kRuns << " runs stopped while writing left their staging";
+}
+
+// A signal while Commit renames the files into an existing DIR (README: one "that comes during
+// the renames waits for them to finish, so a signal never leaves a mix"): the run replaces kFiles
+// old files and is stopped as soon as the first new one (in Commit's order: sorted) is in place.
+// Without the lock Commit holds, the signal thread removed the staging directory mid-rename and
+// the process ended with the first files new and the rest old.
+TEST_F(OutputSetTest, SignalDuringTheRenamesLeavesNoMix) {
+    constexpr int kFiles = 300;
+    const fs::path outDir = base / "out";
+    const auto name = [](int i) {
+        std::string digits = std::to_string(i);
+        return "f" + std::string(3 - digits.size(), '0') + digits + ".csv";
+    };
+    fs::create_directory(outDir);
+    for (int i = 0; i < kFiles; ++i) WriteAll(outDir / name(i), "old");
+    const pid_t child = ForkStagingRun(
+        outDir,
+        [&](OutputSet& out) {
+            for (int i = 0; i < kFiles; ++i) out.WriteText(name(i), "new");
+        },
+        [](OutputSet& out) {
+            out.Commit();
+            for (;;) ::pause();  // published: wait for the exit
+        });
+    ASSERT_GT(child, 0);
+    bool renaming = false;
+    for (int poll = 0; poll < 20'000'000 && !renaming; ++poll)  // at most a few minutes
+        renaming = ReadAll(outDir / name(0)) == "new";
+    const bool done = ReadAll(outDir / name(kFiles - 1)) == "new";
+    EXPECT_EQ(StopWith(child, SIGTERM), 128 + SIGTERM);
+    ASSERT_TRUE(renaming) << "the run never published";
+    int fresh = 0;
+    for (int i = 0; i < kFiles; ++i) fresh += ReadAll(outDir / name(i)) == "new";
+    EXPECT_EQ(fresh, kFiles) << "files new after the signal";
+    EXPECT_EQ(Entries().size(), kFiles + 1u) << "the staging directory was left";
+    std::cout << "[   INFO   ] the signal came " << (done ? "after" : "during") << " the renames\n";
 }
 
 }  // namespace
