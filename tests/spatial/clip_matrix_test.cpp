@@ -5,11 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <random>
 #include <span>
 #include <utility>
+#include <vector>
 
+#include "lexel/spatial/camera.h"
+#include "lexel/spatial/depth_buffer.h"
+#include "lexel/spatial/readback.h"
 #include "lexel/spatial/standard_map.h"
 #include "spatial/spatial_test_scenes.h"
 
@@ -213,6 +218,62 @@ TEST(LightDepthRange, KeepsEveryCasterAndSpansTheReceiversTightly) {
                   << receiversHi << ", nearest caster " << castersLo << ", sampled nearest "
                   << sampledNearest / nearest << " × near; guess {0.5, 60}: " << guessed.first
                   << "–" << guessed.second << '\n';
+    }
+}
+
+// The readback of a 20 × 20 floor at y = 0 seen from above, its points exactly on the plane (as a
+// renderer that keeps world positions in double has them).
+Readback ExactFloorReadback(Bounds* wsBounds) {
+    Camera camera;
+    camera.position = {0.0, 5.0, -8.0};
+    camera.target = {0.0, 0.0, 0.0};
+    camera.resolution = {96, 72};
+    const Resolution res = camera.resolution;
+    const glm::dmat4 screenFromWorld = camera.ScreenFromWorld(res);
+    std::vector<float> depth(res.Count(), 1.0f);
+    for (int y = 0; y < res.height; ++y)
+        for (int x = 0; x < res.width; ++x) {
+            const glm::dvec3 d = camera.RayDirection({x + 0.5, y + 0.5}, res);
+            const glm::dvec3 p = camera.position - (camera.position.y / d.y) * d;
+            if (d.y >= 0.0 || std::abs(p.x) > 10.0 || std::abs(p.z) > 10.0) continue;
+            const glm::dvec4 h = screenFromWorld * glm::dvec4(p, 1.0);
+            depth[static_cast<std::size_t>(y) * res.width + x] = static_cast<float>(h.z / h.w);
+        }
+    CameraBuffer buffer = CameraBufferFromDepth(
+        DepthBuffer{res, depth, camera.ClipFromView() * camera.ViewFromWorld(), DepthConvention{}});
+    for (glm::dvec3& wsPoint : buffer.wsPosition) wsPoint.y = 0.0;
+    wsBounds->Add({-10.0, 0.0, -10.0});
+    wsBounds->Add({10.0, 0.0, 10.0});
+    return MakeReadback(std::move(buffer), screenFromWorld);
+}
+
+// A floor facing the light (the sun at noon, a lamp straight above): every receiver and every
+// possible caster at one depth. Before, near = far, and ClipFromWorld's depth row divided by
+// f - n = 0: NaN depth for every point, silently.
+TEST(LightDepthRange, AFloorFacingTheLightGetsARangeOfItsOwn) {
+    Bounds wsBounds;
+    const Readback readback = ExactFloorReadback(&wsBounds);
+    const Resolution map{512, 512};
+    for (const Light& light : {Light{Light::Type::kDirectional, {}, {0.0, -1.0, 0.0}},
+                               Light{Light::Type::kPoint, {0.0, 20.0, 0.0}, {}}}) {
+        const LightSpace ls(light, wsBounds);
+        const LightMatrix standard = StandardLightMatrix(readback, ls, wsBounds, map);
+        const DepthRange range = LightDepthRange(ls, standard, map, wsBounds, readback.wsRelevant);
+        const double depth = ClipDepthQuantity(ls, standard, readback.wsRelevant.front());
+        // At least 1e-3 of the depth (so that float rounding of the points stays inside), and
+        // no more.
+        EXPECT_GE(range.far - range.near, 1e-3 * depth * (1.0 - 1e-9)) << light.position.y;
+        EXPECT_LE(range.far - range.near, 1.05e-3 * depth) << light.position.y;
+        EXPECT_GT(range.near, 0.0);
+        const glm::dmat4 clip = ClipFromWorld(ls, standard, map, range, ClipDepth::kZeroToOne);
+        std::size_t outside = 0;
+        for (const glm::dvec3& ws : readback.wsRelevant) {
+            const glm::dvec4 h = clip * glm::dvec4(ws, 1.0);
+            outside += !(h.z / h.w > 0.0 && h.z / h.w < 1.0);  // NaN counts
+        }
+        EXPECT_EQ(outside, 0u) << "of " << readback.wsRelevant.size() << " receivers at NDC z "
+                               << "outside (0, 1), range {" << range.near << ", " << range.far
+                               << "}";
     }
 }
 
