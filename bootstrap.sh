@@ -3,6 +3,7 @@
 #   ./bootstrap.sh tables   install what is missing, build Release, run `lexel tables --out out`
 #   ./bootstrap.sh test     install what is missing, build Release, run the whole test suite, then
 #                           the sanitizer suite: build-asan (clang, ASan + UBSan, the fuzz targets)
+# Both install the Python module (`import lexel`) where Debian's python3 finds it.
 # Packages come from Debian 12 only; those already installed are skipped.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -18,10 +19,13 @@ packages=(build-essential cmake ninja-build pkg-config
           libgtest-dev googletest libbenchmark-dev libcairo2-dev
           libtbb-dev libembree-dev libassimp-dev assimp-testmodels libtinygltf-dev libqhull-dev
           libegl-dev libopengl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
-          clang-14 libclang-rt-14-dev)
-# The last line is the OpenGL backend (spatial/gl): EGL and GL through GLVND, libepoxy for the GL
-# functions, and Mesa's EGL with its llvmpipe rasterizer, the GL path on machines without a GPU.
+          clang-14 libclang-rt-14-dev
+          python3-dev python3-numpy pybind11-dev)
+# The libegl-dev … libgl1-mesa-dri line is the OpenGL backend (spatial/gl): EGL and GL through
+# GLVND, libepoxy for the GL functions, and Mesa's EGL with its llvmpipe rasterizer, the GL path
+# on machines without a GPU.
 # clang and its runtimes (libFuzzer, the sanitizers) build the sanitizer suite of the test job.
+# The Python module (spatial/python): Debian's python3 headers, numpy and pybind11.
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -54,8 +58,17 @@ sanitizer_suite() {
     (cd build-asan && ctest --output-on-failure --parallel "$(nproc)" -R "$sanitizer_tests|_fuzzer\$")
 }
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DLEXEL_GL="$gl"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DLEXEL_GL="$gl" -DLEXEL_PYTHON=ON
 cmake --build build --parallel "$(nproc)"
+
+# The Python module into the interpreter's own dist-packages under /usr/local (Debian's python3
+# has /usr/local/lib/python3.11/dist-packages on its path), so that `python3 -c "import lexel"`
+# works from anywhere; checked with the interpreter it was built for.
+python=$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' build/CMakeCache.txt)
+sudo=""
+[[ $(id -u) -ne 0 ]] && sudo="sudo"
+$sudo cmake --install build --component python
+(cd / && "$python" -c "import lexel, sys; print('bootstrap: import lexel works in', sys.executable)")
 
 if [[ "$job" == "tables" ]]; then
     ./build/cases/lexel tables --out out

@@ -425,8 +425,8 @@ void AppendInstance(const TriangleMesh& mesh, const glm::dmat4& sceneFromMesh, T
     if (out.positions.size() + mesh.positions.size() > std::numeric_limits<std::uint32_t>::max())
         Fail("its instances hold more than 2^32 - 1 vertices");
     const auto offset = static_cast<std::uint32_t>(out.positions.size());
-    for (const glm::vec3& p : mesh.positions) {
-        const glm::dvec3 q(sceneFromMesh * glm::dvec4(glm::dvec3(p), 1.0));
+    for (const glm::dvec3& p : mesh.positions) {
+        const glm::dvec3 q(sceneFromMesh * glm::dvec4(p, 1.0));
         const double largest = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
         if (!(largest <= std::numeric_limits<float>::max()))
             Fail("a vertex placed by its node's transform is not a finite float");

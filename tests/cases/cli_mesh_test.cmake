@@ -30,7 +30,6 @@ expect_run(0 "zup\\.json /geometry/1:\n  up axis: z, units: 0\\.01 scene units p
            "^$" mesh-info "${WORK}/tetra.ply" --case "${WORK}/zup.json")
 
 # The shipped case of glTF and PLY models runs (two fixed lights; focused only, to keep it short).
-# The table's header is two lines (issue 24's 120-column tables: "false" above "shadow").
 expect_run(0 "^light 0: point \\(12, 25, -8\\)${any}\n +false +false${any}\nmethod +misclassified${any}\n-+\nfocused +[0-9]+ ${any}\n\nlight 1: directional"
            "^$" run "${CASES}/spatial/formats.json" --no-map-truth --method focused)
 

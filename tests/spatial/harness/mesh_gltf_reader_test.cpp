@@ -108,7 +108,7 @@ std::string ReadError(const std::string& text, bool binary = false,
 
 const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
 
-void ExpectNear(const glm::vec3& a, const glm::vec3& b) {
+void ExpectNear(const glm::dvec3& a, const glm::dvec3& b) {
     EXPECT_NEAR(a.x, b.x, 1e-6);
     EXPECT_NEAR(a.y, b.y, 1e-6);
     EXPECT_NEAR(a.z, b.z, 1e-6);

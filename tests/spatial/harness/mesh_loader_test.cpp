@@ -45,7 +45,7 @@ std::string LoadError(const std::filesystem::path& path) {
 }
 
 void ExpectSane(const TriangleMesh& mesh) {
-    for (const glm::vec3& p : mesh.positions)
+    for (const glm::dvec3& p : mesh.positions)
         ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
     for (const glm::uvec3& t : mesh.triangles)
         for (int k = 0; k < 3; ++k) ASSERT_LT(t[k], mesh.positions.size());

@@ -268,8 +268,10 @@ TEST(PlyReader, RefusesMalformedBodiesInOneLine) {
 std::vector<std::array<float, 9>> CanonicalTriangles(const TriangleMesh& mesh) {
     std::vector<std::array<float, 9>> out;
     for (const glm::uvec3& t : mesh.triangles) {
-        std::array<glm::vec3, 3> c = {mesh.positions[t.x], mesh.positions[t.y],
-                                      mesh.positions[t.z]};
+        // Compared in float: Assimp reads OBJ positions as float.
+        std::array<glm::vec3, 3> c = {glm::vec3(mesh.positions[t.x]),
+                                      glm::vec3(mesh.positions[t.y]),
+                                      glm::vec3(mesh.positions[t.z])};
         const auto less = [](const glm::vec3& a, const glm::vec3& b) {
             return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
         };
