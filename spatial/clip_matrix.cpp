@@ -103,6 +103,16 @@ DepthRange LightDepthRange(const LightSpace& lightSpace, const LightMatrix& matr
         for (const glm::dvec3& wsVertex :
              CastersInMap(lightSpace, matrix, map, wsCasterBounds).Vertices())
             nearest = std::min(nearest, ClipDepthQuantity(lightSpace, matrix, wsVertex));
+    // A span of at least kMinSpan of the depth: a floor facing the light puts every receiver and
+    // caster at one depth, and ClipFromWorld needs near < far; float rounding of the points (1e-7
+    // of them) stays inside it.
+    constexpr double kMinSpan = 1e-3;
+    const double minSpan = kMinSpan * std::max(std::abs(nearest), std::abs(farthest));
+    if (farthest - nearest < minSpan) {
+        const double middle = 0.5 * (nearest + farthest);
+        nearest = middle - 0.5 * minSpan;
+        farthest = middle + 0.5 * minSpan;
+    }
     // Each end out by margin × the span; a point light's near stays above half the nearest
     // caster (perspective depth needs near > 0).
     const double grow = margin * (farthest - nearest);

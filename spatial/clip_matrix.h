@@ -38,7 +38,9 @@ double ClipDepthQuantity(const LightSpace& lightSpace, const LightMatrix& matrix
 // polyhedron give it, the depth quantity being affine (point) or linear-fractional (directional)
 // in the world point. Each end is moved out by `margin` × (far - near) (the readback is
 // subsampled, so frame pixels between its points can lie slightly farther; report §2.4), a point
-// light's near by at most half itself. A guess instead loses precision: {0.5, 60} puts the
+// light's near by at most half itself; a span under 1e-3 of the depth (a floor facing the light:
+// every receiver at one depth) is first widened to that about its middle, so near < far. A guess
+// instead loses precision: {0.5, 60} puts the
 // visible points of the embedding example (tests/spatial/clip_matrix_test.cpp) at NDC z
 // 0.972–0.991 of [0, 1], this range at 0.546–0.994. Throws std::invalid_argument when wsReceivers
 // is empty or a receiver is not in front of p4 (w ≤ 0).

@@ -6,9 +6,9 @@
 // Resolution. Algorithm 1 needs the visible points (the map must cover them) and, at the pixels
 // near shadow boundaries, the screen → world derivatives; the report subsamples: "for the scenes
 // we tested (rendered at 1150x1150 resolution), a 180x180 sample resolution was sufficient" (§2.4),
-// the number needed depending on "scene depth slope variation". MakeReadback's cost is linear in
-// the pixels: every covered pixel of a depth buffer is a candidate for the visible points' 3D
-// hull (a depth buffer carries no triangle ids, so no pixel can be dropped before Qhull): the
+// the number needed depending on "scene depth slope variation". MakeReadback's time grows with
+// the pixels: every covered pixel of a depth buffer is a candidate for the visible points' 3D hull
+// (a depth buffer carries no triangle ids, so no pixel can be dropped before Qhull): the
 // walkthrough's camera at 1280×720 takes 269 ms (140 ms of it the hull), the same buffer through
 // DownsampleDepth (160×90) 2.6 ms (bench/spatial_bench BM_ReadbackFromDepth). Render the camera
 // pass of step 1 at about kReadbackSide² pixels, or pass a full-size buffer through

@@ -294,6 +294,52 @@ std::vector<SpatialImageFile> WriteFirstLightCascades(const fs::path& dir,
     return WriteSpatialImages(dir, first, run);
 }
 
+// What `lexel sweep --out` writes: the tables, the per-light data, the cascade-count study, the
+// first light's images and the index page; the case file itself is never replaced.
+OutputPlan SweepOutputPlan(const fs::path& casePath, const std::string& name) {
+    return {{casePath}, [name](const std::string& file) {
+                for (const char* fixed : {"table1.md", "table1.csv", "sweep.json", "lights.csv",
+                                          "cascades.csv", "cascades.png", "index.html"})
+                    if (file == fixed) return true;
+                return file.starts_with(name + "_light") && file.ends_with(".png");
+            }};
+}
+
+// Stages every `lexel sweep --out` file (the study's and the first light's images when the
+// study ran) and returns what they are, for the closing line.
+std::string StageSweepFiles(OutputSet& out, const fs::path& casePath, const spatial::Scene& scene,
+                            const SweepResult& r, const ReportTable1& report,
+                            const CascadeCountStudy* study, BackendKind backend) {
+    out.WriteText("table1.md", SweepMarkdown(r, report));
+    out.WriteText("table1.csv", SweepCsv(r, report));
+    out.WriteText("sweep.json", SweepJson(r).dump(2) + "\n");
+    out.WriteText("lights.csv", SweepLightsCsv(r));
+    std::vector<LinkedFile> files = {
+        {"table1.md", "the tables above in Markdown"},
+        {"table1.csv", "the tables above, one row per table, set of lights and method (CSV)"},
+        {"sweep.json", "every number of the tables (JSON)"},
+        {"lights.csv",
+         "one row per light: its position, counted pixels, and every method's "
+         "misclassified pixels, h and time"}};
+    std::string written = "index.html, table1.md, table1.csv, sweep.json, lights.csv";
+    std::vector<SpatialImageFile> images;
+    if (study) {
+        out.WriteText("cascades.csv", CascadeStudyCsv(*study));
+        out.Writing([&] { WriteCascadeStudyPlot(out.Staged("cascades.png").string(), *study, r); });
+        images = WithCaseName(casePath, [&] {
+            return out.Writing(
+                [&] { return WriteFirstLightCascades(out.StagingDir(), scene, r, backend); });
+        });
+        files.push_back({"cascades.csv", "mean misclassified pixels per method and k"});
+        files.push_back({"cascades.png", "the same as a plot"});
+        written += ", cascades.csv, cascades.png and " + std::to_string(images.size()) +
+                   " images of the first light";
+    }
+    out.WriteText("index.html",
+                  SweepHtml(r, report, study, study ? "cascades.png" : "", images, files));
+    return written;
+}
+
 }  // namespace
 
 int SweepCommand(const SweepFlags& flags) {
@@ -304,16 +350,7 @@ int SweepCommand(const SweepFlags& flags) {
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     std::optional<OutputSet> out;  // --out is checked before anything is computed
-    if (!flags.outDir.empty())
-        out.emplace(flags.outDir,
-                    OutputPlan{{casePath}, [name = scene.name](const std::string& file) {
-                                   for (const char* fixed :
-                                        {"table1.md", "table1.csv", "sweep.json", "lights.csv",
-                                         "cascades.csv", "cascades.png", "index.html"})
-                                       if (file == fixed) return true;
-                                   return file.starts_with(name + "_light") &&
-                                          file.ends_with(".png");
-                               }});
+    if (!flags.outDir.empty()) out.emplace(flags.outDir, SweepOutputPlan(casePath, scene.name));
     std::optional<spatial::Light::Type> type;
     if (!flags.lightType.empty())
         type = flags.lightType == "point" ? spatial::Light::Type::kPoint
@@ -343,37 +380,10 @@ int SweepCommand(const SweepFlags& flags) {
         std::cout << SweepTable(r, report) << "sweep: " << Fixed(r.seconds, 1) << " s for "
                   << r.lights.size() << " lights\n";
     if (!out) return 0;
-    out->WriteText("table1.md", SweepMarkdown(r, report));
-    out->WriteText("table1.csv", SweepCsv(r, report));
-    out->WriteText("sweep.json", SweepJson(r).dump(2) + "\n");
-    out->WriteText("lights.csv", SweepLightsCsv(r));
-    std::vector<LinkedFile> files = {
-        {"table1.md", "the tables above in Markdown"},
-        {"table1.csv", "the tables above, one row per table, set of lights and method (CSV)"},
-        {"sweep.json", "every number of the tables (JSON)"},
-        {"lights.csv",
-         "one row per light: its position, counted pixels, and every method's "
-         "misclassified pixels, h and time"}};
-    std::string also;
-    std::vector<SpatialImageFile> images;
-    if (study) {
-        out->WriteText("cascades.csv", CascadeStudyCsv(*study));
-        out->Writing(
-            [&] { WriteCascadeStudyPlot(out->Staged("cascades.png").string(), *study, r); });
-        images = WithCaseName(casePath, [&] {
-            return out->Writing(
-                [&] { return WriteFirstLightCascades(out->StagingDir(), scene, r, backend); });
-        });
-        files.push_back({"cascades.csv", "mean misclassified pixels per method and k"});
-        files.push_back({"cascades.png", "the same as a plot"});
-        also = ", cascades.csv, cascades.png and " + std::to_string(images.size()) +
-               " images of the first light";
-    }
-    out->WriteText("index.html", SweepHtml(r, report, study ? &*study : nullptr,
-                                           study ? "cascades.png" : "", images, files));
+    const std::string written =
+        StageSweepFiles(*out, casePath, scene, r, report, study ? &*study : nullptr, backend);
     out->Commit();
-    std::cerr << "lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv" << also
-              << " to " << flags.outDir << '\n';
+    std::cerr << "lexel: wrote " << written << " to " << flags.outDir << '\n';
     return 0;
 }
 
@@ -567,11 +577,17 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
     const std::vector<ThesisTable> tables =
         LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
     const fs::path dir = casesDir.empty() ? DataDirectory() / "flatland" : fs::path(casesDir);
-    // Checked before anything is computed: tables.md/.csv, lowres.csv, <case>.png,
-    // lowres_<name>.png; the inputs are the thesis cases and their fitted versions.
-    OutputPlan plan{{}, [](const std::string& file) {
+    // Checked before anything is computed: tables.md/.csv, lowres.csv, <case file stem>.png,
+    // lowres_<name>.png (the name is the case's, read later); the inputs are the thesis cases and
+    // their fitted versions. Other PNGs in DIR are not the command's.
+    std::vector<std::string> figures;
+    for (const ThesisTable& thesis : tables)
+        figures.push_back(fs::path(thesis.file).stem().string() + ".png");
+    OutputPlan plan{{}, [figures](const std::string& file) {
                         return file == "tables.md" || file == "tables.csv" ||
-                               file == "lowres.csv" || file.ends_with(".png");
+                               file == "lowres.csv" ||
+                               std::find(figures.begin(), figures.end(), file) != figures.end() ||
+                               (file.starts_with("lowres_") && file.ends_with(".png"));
                     }};
     for (const ThesisTable& thesis : tables) {
         plan.inputs.push_back(dir / thesis.file);

@@ -212,6 +212,35 @@ std::string Nav(const std::vector<std::pair<std::string, std::string>>& anchors)
     return out + "</nav>\n";
 }
 
+// The cascade-count study: its plot (`cascadePlot`, a file name; none when empty) and table.
+std::string PartitionStudySection(const CascadeCountStudy& study, const std::string& cascadePlot) {
+    std::string out =
+        "<h2 id=\"partitions\">Partitions k = 1, 2, 4, 8 at equal texels</h2>\n" +
+        Paragraph(
+            "The partitioned methods rerun on the same lights with k maps that together hold the "
+            "single map's texels: mean misclassified pixels against k; optimal's single map is "
+            "the dashed line.");
+    if (!cascadePlot.empty())
+        out += "<figure><img src=\"" + MarkdownLinkTarget(cascadePlot) +
+               "\" alt=\"misclassified pixels against partitions k\" "
+               "style=\"max-width:900px\"></figure>\n";
+    std::vector<std::string> header = {"method"};
+    for (int k : study.counts) header.push_back("k = " + std::to_string(k));
+    TextTable table(header);
+    if (study.optimalMean) {
+        std::vector<std::string> row = {"optimal (one map)"};
+        for (std::size_t k = 0; k < study.counts.size(); ++k)
+            row.push_back(k == 0 ? Fixed(*study.optimalMean, 1) : "");
+        table.AddRow(row);
+    }
+    for (std::size_t m = 0; m < study.methods.size(); ++m) {
+        std::vector<std::string> row = {study.methods[m]};
+        for (double mean : study.meanMisclassified[m]) row.push_back(Fixed(mean, 1));
+        table.AddRow(row);
+    }
+    return out + table.RenderHtml();
+}
+
 }  // namespace
 
 std::string SpatialRunHtml(const spatial::Scene& scene, const SpatialRun& run,
@@ -293,32 +322,7 @@ std::string SweepHtml(const SweepResult& r, const ReportTable1& report,
     body += Nav(anchors);
     for (std::size_t k = 0; k < sections.size(); ++k)
         body += SectionHtml(sections[k], "table" + std::to_string(k));
-    if (study) {
-        body += "<h2 id=\"partitions\">Partitions k = 1, 2, 4, 8 at equal texels</h2>\n" +
-                Paragraph(
-                    "The partitioned methods rerun on the same lights with k maps that "
-                    "together hold the single map's texels: mean misclassified pixels "
-                    "against k; optimal's single map is the dashed line.");
-        if (!cascadePlot.empty())
-            body += "<figure><img src=\"" + MarkdownLinkTarget(cascadePlot) +
-                    "\" alt=\"misclassified pixels against partitions k\" "
-                    "style=\"max-width:900px\"></figure>\n";
-        std::vector<std::string> header = {"method"};
-        for (int k : study->counts) header.push_back("k = " + std::to_string(k));
-        TextTable table(header);
-        if (study->optimalMean) {
-            std::vector<std::string> row = {"optimal (one map)"};
-            for (std::size_t k = 0; k < study->counts.size(); ++k)
-                row.push_back(k == 0 ? Fixed(*study->optimalMean, 1) : "");
-            table.AddRow(row);
-        }
-        for (std::size_t m = 0; m < study->methods.size(); ++m) {
-            std::vector<std::string> row = {study->methods[m]};
-            for (double mean : study->meanMisclassified[m]) row.push_back(Fixed(mean, 1));
-            table.AddRow(row);
-        }
-        body += table.RenderHtml();
-    }
+    if (study) body += PartitionStudySection(*study, cascadePlot);
     if (!images.empty())
         body += "<h2 id=\"light0\">The first light's images: " +
                 HtmlText(LightLabel(r.lights.front())) + "</h2>\n" +

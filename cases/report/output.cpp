@@ -245,6 +245,25 @@ std::vector<OutputSet::Staging*>& LiveStagings() {
     return *live;
 }
 
+// Removes a staging directory that another thread of this process may still be writing into (a
+// signal's cleanup while the run writes its files): renamed first, to a name that still carries
+// kStagingPrefix, so that no path the writers form reaches it any more, then removed until it is
+// gone (a file whose creation was under way at the rename can appear after the first pass). The
+// directory's flock follows it through the rename. A directory that still cannot be removed stays
+// for the next run's RemoveDebris.
+void RemoveStagingDirectory(const fs::path& dir) {
+    fs::path target = dir;
+    fs::path removing = dir;
+    removing += "-removed";
+    if (::rename(dir.c_str(), removing.c_str()) == 0) target = removing;
+    std::error_code error;
+    constexpr int kPasses = 100;
+    for (int pass = 0; pass < kPasses; ++pass) {
+        fs::remove_all(target, error);
+        if (!fs::exists(fs::symlink_status(target, error))) return;
+    }
+}
+
 }  // namespace
 
 struct OutputSet::Staging {
@@ -256,8 +275,7 @@ struct OutputSet::Staging {
     // Removes the directory (then drops its lock) and, unless the set was committed, the parent
     // directories made for it. With LiveMutex held.
     void Discard() {
-        std::error_code error;
-        if (!dir.empty()) fs::remove_all(dir, error);
+        if (!dir.empty()) RemoveStagingDirectory(dir);
         dir.clear();
         if (lockFd >= 0) ::close(std::exchange(lockFd, -1));
         if (!committed) RemoveEmptyChain(chainFrom, chainTop);

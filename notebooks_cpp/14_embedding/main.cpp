@@ -55,11 +55,38 @@ lexel::notebooks::Panel MapPanel(const char* title, const LightMatrix& matrix,
     return {title, "u1 (texels)", "u2 (texels)", false, true, {frame, visible, boundary}};
 }
 
+// Where `clipFromWorld` puts the points: the least clip w, the largest |NDC x| or |NDC y| and
+// the NDC depth interval.
+struct NdcSpan {
+    double leastW = INFINITY, worstNdc = 0, lowDepth = INFINITY, highDepth = -INFINITY;
+    double Depth() const { return highDepth - lowDepth; }
+};
+
+NdcSpan SpanOf(const glm::dmat4& clipFromWorld, const std::vector<glm::dvec3>& wsPoints) {
+    NdcSpan span;
+    for (const glm::dvec3& wsPoint : wsPoints) {
+        const glm::dvec4 clip = clipFromWorld * glm::dvec4(wsPoint, 1.0);
+        span.leastW = std::min(span.leastW, clip.w);
+        span.worstNdc =
+            std::max({span.worstNdc, std::abs(clip.x / clip.w), std::abs(clip.y / clip.w)});
+        span.lowDepth = std::min(span.lowDepth, clip.z / clip.w);
+        span.highDepth = std::max(span.highDepth, clip.z / clip.w);
+    }
+    return span;
+}
+
+void PrintRows(const char* name, const glm::dmat4& m) {
+    std::printf("%s (rows):\n", name);
+    for (int r = 0; r < 4; ++r)
+        std::printf("  %10.5f %10.5f %10.5f %10.5f\n", m[0][r], m[1][r], m[2][r], m[3][r]);
+}
+
 int main(int argc, char** argv) {
     const auto outDir = lexel::notebooks::OutputDirectory(argc, argv);
     const lexel::notebooks::ToyRenderer renderer({160, 120});
 
-    // 1. The camera pass: its depth buffer (OpenGL's conventions) and the matrix that drew it.
+    // 1. The camera pass: its depth buffer, the matrix that drew it and its convention (OpenGL's
+    // clip depth, standard Z, the top row first: DepthConvention's defaults).
     const Resolution res = renderer.resolution();
     const std::vector<float> depth = renderer.DepthBuffer();
     const Camera& camera = renderer.camera();
@@ -93,40 +120,28 @@ int main(int argc, char** argv) {
     std::printf("optical axis p4 (light space): (%.4f, %.4f, %.4f) → (%.4f, %.4f, %.4f)\n",
                 standard.p4.x, standard.p4.y, standard.p4.z, optimal.matrix.p4.x,
                 optimal.matrix.p4.y, optimal.matrix.p4.z);
-    std::printf("clip from world (rows):\n");
-    for (int r = 0; r < 4; ++r)
-        std::printf("  %10.5f %10.5f %10.5f %10.5f\n", clipFromWorld[0][r], clipFromWorld[1][r],
-                    clipFromWorld[2][r], clipFromWorld[3][r]);
+    PrintRows("clip from world", clipFromWorld);
 
-    double worstNdc = 0, lowDepth = INFINITY, highDepth = -INFINITY, leastW = INFINITY;
-    double guessLow = INFINITY, guessHigh = -INFINITY;
-    for (const glm::dvec3& wsPoint : readback.wsRelevant) {
-        const glm::dvec4 clip = clipFromWorld * glm::dvec4(wsPoint, 1.0);
-        leastW = std::min(leastW, clip.w);
-        worstNdc = std::max({worstNdc, std::abs(clip.x / clip.w), std::abs(clip.y / clip.w)});
-        lowDepth = std::min(lowDepth, clip.z / clip.w);
-        highDepth = std::max(highDepth, clip.z / clip.w);
-        const glm::dvec4 g = guessed * glm::dvec4(wsPoint, 1.0);
-        guessLow = std::min(guessLow, g.z / g.w);
-        guessHigh = std::max(guessHigh, g.z / g.w);
-    }
+    const NdcSpan fitted = SpanOf(clipFromWorld, readback.wsRelevant);
+    const NdcSpan guess = SpanOf(guessed, readback.wsRelevant);
     std::printf(
         "light depth range {%.4g, %.4g}: visible points at NDC z %.4f–%.4f (a guess of "
         "{1, 60}: %.4f–%.4f)\n",
-        range.near, range.far, lowDepth, highDepth, guessLow, guessHigh);
+        range.near, range.far, fitted.lowDepth, fitted.highDepth, guess.lowDepth, guess.highDepth);
     lexel::notebooks::Claims claims;
     claims.Check(
         optimal.h < optimal.hAfterIteration.front() &&
             std::abs(Energy(standard, samples) / optimal.hAfterIteration.front() - 1) < 1e-9,
         "h falls from the standard map's %.6g to %.6g", optimal.hAfterIteration.front(), optimal.h);
-    claims.Check(leastW > 0 && worstNdc <= 1 + 1e-9 && lowDepth >= 0 && highDepth <= 1,
+    claims.Check(fitted.leastW > 0 && fitted.worstNdc <= 1 + 1e-9 && fitted.lowDepth >= 0 &&
+                     fitted.highDepth <= 1,
                  "every visible point in the map: w >= %.3g > 0, |NDC x, y| <= %.9f, depth in "
                  "[%.4f, %.4f]",
-                 leastW, worstNdc, lowDepth, highDepth);
-    claims.Check(highDepth >= 0.99 && highDepth - lowDepth > guessHigh - guessLow,
+                 fitted.leastW, fitted.worstNdc, fitted.lowDepth, fitted.highDepth);
+    claims.Check(fitted.highDepth >= 0.99 && fitted.Depth() > guess.Depth(),
                  "the fitted range ends at the farthest visible point (NDC z %.4f) and spreads "
                  "the visible points over %.3f of [0, 1], the guess over %.3f",
-                 highDepth, highDepth - lowDepth, guessHigh - guessLow);
+                 fitted.highDepth, fitted.Depth(), guess.Depth());
     const auto figure = outDir / "14_embedding.png";
     lexel::notebooks::WritePlot(figure,
                                 {MapPanel("standard map (the start)", standard, samples),

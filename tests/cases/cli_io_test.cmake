@@ -279,4 +279,23 @@ else()
     message(STATUS "skipped another user's old files: needs root, setpriv, chattr +i and fs.protected_hardlinks = 1")
 endif()
 
+# Only the command's own outputs are its old files: another user's unrelated PNG in DIR (which
+# lexel could not keep for a rollback) does not stop `tables`, whose figures are named by its
+# cases. Before, every *.png in DIR counted as an output of `tables` and this was refused.
+if(root AND SETPRIV AND protected STREQUAL "1")
+    set(unrelated "${WORK}/unrelated/out")
+    file(MAKE_DIRECTORY "${unrelated}")
+    file(WRITE "${unrelated}/photo.png" "not lexel's")
+    execute_process(COMMAND chown 65534 "${WORK}/unrelated" "${unrelated}")
+    execute_process(COMMAND "${SETPRIV}" --reuid=65534 --regid=65534 --clear-groups
+                            "${LEXEL}" tables --out "${unrelated}"
+                    RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
+    file(READ "${unrelated}/photo.png" kept)
+    if(NOT code EQUAL 0 OR NOT kept STREQUAL "not lexel's" OR NOT EXISTS "${unrelated}/tables.md")
+        message(FATAL_ERROR "tables beside another user's photo.png: exit ${code}, stderr '${err}'")
+    endif()
+else()
+    message(STATUS "skipped another user's unrelated file: needs root, setpriv and fs.protected_hardlinks = 1")
+endif()
+
 message(STATUS "cli io tests passed")

@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
+#include <iostream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -566,32 +568,117 @@ TEST_F(OutputSetTest, OldFilesThatCannotBeKeptAreNeverReplaced) {
     EXPECT_EQ(Entries(), (std::vector<std::string>{"out", "out/a.csv", "out/b.csv"}));
 }
 
+// A child process that stops cleanly on signals, as lexel does, and stages a set in `outDir`:
+// `ready` runs first (files staged before the parent goes on), then `busy` (never returning:
+// computing or writing). Returns the child's pid once `ready` is done.
+pid_t ForkStagingRun(const fs::path& outDir, const std::function<void(OutputSet&)>& ready,
+                     const std::function<void(OutputSet&)>& busy) {
+    int pipeFds[2];
+    if (::pipe(pipeFds) != 0) return -1;
+    const pid_t child = ::fork();
+    if (child == 0) {
+        StopCleanlyOnSignals();
+        OutputSet out(outDir, AnyName());
+        ready(out);
+        const char byte = 1;
+        if (::write(pipeFds[1], &byte, 1) != 1) ::_exit(1);
+        busy(out);
+        ::_exit(1);
+    }
+    char byte = 0;
+    const bool started = child > 0 && ::read(pipeFds[0], &byte, 1) == 1;
+    ::close(pipeFds[0]);
+    ::close(pipeFds[1]);
+    return started ? child : -1;
+}
+
+// Sends `signal` and returns the child's exit status (-1 when it did not exit by itself).
+int StopWith(pid_t child, int signal) {
+    ::kill(child, signal);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 // Issue 24: SIGTERM (SIGINT, SIGHUP) removes the staging directory and exits with 128 + n
 // (before, no handler: the staging directory stayed like after SIGKILL).
 TEST_F(OutputSetTest, TerminationSignalRemovesTheStaging) {
     for (const int signal : {SIGTERM, SIGINT}) {
-        int ready[2];
-        ASSERT_EQ(::pipe(ready), 0);
-        const pid_t child = ::fork();
-        if (child == 0) {
-            StopCleanlyOnSignals();
-            OutputSet out(base / "out", AnyName());
-            out.WriteText("report.csv", "half done");
-            const char byte = 1;
-            if (::write(ready[1], &byte, 1) != 1) ::_exit(1);
-            for (;;) ::pause();  // computing
-        }
-        char byte = 0;
-        ASSERT_EQ(::read(ready[0], &byte, 1), 1);
-        ::close(ready[0]);
-        ::close(ready[1]);
+        const pid_t child = ForkStagingRun(
+            base / "out", [](OutputSet& out) { out.WriteText("report.csv", "half done"); },
+            [](OutputSet&) {
+                for (;;) ::pause();  // computing
+            });
+        ASSERT_GT(child, 0);
         EXPECT_EQ(Entries().size(), 2u);  // the staging directory and its file
-        ::kill(child, signal);
-        int status = 0;
-        ::waitpid(child, &status, 0);
-        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + signal) << status;
+        EXPECT_EQ(StopWith(child, signal), 128 + signal);
         EXPECT_TRUE(Entries().empty());
     }
+}
+
+// A signal while the run writes its files (a 3D run's images take seconds): the signal thread
+// removes the staging directory while the writing thread keeps creating files in it. Before, the
+// removal listed the files, the writer made another, and rmdir failed: the staging directory stayed
+// with the files made meanwhile (80 of 100 such runs here), as after SIGKILL.
+TEST_F(OutputSetTest, SignalWhileWritingRemovesTheStaging) {
+    constexpr int kRuns = 30;
+    int left = 0;
+    for (int run = 0; run < kRuns; ++run) {
+        const pid_t child = ForkStagingRun(
+            base / "out", [](OutputSet&) {},
+            [](OutputSet& out) {
+                try {
+                    for (int i = 0;; ++i) out.WriteText("f" + std::to_string(i) + ".csv", "x");
+                } catch (const std::runtime_error&) {
+                    for (;;) ::pause();  // the staging directory is gone: wait for the exit
+                }
+            });
+        ASSERT_GT(child, 0);
+        ::usleep(5000 + 1000 * (run % 10));  // some files written
+        EXPECT_EQ(StopWith(child, SIGTERM), 128 + SIGTERM);
+        if (!Entries().empty()) {
+            ++left;
+            for (const auto& e : fs::directory_iterator(base)) fs::remove_all(e.path());
+        }
+    }
+    EXPECT_EQ(left, 0) << "of " << kRuns << " runs stopped while writing left their staging";
+}
+
+// A signal while Commit renames the files into an existing DIR (README: one "that comes during
+// the renames waits for them to finish, so a signal never leaves a mix"): the run replaces kFiles
+// old files and is stopped as soon as the first new one (in Commit's order: sorted) is in place.
+// Without the lock Commit holds, the signal thread removed the staging directory mid-rename and
+// the process ended with the first files new and the rest old.
+TEST_F(OutputSetTest, SignalDuringTheRenamesLeavesNoMix) {
+    constexpr int kFiles = 300;
+    const fs::path outDir = base / "out";
+    const auto name = [](int i) {
+        std::string digits = std::to_string(i);
+        return "f" + std::string(3 - digits.size(), '0') + digits + ".csv";
+    };
+    fs::create_directory(outDir);
+    for (int i = 0; i < kFiles; ++i) WriteAll(outDir / name(i), "old");
+    const pid_t child = ForkStagingRun(
+        outDir,
+        [&](OutputSet& out) {
+            for (int i = 0; i < kFiles; ++i) out.WriteText(name(i), "new");
+        },
+        [](OutputSet& out) {
+            out.Commit();
+            for (;;) ::pause();  // published: wait for the exit
+        });
+    ASSERT_GT(child, 0);
+    bool renaming = false;
+    for (int poll = 0; poll < 20'000'000 && !renaming; ++poll)  // at most a few minutes
+        renaming = ReadAll(outDir / name(0)) == "new";
+    const bool done = ReadAll(outDir / name(kFiles - 1)) == "new";
+    EXPECT_EQ(StopWith(child, SIGTERM), 128 + SIGTERM);
+    ASSERT_TRUE(renaming) << "the run never published";
+    int fresh = 0;
+    for (int i = 0; i < kFiles; ++i) fresh += ReadAll(outDir / name(i)) == "new";
+    EXPECT_EQ(fresh, kFiles) << "files new after the signal";
+    EXPECT_EQ(Entries().size(), kFiles + 1u) << "the staging directory was left";
+    std::cout << "[   INFO   ] the signal came " << (done ? "after" : "during") << " the renames\n";
 }
 
 }  // namespace

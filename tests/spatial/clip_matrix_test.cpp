@@ -4,19 +4,22 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <random>
+#include <span>
+#include <utility>
+#include <vector>
 
+#include "lexel/spatial/camera.h"
+#include "lexel/spatial/depth_buffer.h"
+#include "lexel/spatial/readback.h"
 #include "lexel/spatial/standard_map.h"
 #include "spatial/spatial_test_scenes.h"
 
 namespace lexel::spatial {
 namespace {
-
-struct ClipCase {
-    Light light;
-    LightMatrix matrix;
-};
 
 Bounds SceneBounds() {
     Bounds b;
@@ -125,21 +128,62 @@ TEST(LightDepthRange, ClipDepthQuantityIsWhatClipFromWorldMapsToTheDepthRange) {
     }
 }
 
-struct RangeCase {
-    const char* name;
-    LightSpace lightSpace;
-    LightMatrix matrix;
-};
+// The NDC z ∈ [0, 1] range of `points` under `clip`.
+std::pair<double, double> NdcDepthSpan(const glm::dmat4& clip, std::span<const glm::dvec3> points) {
+    double lo = 1.0, hi = 0.0;
+    for (const glm::dvec3& x : points) {
+        const glm::dvec4 h = clip * glm::dvec4(x, 1.0);
+        lo = std::min(lo, h.z / h.w);
+        hi = std::max(hi, h.z / h.w);
+    }
+    return {lo, hi};
+}
 
-// The embedding scene's readback and the standard and optimized maps of a point light and a
-// directional one.
+// The least NDC z under `clip` of the possible casters: points of the bounds on the segments
+// from every 7th receiver toward the light (20 per segment, to the light or out of the bounds).
+double NearestCasterNdc(const LightSpace& ls, const glm::dmat4& clip, const Bounds& wsBounds,
+                        std::span<const glm::dvec3> wsReceivers) {
+    double lowest = 1.0;
+    for (std::size_t i = 0; i < wsReceivers.size(); i += 7) {
+        const glm::dvec3& x = wsReceivers[i];
+        const glm::dvec3 toLight = ls.DirectionToLight(x);
+        double reach = ls.DistanceToLight(x);
+        for (int a = 0; a < 3; ++a)
+            if (toLight[a] != 0.0)
+                reach =
+                    std::min(reach, ((toLight[a] > 0 ? wsBounds.hi[a] : wsBounds.lo[a]) - x[a]) /
+                                        toLight[a]);
+        for (int k = 1; k <= 20; ++k)
+            lowest =
+                std::min(lowest, NdcDepthSpan(clip, {{x + (reach * k / 20.0) * toLight}}).first);
+    }
+    return lowest;
+}
+
+// The least ClipDepthQuantity over 200,000 random points of the bounds inside the map's frustum.
+double SampledNearestInMap(const LightSpace& ls, const LightMatrix& matrix, Resolution map,
+                           const Bounds& wsBounds, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    double nearest = 1e300;
+    for (int k = 0; k < 200000; ++k) {
+        const glm::dvec3 x =
+            wsBounds.lo + glm::dvec3(u01(rng), u01(rng), u01(rng)) * (wsBounds.hi - wsBounds.lo);
+        const glm::dvec3 lsX = ls.ToLight(x);
+        if (!InFront(matrix.p4, lsX)) continue;
+        const glm::dvec2 u = matrix.Map(lsX);
+        if (u.x < 0 || u.y < 0 || u.x > map.width || u.y > map.height) continue;
+        nearest = std::min(nearest, ClipDepthQuantity(ls, matrix, x));
+    }
+    return nearest;
+}
+
+// The embedding scene's readback and the standard map of a point light and a directional one.
 TEST(LightDepthRange, KeepsEveryCasterAndSpansTheReceiversTightly) {
     const testing::FloorAndBox scene = testing::EmbeddingScene();
     const Readback readback =
         RenderReadback(*MakeCpuRenderer(scene.mesh), scene.camera, scene.camera.resolution);
     const Resolution map{1024, 1024};
     std::mt19937_64 rng(8);
-    std::uniform_real_distribution<double> u01(0.0, 1.0);
     for (const Light& light : {Light{Light::Type::kPoint, {10.0, 15.0, 6.0}, {}},
                                Light{Light::Type::kDirectional, {}, {-0.4, -1.0, -0.3}}}) {
         const LightSpace ls(light, scene.wsBounds);
@@ -147,68 +191,89 @@ TEST(LightDepthRange, KeepsEveryCasterAndSpansTheReceiversTightly) {
         const DepthRange range =
             LightDepthRange(ls, standard, map, scene.wsBounds, readback.wsRelevant);
         const glm::dmat4 clip = ClipFromWorld(ls, standard, map, range, ClipDepth::kZeroToOne);
-        const auto ndc = [&](const glm::dvec3& x) {
-            const glm::dvec4 h = clip * glm::dvec4(x, 1.0);
-            return glm::dvec3(h) / h.w;
-        };
         // Receivers: inside [0, 1], the farthest at 1 less the margin's share.
-        double receiversLo = 1.0, receiversHi = 0.0;
-        for (const glm::dvec3& x : readback.wsRelevant) {
-            receiversLo = std::min(receiversLo, ndc(x).z);
-            receiversHi = std::max(receiversHi, ndc(x).z);
-        }
+        const auto [receiversLo, receiversHi] = NdcDepthSpan(clip, readback.wsRelevant);
         EXPECT_GE(receiversLo, 0.0) << light.position.x;
         EXPECT_LE(receiversHi, 1.0);
         EXPECT_GT(receiversHi, 0.96);
         // Casters: every point of the bounds on a segment from a receiver toward the light.
-        double castersLo = 1.0;
-        for (std::size_t i = 0; i < readback.wsRelevant.size(); i += 7) {
-            const glm::dvec3& x = readback.wsRelevant[i];
-            const glm::dvec3 toLight = ls.DirectionToLight(x);
-            double reach = ls.DistanceToLight(x);  // to the light or out of the bounds
-            for (int a = 0; a < 3; ++a)
-                if (toLight[a] != 0.0)
-                    reach = std::min(
-                        reach,
-                        ((toLight[a] > 0 ? scene.wsBounds.hi[a] : scene.wsBounds.lo[a]) - x[a]) /
-                            toLight[a]);
-            for (int k = 1; k <= 20; ++k)
-                castersLo = std::min(castersLo, ndc(x + (reach * k / 20.0) * toLight).z);
-        }
+        const double castersLo = NearestCasterNdc(ls, clip, scene.wsBounds, readback.wsRelevant);
         EXPECT_GE(castersLo, 0.0);
         // The near end is the nearest point of the bounds inside the map's frustum: no sampled
         // point of the bounds there is nearer, and some come within 2% of it.
-        double sampledNearest = 1e300;
-        for (int k = 0; k < 200000; ++k) {
-            const glm::dvec3 x = scene.wsBounds.lo + glm::dvec3(u01(rng), u01(rng), u01(rng)) *
-                                                         (scene.wsBounds.hi - scene.wsBounds.lo);
-            const glm::dvec3 lsX = ls.ToLight(x);
-            if (!InFront(standard.p4, lsX)) continue;
-            const glm::dvec2 u = standard.Map(lsX);
-            if (u.x < 0 || u.y < 0 || u.x > map.width || u.y > map.height) continue;
-            sampledNearest = std::min(sampledNearest, ClipDepthQuantity(ls, standard, x));
-        }
+        const double sampledNearest = SampledNearestInMap(ls, standard, map, scene.wsBounds, rng);
         const double nearest = range.near + 0.02 / 1.04 * (range.far - range.near);
         EXPECT_GE(sampledNearest, nearest * (1.0 - 1e-12));
         EXPECT_LT(sampledNearest, nearest * 1.02);
         // A guess for the point light ({0.5, 60}, issue 24) squeezes the receivers.
         const DepthRange guess{0.5, 60.0};
-        double guessLo = 1.0, guessHi = 0.0;
+        std::pair<double, double> guessed{1.0, 0.0};
         if (ls.IsPoint()) {
-            const glm::dmat4 guessed =
-                ClipFromWorld(ls, standard, map, guess, ClipDepth::kZeroToOne);
-            for (const glm::dvec3& x : readback.wsRelevant) {
-                const glm::dvec4 h = guessed * glm::dvec4(x, 1.0);
-                guessLo = std::min(guessLo, h.z / h.w);
-                guessHi = std::max(guessHi, h.z / h.w);
-            }
-            EXPECT_GT(receiversHi - receiversLo, 10.0 * (guessHi - guessLo));
+            guessed = NdcDepthSpan(ClipFromWorld(ls, standard, map, guess, ClipDepth::kZeroToOne),
+                                   readback.wsRelevant);
+            EXPECT_GT(receiversHi - receiversLo, 10.0 * (guessed.second - guessed.first));
         }
         std::cout << "[   INFO   ] " << (ls.IsPoint() ? "point" : "directional") << ": range {"
                   << range.near << ", " << range.far << "}, receivers at z " << receiversLo << "–"
                   << receiversHi << ", nearest caster " << castersLo << ", sampled nearest "
-                  << sampledNearest / nearest << " × near; guess {0.5, 60}: " << guessLo << "–"
-                  << guessHi << '\n';
+                  << sampledNearest / nearest << " × near; guess {0.5, 60}: " << guessed.first
+                  << "–" << guessed.second << '\n';
+    }
+}
+
+// The readback of a 20 × 20 floor at y = 0 seen from above, its points exactly on the plane (as a
+// renderer that keeps world positions in double has them).
+Readback ExactFloorReadback(Bounds* wsBounds) {
+    Camera camera;
+    camera.position = {0.0, 5.0, -8.0};
+    camera.target = {0.0, 0.0, 0.0};
+    camera.resolution = {96, 72};
+    const Resolution res = camera.resolution;
+    const glm::dmat4 screenFromWorld = camera.ScreenFromWorld(res);
+    std::vector<float> depth(res.Count(), 1.0f);
+    for (int y = 0; y < res.height; ++y)
+        for (int x = 0; x < res.width; ++x) {
+            const glm::dvec3 d = camera.RayDirection({x + 0.5, y + 0.5}, res);
+            const glm::dvec3 p = camera.position - (camera.position.y / d.y) * d;
+            if (d.y >= 0.0 || std::abs(p.x) > 10.0 || std::abs(p.z) > 10.0) continue;
+            const glm::dvec4 h = screenFromWorld * glm::dvec4(p, 1.0);
+            depth[static_cast<std::size_t>(y) * res.width + x] = static_cast<float>(h.z / h.w);
+        }
+    CameraBuffer buffer = CameraBufferFromDepth(
+        DepthBuffer{res, depth, camera.ClipFromView() * camera.ViewFromWorld(), DepthConvention{}});
+    for (glm::dvec3& wsPoint : buffer.wsPosition) wsPoint.y = 0.0;
+    wsBounds->Add({-10.0, 0.0, -10.0});
+    wsBounds->Add({10.0, 0.0, 10.0});
+    return MakeReadback(std::move(buffer), screenFromWorld);
+}
+
+// A floor facing the light (the sun at noon, a lamp straight above): every receiver and every
+// possible caster at one depth. Before, near = far, and ClipFromWorld's depth row divided by
+// f - n = 0: NaN depth for every point, silently.
+TEST(LightDepthRange, AFloorFacingTheLightGetsARangeOfItsOwn) {
+    Bounds wsBounds;
+    const Readback readback = ExactFloorReadback(&wsBounds);
+    const Resolution map{512, 512};
+    for (const Light& light : {Light{Light::Type::kDirectional, {}, {0.0, -1.0, 0.0}},
+                               Light{Light::Type::kPoint, {0.0, 20.0, 0.0}, {}}}) {
+        const LightSpace ls(light, wsBounds);
+        const LightMatrix standard = StandardLightMatrix(readback, ls, wsBounds, map);
+        const DepthRange range = LightDepthRange(ls, standard, map, wsBounds, readback.wsRelevant);
+        const double depth = ClipDepthQuantity(ls, standard, readback.wsRelevant.front());
+        // At least 1e-3 of the depth (so that float rounding of the points stays inside), and
+        // no more.
+        EXPECT_GE(range.far - range.near, 1e-3 * depth * (1.0 - 1e-9)) << light.position.y;
+        EXPECT_LE(range.far - range.near, 1.05e-3 * depth) << light.position.y;
+        EXPECT_GT(range.near, 0.0);
+        const glm::dmat4 clip = ClipFromWorld(ls, standard, map, range, ClipDepth::kZeroToOne);
+        std::size_t outside = 0;
+        for (const glm::dvec3& ws : readback.wsRelevant) {
+            const glm::dvec4 h = clip * glm::dvec4(ws, 1.0);
+            outside += !(h.z / h.w > 0.0 && h.z / h.w < 1.0);  // NaN counts
+        }
+        EXPECT_EQ(outside, 0u) << "of " << readback.wsRelevant.size() << " receivers at NDC z "
+                               << "outside (0, 1), range {" << range.near << ", " << range.far
+                               << "}";
     }
 }
 

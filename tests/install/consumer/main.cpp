@@ -128,23 +128,36 @@ bool Shadowed(glm::dvec3 ws, const Light& light) {
     return Trace(ws, light.position - ws, 1e-6, 1.0 - 1e-6).has_value();
 }
 
-}  // namespace
+// The renderer's camera pass: 1280×720, reversed-Z with an infinite far plane, NDC y down
+// (Vulkan), one exact ray per pixel centre.
+struct CameraPass {
+    Resolution resolution{1280, 720};
+    glm::dmat4 clipFromWorld{1.0};
+    std::vector<float> depth;         // cleared to 0: reversed-Z's far
+    std::vector<glm::dvec3> wsFrame;  // the visible points, for the checks
 
-int main() {
-    // The camera pass: 1280×720, reversed-Z with an infinite far plane, NDC y down (Vulkan).
+    DepthBuffer Buffer() const {
+        return {resolution,
+                depth,
+                clipFromWorld,
+                {ClipDepth::kZeroToOne, DepthDirection::kReversed, FirstRow::kAtNdcYMinusOne}};
+    }
+};
+
+CameraPass RenderCameraPass() {
     Camera camera;
     camera.position = {0.0, 1.7, 12.0};
     camera.target = {0.0, 0.0, 0.0};
-    camera.resolution = {1280, 720};
+    CameraPass pass;
+    camera.resolution = pass.resolution;
     glm::dmat4 projection = camera.ClipFromView();
     projection[1][1] = -projection[1][1];  // NDC y down
     projection[2][2] = 0.0;                // z_ndc = near / z_view
     projection[3][2] = camera.nearPlane;
-    const glm::dmat4 clipFromWorld = projection * camera.ViewFromWorld();
-    const Resolution res = camera.resolution;
-    const glm::dmat4 worldFromClip = glm::inverse(clipFromWorld);
-    std::vector<float> depth(res.Count(), 0.0f);  // cleared to 0: reversed-Z's far
-    std::vector<glm::dvec3> wsFrame;              // the visible points, for the checks
+    pass.clipFromWorld = projection * camera.ViewFromWorld();
+    const Resolution res = pass.resolution;
+    const glm::dmat4 worldFromClip = glm::inverse(pass.clipFromWorld);
+    pass.depth.assign(res.Count(), 0.0f);
     for (int row = 0; row < res.height; ++row)
         for (int x = 0; x < res.width; ++x) {
             const double ndcX = 2.0 * (x + 0.5) / res.width - 1.0,
@@ -152,18 +165,49 @@ int main() {
             const glm::dvec3 a = Unproject(worldFromClip, ndcX, ndcY, 1.0);  // the near plane
             if (const auto hit = Trace(camera.position, a - camera.position, 0.0, 1e9)) {
                 const glm::dvec3 ws = camera.position + hit->t * (a - camera.position);
-                const glm::dvec4 h = clipFromWorld * glm::dvec4(ws, 1.0);
-                depth[static_cast<std::size_t>(row) * res.width + x] =
+                const glm::dvec4 h = pass.clipFromWorld * glm::dvec4(ws, 1.0);
+                pass.depth[static_cast<std::size_t>(row) * res.width + x] =
                     static_cast<float>(h.z / h.w);
-                wsFrame.push_back(ws);
+                pass.wsFrame.push_back(ws);
             }
         }
-    const DepthBuffer cameraDepth{
-        res,
-        depth,
-        clipFromWorld,
-        {ClipDepth::kZeroToOne, DepthDirection::kReversed, FirstRow::kAtNdcYMinusOne}};
+    return pass;
+}
 
+// Whether a world point lands in a shadow map rendered through `clip`, at a depth in [0, 1].
+bool InMap(const glm::dmat4& clip, const glm::dvec3& ws) {
+    const glm::dvec4 h = clip * glm::dvec4(ws, 1.0);
+    return h.w > 0.0 && std::abs(h.x) <= h.w && std::abs(h.y) <= h.w && h.z >= 0.0 && h.z <= h.w;
+}
+
+// Every readback point lands in the optimized map at a depth in [0, 1]; frame points between the
+// readback's samples may not (the floor's far edge, seen at a grazing angle: 8 frame rows per
+// readback row there span up to 2.6 world units beyond the last sample), 1% at most. Prints a
+// line per light.
+bool OptimizedMapsCoverTheView(const CameraPass& pass,
+                               const std::vector<OptimizedShadow>& shadows) {
+    const Readback readback = MakeReadback(DownsampleDepth(pass.Buffer()).View());
+    bool ok = true;
+    for (std::size_t l = 0; l < shadows.size(); ++l) {
+        const OptimizedShadow& s = shadows[l];
+        std::size_t readbackOut = 0, frameOut = 0;
+        for (const glm::dvec3& ws : readback.wsRelevant) readbackOut += !InMap(s.clipFromWorld, ws);
+        for (const glm::dvec3& ws : pass.wsFrame) frameOut += !InMap(s.clipFromWorld, ws);
+        std::printf(
+            "light %zu: %zu boundary samples; h %.6g -> %.6g; outside the map or its depth "
+            "range: %zu of %zu readback points, %zu of %zu frame points\n",
+            l, s.samples, s.hStandard, s.h, readbackOut, readback.wsRelevant.size(), frameOut,
+            pass.wsFrame.size());
+        ok = ok && s.samples > 0 && std::isfinite(s.h) && s.h <= s.hStandard && readbackOut == 0 &&
+             frameOut <= pass.wsFrame.size() / 100;
+    }
+    return ok;
+}
+
+}  // namespace
+
+int main() {
+    const CameraPass pass = RenderCameraPass();
     const std::vector<Light> lights = {Light{Light::Type::kPoint, {10.0, 15.0, 6.0}, {}},
                                        Light{Light::Type::kPoint, {-12.0, 9.0, -4.0}, {}}};
     Bounds wsSceneBounds;
@@ -187,33 +231,12 @@ int main() {
         return mask;
     };
     const std::vector<OptimizedShadow> shadows =
-        OptimizeShadows(cameraDepth, lights, wsSceneBounds, map, shadowMask);
+        OptimizeShadows(pass.Buffer(), lights, wsSceneBounds, map, shadowMask);
 
     bool ok = shadows.size() == lights.size() && compared > 0 && agree >= 0.99 * compared;
     std::printf("standard-map mask agrees with exact rays on %zu of %zu readback pixels\n", agree,
                 compared);
-    // Every readback point lands in the optimized map at a depth in [0, 1]; frame points between
-    // the readback's samples may not (the floor's far edge, seen at a grazing angle: 8 frame rows
-    // per readback row there span up to 2.6 world units beyond the last sample).
-    const Readback readback = MakeReadback(DownsampleDepth(cameraDepth).View());
-    const auto inMap = [](const glm::dmat4& clip, const glm::dvec3& ws) {
-        const glm::dvec4 h = clip * glm::dvec4(ws, 1.0);
-        return h.w > 0.0 && std::abs(h.x) <= h.w && std::abs(h.y) <= h.w && h.z >= 0.0 &&
-               h.z <= h.w;
-    };
-    for (std::size_t l = 0; l < shadows.size(); ++l) {
-        const OptimizedShadow& s = shadows[l];
-        std::size_t readbackOut = 0, frameOut = 0;
-        for (const glm::dvec3& ws : readback.wsRelevant) readbackOut += !inMap(s.clipFromWorld, ws);
-        for (const glm::dvec3& ws : wsFrame) frameOut += !inMap(s.clipFromWorld, ws);
-        std::printf(
-            "light %zu: %zu boundary samples; h %.6g -> %.6g; outside the map or its depth "
-            "range: %zu of %zu readback points, %zu of %zu frame points\n",
-            l, s.samples, s.hStandard, s.h, readbackOut, readback.wsRelevant.size(), frameOut,
-            wsFrame.size());
-        ok = ok && s.samples > 0 && std::isfinite(s.h) && s.h <= s.hStandard && readbackOut == 0 &&
-             frameOut <= wsFrame.size() / 100;
-    }
+    ok = OptimizedMapsCoverTheView(pass, shadows) && ok;
     // The flatland package links too: the thesis's lexel-plane angle convention.
     std::printf("flatland: axis at 90 degrees is a lexel plane at %.1f degrees\n",
                 lexel::flatland::LexelPlaneDegFromAxis(std::acos(0.0)));

@@ -8,11 +8,6 @@
 // bounding radii.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
-#include <iostream>
-#include <string>
-
 #include "lexel/spatial/gl/gl_backend.h"
 #include "spatial/gl/gl_test_support.h"
 #include "spatial/harness/similar_case.h"
@@ -20,35 +15,12 @@
 namespace lexel::spatial {
 namespace {
 
-using testing::CaseCounts;
-using testing::EvaluateCase;
 using testing::GlTest;
-using testing::ScaleTestSimilarities;
-using testing::SimilarCase;
-using testing::SmallCaseDocument;
 
 std::unique_ptr<RenderBackend> Gl(const TriangleMesh& mesh) { return gl::MakeGlBackend(mesh); }
 
 TEST_F(GlTest, ResultsDoNotDependOnTheScenesScaleOrOffset) {
-    const nlohmann::json document = SmallCaseDocument();
-    const CaseCounts reference = EvaluateCase(document, Gl);
-    double worstH = 0.0;
-    for (const testing::ScaleTestSimilarity& m : ScaleTestSimilarities()) {
-        const CaseCounts c = EvaluateCase(SimilarCase(document, m.scale, m.offset), Gl);
-        const std::string what = m.Describe();
-        EXPECT_EQ(c.counted, reference.counted) << what;
-        EXPECT_EQ(c.truthShadowed, reference.truthShadowed) << what;
-        EXPECT_EQ(c.samplePixels, reference.samplePixels) << what;
-        EXPECT_EQ(c.misclassified, reference.misclassified) << what;
-        EXPECT_EQ(c.uncovered, reference.uncovered) << what;
-        const double h = testing::WorstRelativeH(c, reference);
-        std::cout << "[   INFO   ] " << what << ": h within " << h << '\n';
-        EXPECT_LE(h, m.hTolerance) << what;
-        worstH = std::max(worstH, h);
-    }
-    std::cout << "[   INFO   ] " << ScaleTestSimilarities().size()
-              << " similar scenes on gl: identical counts and samples, h within " << worstH
-              << " of the case's\n";
+    testing::ExpectResultsIndependentOfScaleAndOffset(Gl, "gl");
 }
 
 }  // namespace

@@ -10,9 +10,8 @@
 // Outside the range the loader refuses the case.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
-#include <iostream>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "lexel/solvers/errors.h"
@@ -22,16 +21,13 @@ namespace lexel::spatial {
 namespace {
 
 using testing::CaseCounts;
-using testing::EvaluateCase;
-using testing::ScaleTestSimilarities;
 using testing::SimilarCase;
 using testing::SmallCaseDocument;
 
 std::unique_ptr<RenderBackend> Cpu(const TriangleMesh& mesh) { return MakeCpuRenderer(mesh); }
 
 TEST(ScaleInvariance, CpuResultsDoNotDependOnTheScenesScaleOrOffset) {
-    const nlohmann::json document = SmallCaseDocument();
-    const CaseCounts reference = EvaluateCase(document, Cpu);
+    const CaseCounts reference = testing::ExpectResultsIndependentOfScaleAndOffset(Cpu, "cpu");
     // The case has shadows and boundary samples to lose: over its five lights 1009 truly shadowed
     // pixels of 56,285 counted, 373 samples.
     std::int64_t shadowed = 0;
@@ -42,24 +38,6 @@ TEST(ScaleInvariance, CpuResultsDoNotDependOnTheScenesScaleOrOffset) {
     }
     EXPECT_EQ(shadowed, 1009);
     EXPECT_EQ(samples, 373u);
-
-    double worstH = 0.0;
-    for (const testing::ScaleTestSimilarity& m : ScaleTestSimilarities()) {
-        const CaseCounts c = EvaluateCase(SimilarCase(document, m.scale, m.offset), Cpu);
-        const std::string what = m.Describe();
-        EXPECT_EQ(c.counted, reference.counted) << what;
-        EXPECT_EQ(c.truthShadowed, reference.truthShadowed) << what;
-        EXPECT_EQ(c.samplePixels, reference.samplePixels) << what;
-        EXPECT_EQ(c.misclassified, reference.misclassified) << what;
-        EXPECT_EQ(c.uncovered, reference.uncovered) << what;
-        const double h = testing::WorstRelativeH(c, reference);
-        std::cout << "[   INFO   ] " << what << ": h within " << h << '\n';
-        EXPECT_LE(h, m.hTolerance) << what;
-        worstH = std::max(worstH, h);
-    }
-    std::cout << "[   INFO   ] " << ScaleTestSimilarities().size()
-              << " similar scenes on cpu: identical counts and samples, h within " << worstH
-              << " of the case's\n";
 }
 
 std::string LoadError(const nlohmann::json& document) {

@@ -5,6 +5,8 @@
 // sweep) with a backend.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <glm/glm.hpp>
+#include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -149,6 +152,35 @@ inline CaseCounts EvaluateCase(const nlohmann::json& doc, const BackendFactory& 
         }
     }
     return c;
+}
+
+// The scale and offset test on one backend: the case itself, then every similarity of
+// ScaleTestSimilarities(), expected to give the case's counted and truly shadowed pixels,
+// boundary samples, misclassified and uncovered pixels exactly and h within the similarity's
+// tolerance. Prints h's difference per similarity and a summary line naming `backend`; returns
+// the case's own counts.
+inline CaseCounts ExpectResultsIndependentOfScaleAndOffset(const BackendFactory& makeBackend,
+                                                           const std::string& backend) {
+    const nlohmann::json document = SmallCaseDocument();
+    const CaseCounts reference = EvaluateCase(document, makeBackend);
+    double worstH = 0.0;
+    for (const ScaleTestSimilarity& m : ScaleTestSimilarities()) {
+        const CaseCounts c = EvaluateCase(SimilarCase(document, m.scale, m.offset), makeBackend);
+        const std::string what = m.Describe();
+        EXPECT_EQ(c.counted, reference.counted) << what;
+        EXPECT_EQ(c.truthShadowed, reference.truthShadowed) << what;
+        EXPECT_EQ(c.samplePixels, reference.samplePixels) << what;
+        EXPECT_EQ(c.misclassified, reference.misclassified) << what;
+        EXPECT_EQ(c.uncovered, reference.uncovered) << what;
+        const double h = WorstRelativeH(c, reference);
+        std::cout << "[   INFO   ] " << what << ": h within " << h << '\n';
+        EXPECT_LE(h, m.hTolerance) << what;
+        worstH = std::max(worstH, h);
+    }
+    std::cout << "[   INFO   ] " << ScaleTestSimilarities().size() << " similar scenes on "
+              << backend << ": identical counts and samples, h within " << worstH
+              << " of the case's\n";
+    return reference;
 }
 
 }  // namespace lexel::spatial::testing
