@@ -2,6 +2,7 @@
 
 #include "lexel/spatial/gl/gl_renderer.h"
 #include "lexel/spatial/gl/visibility.h"
+#include "lexel/spatial/harness/ray_cast_map.h"
 
 namespace lexel::spatial::gl {
 
@@ -33,6 +34,8 @@ class GlBackend final : public RenderBackend {
 
     std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                    const ShadowMap& map) const override {
+        // A warped map is shaded on the CPU (ray_cast_map.h): the GPU pass maps through a matrix.
+        if (map.warp) return ShadeWarpedPixels(frame, lightSpace, map);
         const CurrentContext current(renderer_->context());
         renderer_->UploadCamera(CameraSlot::kFrame, frame);
         renderer_->UploadShadowMap(0, map);

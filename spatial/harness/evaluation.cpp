@@ -8,6 +8,7 @@
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/ray_cast_map.h"
 #include "lexel/spatial/harness/ray_caster.h"
 
 namespace lexel::spatial {
@@ -27,6 +28,7 @@ Evaluator::Evaluator(const Scene& scene, const RenderBackend& backend)
     for (std::size_t i = 0; i < frameDepth_.size(); ++i)
         if (frame_.Covered(i)) frameDepth_[i] = PlanarEyeDepth(scene.camera, frame_.wsPosition[i]);
     caster_ = std::make_unique<RayCaster>(scene.geometry);
+    mapper_ = std::make_unique<RayCastMapper>(scene.geometry, *caster_);
 }
 
 Evaluator::~Evaluator() = default;
@@ -116,6 +118,25 @@ FrameShading ShadeThroughMap(const RenderBackend& backend, const CameraBuffer& f
     return out;
 }
 
+// A warped method's map (ray_cast_map.h): the backend's where it rasterizes the warp, else
+// ray-cast; the frame shaded through it.
+FrameShading ShadeThroughWarp(const RenderBackend& backend, const RayCastMapper& mapper,
+                              const CameraBuffer& frame, const LightSpace& lightSpace,
+                              const MapWarp& warp, Resolution resolution) {
+    FrameShading out;
+    std::optional<ShadowMap> map = backend.RenderWarpedShadowMap(lightSpace, warp, resolution);
+    out.maps.push_back(map ? std::move(*map) : mapper.Render(lightSpace, warp, resolution));
+    out.shades = backend.ShadePixels(frame, lightSpace, out.maps.back());
+    out.cascade.assign(out.shades.size(), 0);
+    out.outside.assign(out.shades.size(), 0);
+    return out;
+}
+
+// A warped method's resolution: its own, or the scene's.
+Resolution WarpResolution(const MethodMatrix& computed, Resolution scene) {
+    return computed.resolution.width > 0 ? computed.resolution : scene;
+}
+
 struct Footprints {
     double mean = 0.0, max = 0.0;
     std::int64_t uncovered = 0;
@@ -146,18 +167,18 @@ Footprints MeasureFootprints(const Camera& camera, const LightSpace& lightSpace,
         if (shading.shades[i] != Shade::kLit && shading.shades[i] != Shade::kShadowed) continue;
         const ShadowMap& map = shading.maps[shading.cascade[i]];
         const glm::dvec3 lsX = lightSpace.ToLight(frame.wsPosition[i]);
-        const bool inFront = InFront(map.matrix.p4, lsX);
-        const glm::dvec2 u = inFront ? map.matrix.Map(lsX) : glm::dvec2(-1.0);
+        const glm::dvec2 u = MapCoordinates(map, lsX).value_or(glm::dvec2(-1.0));
         if (shading.outside[i] || !(u.x >= 0.0 && u.y >= 0.0 && u.x < map.resolution.width &&
                                     u.y < map.resolution.height)) {
             ++f.uncovered;
             continue;
         }
         const double aliasing =
-            PerspectiveAliasing(camera, lightSpace, map.matrix, frame.wsPosition[i]);
+            map.warp ? WarpPerspectiveAliasing(camera, lightSpace, *map.warp, frame.wsPosition[i])
+                     : PerspectiveAliasing(camera, lightSpace, map.matrix, frame.wsPosition[i]);
         if (std::isfinite(aliasing)) perspective.push_back(aliasing);
-        const double sigma = SampleBadness(map.matrix, lsX, lsFromWs * dWdx1[i],
-                                           lsFromWs * dWdx2[i], Badness::kLargestSingularValue);
+        const double sigma = MapSampleBadness(map, lsX, lsFromWs * dWdx1[i], lsFromWs * dWdx2[i],
+                                              Badness::kLargestSingularValue);
         if (!std::isfinite(sigma)) continue;  // J singular: the pixel's plane contains its ray
         sum += sigma;
         f.max = std::max(f.max, sigma);
@@ -172,36 +193,9 @@ Footprints MeasureFootprints(const Camera& camera, const LightSpace& lightSpace,
 
 }  // namespace
 
-// ∂u/∂x on the plane ⊥ the ray: the rows ∂u^i/∂X (LightMatrix::MapJacobian) times ∂X/∂x
-// (LightSpace::LightFromWorldLinear) applied to a unit basis (e1, e2) of that plane give the 2×2
-// J_l in texels per world unit. The texel's beam cross-section is J_l⁻¹, whose largest singular
-// value is σ_max(J_l) / |det J_l| (σ_min σ_max = |det|), with σ_max² = (T + √(T² − 4 det²)) / 2,
-// T = ‖J_l‖_F²: no cancellation for the small singular value.
 double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
                            const LightMatrix& matrix, const glm::dvec3& wsPoint) {
-    const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
-    if (!InFront(matrix.p4, lsX)) return std::numeric_limits<double>::infinity();
-    glm::dvec3 du1dX, du2dX;
-    matrix.MapJacobian(lsX, &du1dX, &du2dX);
-    const glm::dvec3 wsRay = -lightSpace.DirectionToLight(wsPoint);
-    const glm::dvec3 helper =
-        std::abs(wsRay.x) < 0.5 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-    const glm::dvec3 wsE1 = glm::normalize(glm::cross(wsRay, helper));
-    const glm::dvec3 wsE2 = glm::cross(wsRay, wsE1);
-    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
-    const glm::dvec3 lsE1 = lsFromWs * wsE1, lsE2 = lsFromWs * wsE2;
-    const double a = glm::dot(du1dX, lsE1), b = glm::dot(du1dX, lsE2);
-    const double c = glm::dot(du2dX, lsE1), d = glm::dot(du2dX, lsE2);
-    const double det = std::abs(a * d - b * c);
-    if (!(det > 0.0)) return std::numeric_limits<double>::infinity();
-    const double frobenius2 = a * a + b * b + c * c + d * d;
-    const double sigmaMax = std::sqrt(
-        0.5 * (frobenius2 + std::sqrt(std::max(0.0, frobenius2 * frobenius2 - 4.0 * det * det))));
-    const double wsTexelWidth = sigmaMax / det;
-    // Eq. 2 per pixel: the image beam's width at planar depth z.
-    const double wsPixelWidth = 2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) *
-                                PlanarEyeDepth(camera, wsPoint) / camera.resolution.height;
-    return wsTexelWidth / wsPixelWidth;
+    return WarpPerspectiveAliasing(camera, lightSpace, MapWarp::Linear(matrix), wsPoint);
 }
 
 double EffectiveStorageFactor(std::int64_t texels, double aliasing, std::int64_t framePixels) {
@@ -249,6 +243,8 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     out.samples = backend_.BoundarySamples(readback_, lightSpace, standardMap);
     context.samples = &out.samples;
     context.baseline.samples = &out.samples;
+    context.readback = &readback_;
+    context.frame = scene_.camera.resolution;
 
     // The counted frame pixels (covered, facing the light) and the truth there.
     std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
@@ -328,7 +324,9 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     const std::vector<Cascade>& cascades = computed.cascades;
     m->matrix = computed.matrix;
     FrameShading shading =
-        cascades.empty()
+        computed.warp ? ShadeThroughWarp(backend_, *mapper_, frame_, lightSpace, *computed.warp,
+                                         WarpResolution(computed, scene_.shadowMap))
+        : cascades.empty()
             ? ShadeThroughMap(backend_, frame_, lightSpace, computed.matrix, scene_.shadowMap)
             : ShadeThroughCascades(backend_, frame_, lightSpace, cascades, frameDepth_);
     m->misclassified = CountWrong(shading.shades, truth, &m->falseShadow);
@@ -346,11 +344,13 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     m->storageFactor = EffectiveStorageFactor(m->texels, m->perspectiveMax, framePixels);
     m->storageFactorP99 = EffectiveStorageFactor(m->texels, m->perspectiveP99, framePixels);
     if (cascades.empty()) {
-        m->h = Energy(m->matrix, samples);
+        const ShadowMap& map = shading.maps.front();
+        m->h = computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
         for (std::size_t s = 0; s < grazing.size(); ++s)
             if (grazing[s])
                 m->hGrazing +=
-                    SampleBadness(m->matrix, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s]);
+                    MapSampleBadness(map, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s],
+                                     Badness::kFrobeniusInverseSquared);
     } else {
         for (const Cascade& c : cascades) {
             m->cascades.push_back({c, 0, 0.0});

@@ -37,6 +37,7 @@
 namespace lexel::spatial {
 
 class RayCaster;
+class RayCastMapper;
 
 // Lloyd et al. 2006 eq. 1's perspective factor w_l/w_i at a world point served by `matrix`:
 // w_l = σ₁ of the inverse of ∂u/∂x restricted to the plane perpendicular to the light's ray
@@ -162,6 +163,7 @@ class Evaluator {
     std::vector<glm::dvec3> frameDWdx1_, frameDWdx2_;  // per frame pixel (PlaneDerivatives)
     std::vector<double> frameDepth_;                   // per frame pixel: planar eye depth
     std::unique_ptr<RayCaster> caster_;
+    std::unique_ptr<RayCastMapper> mapper_;  // warped methods' maps (ray_cast_map.h)
 };
 
 }  // namespace lexel::spatial

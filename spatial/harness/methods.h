@@ -11,6 +11,8 @@
 // and `optimal-shear` (Algorithm 1 with the report's Fig. 3 shear, optimized exactly). The
 // partitioned methods (partitions.h) return k cascades at the same total texels: `pssm`, `sdsm`,
 // `sdsm-snap` (SDSM with texel snapping), `sdsm-rect`, `zp-lispsm`, `fp-lispsm`, `sdsm-optimal`.
+// The warped methods (warped_methods.h) return one map with a nonlinear parameterization: `rtw`,
+// `rtw-lagrange`, `logpsm`.
 #pragma once
 
 #include <optional>
@@ -21,6 +23,7 @@
 
 #include "lexel/spatial/baselines.h"
 #include "lexel/spatial/harness/scene.h"
+#include "lexel/spatial/map_warp.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/partitions.h"
 #include "lexel/spatial/samples.h"
@@ -37,10 +40,12 @@ struct MethodContext {
     BaselineContext baseline;               // its samples are set: plane-optimal uses them
     const LightSamples* samples = nullptr;  // boundary samples and relevant points (light space)
     PartitionOptions partitions;            // k, λ and the allocation of the partitioned methods
+    const Readback* readback = nullptr;     // the readback (rtw's importance map reads it)
+    Resolution frame;                       // the final frame's size (rtw's sampling rates)
 };
 
 // Every method: the fair comparison's first (optimal its reference), then the report's, then
-// optimal-shear, then the partitioned ones.
+// optimal-shear, then the warped ones, then the partitioned ones.
 std::vector<std::string> SpatialMethodNames();
 // The report's Table 1 as published (reference: optimal-report).
 std::vector<std::string> ReportMethodNames();
@@ -61,6 +66,10 @@ struct MethodMatrix {
     std::optional<OptimizerResult> optimizer;
     std::string winner;  // optimal, optimal-refined: the start whose map or search won; else empty
     std::vector<Cascade> cascades;  // partitioned methods only
+    // Warped methods (rtw, rtw-lagrange, logpsm: warped_methods.h): the map's parameterization,
+    // whose base is `matrix`, and its resolution when it is not the scene's (0 × 0: the scene's).
+    std::optional<MapWarp> warp;
+    Resolution resolution;
 };
 // std::invalid_argument for an unknown name, or an optimal* or partitioned method without samples.
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context);
