@@ -111,6 +111,10 @@ SchemeValue AnalyticStorageOf(const std::string& method, int partitions,
     if (method == "zp-lispsm")
         return scheme("ZP + W (k = " + k + ")", spatial::Scheme::ZpWarp(partitions));
     if (method == "fp-lispsm") return scheme("FP + W", spatial::Scheme::FpZpWarp(1));
+    if (method == "logpsm") return {"LogPSM", spatial::LogPsmStorageFactor(frustum, esToLight)};
+    // RTW's warps follow the scene's importance: no closed form in Lloyd's analysis.
+    if (method.rfind("rtw", 0) == 0)
+        return {"adaptive (RTW)", std::numeric_limits<double>::quiet_NaN()};
     if (method.rfind("focused", 0) == 0) return scheme("no warp", spatial::Scheme::Zp(1));
     if (method.rfind("lispsm", 0) == 0) return scheme("LiSPSM", spatial::Scheme::ZpWarp(1, 0.0));
     if (method.rfind("psm", 0) == 0) return scheme("PSM", spatial::Scheme::ZpWarp(1, 1.0));

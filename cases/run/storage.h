@@ -54,7 +54,9 @@ spatial::ViewFrustum FrustumOf(const spatial::Camera& camera);
 // scheme's label and value. Single maps: focused* unwarped, lispsm* LiSPSM (η = 0), psm* PSM
 // (η = 1); optimal*, plane-optimal, normal: the best single map, the smallest S̄ over n'
 // (BestSingleMapStorage). Partitioned (k maps): pssm, sdsm* ZP (unwarped, logarithmic splits),
-// zp-lispsm and sdsm-optimal ZP + W, fp-lispsm FP + W (one map per face, no z-split).
+// zp-lispsm and sdsm-optimal ZP + W, fp-lispsm FP + W (one map per face, no z-split). Warped:
+// logpsm LogPSM (LogPsmStorageFactor: S̄_opt with the light overhead); rtw* "adaptive (RTW)"
+// with no value (NaN: an empty cell, null in JSON), its warps having no closed form.
 struct SchemeValue {
     std::string scheme;
     double storage = 0.0;
