@@ -32,6 +32,19 @@ class GlBackend final : public RenderBackend {
         return renderer_->ReadShadowMap(0);
     }
 
+    // RTW's piecewise-linear warps by the vertex warp of tessellated geometry; LogPSM's
+    // logarithm is no vertex warp: nullopt, and the harness ray-casts its map.
+    std::optional<ShadowMap> RenderWarpedShadowMap(const LightSpace& lightSpace,
+                                                   const MapWarp& warp,
+                                                   Resolution resolution) const override {
+        if (warp.x.kind() == AxisWarp::Kind::kLogarithmic ||
+            warp.y.kind() == AxisWarp::Kind::kLogarithmic)
+            return std::nullopt;
+        const CurrentContext current(renderer_->context());
+        renderer_->RenderWarpedShadowMap(0, lightSpace, warp, resolution);
+        return renderer_->ReadShadowMap(0);
+    }
+
     std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                    const ShadowMap& map) const override {
         // A warped map is shaded on the CPU (ray_cast_map.h): the GPU pass maps through a matrix.
