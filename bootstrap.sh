@@ -16,7 +16,7 @@ fi
 packages=(build-essential cmake ninja-build pkg-config
           libceres-dev libglm-dev libopenimageio-dev openimageio-tools libcli11-dev nlohmann-json3-dev
           libgtest-dev googletest libbenchmark-dev libcairo2-dev
-          libtbb-dev libembree-dev libassimp-dev assimp-testmodels libqhull-dev
+          libtbb-dev libembree-dev libassimp-dev assimp-testmodels libtinygltf-dev libqhull-dev
           libegl-dev libopengl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
           clang-14 libclang-rt-14-dev)
 # The last line is the OpenGL backend (spatial/gl): EGL and GL through GLVND, libepoxy for the GL
@@ -45,12 +45,12 @@ fi
 # input: the tests of the case and mesh loaders and the fuzz targets (a short fixed run each,
 # tests/fuzz/). The whole suite does not fit CI's time under the sanitizers (solvers_tests alone
 # took 640 s instead of a few seconds on the development machine), so only these are built and run.
-sanitizer_tests='^(JsonReader|FlatlandCase|SpatialCase|CaseName|MeshLoader|AllocationCap|Primitives|Transform|OutputSetTest|ReportNumbers|Containment)\.'
+sanitizer_tests='^(JsonReader|FlatlandCase|SpatialCase|SpatialCaseMeshEntry|CaseName|MeshLoader|PlyReader|GltfReader|MeshFrame|AllocationCap|Primitives|Transform|OutputSetTest|ReportNumbers|Containment)\.'
 sanitizer_suite() {
     cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Asan -DCMAKE_CXX_COMPILER=clang++-14 \
         -DLEXEL_FUZZ=ON -DLEXEL_GL=OFF -DLEXEL_BUILD_BENCHMARKS=OFF -DLEXEL_BUILD_NOTEBOOKS=OFF
     cmake --build build-asan --parallel "$(nproc)" --target cases_tests spatial_tests \
-        flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer
+        flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer ply_fuzzer gltf_fuzzer
     (cd build-asan && ctest --output-on-failure --parallel "$(nproc)" -R "$sanitizer_tests|_fuzzer\$")
 }
 

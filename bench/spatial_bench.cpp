@@ -361,7 +361,7 @@ void BM_ReadbackFromDepth(benchmark::State& state) {
     const CameraBuffer pass = w.backend->RenderCamera(camera, camera.resolution);
     const std::vector<float> depth(pass.windowDepth.begin(), pass.windowDepth.end());
     const DepthBuffer buffer{camera.resolution, depth,
-                             camera.ClipFromView() * camera.ViewFromWorld()};
+                             camera.ClipFromView() * camera.ViewFromWorld(), DepthConvention{}};
     const bool downsample = state.range(0) == 1;
     for (auto _ : state) {
         const Readback r =

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -34,7 +35,10 @@
 #include "lexel/cases/run/timing.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/mesh_frame.h"
+#include "lexel/spatial/harness/mesh_loader.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/primitives.h"
 #include "lexel/spatial/harness/warped_methods.h"
 
 #ifndef LEXEL_SOURCE_DATA_DIR
@@ -500,6 +504,65 @@ int StorageCommand(const StorageFlags& flags) {
     out->Commit();
     std::cerr << "lexel: wrote storage.json, storage.csv and " << figures.size() << " figures to "
               << flags.outDir << '\n';
+    return 0;
+}
+
+namespace {
+
+// Bounds to 6 significant digits: "[x, y, z] .. [x, y, z], size [dx, dy, dz]".
+std::string BoundsText(const spatial::Bounds& bounds) {
+    const auto vec = [](const glm::dvec3& v) {
+        char text[96];
+        std::snprintf(text, sizeof text, "[%.6g, %.6g, %.6g]", v.x, v.y, v.z);
+        return std::string(text);
+    };
+    return vec(bounds.lo) + " .. " + vec(bounds.hi) + ", size " + vec(bounds.hi - bounds.lo);
+}
+
+// The case's mesh entries whose file is `meshPath` (the same file, however the paths are spelled).
+std::vector<SpatialMeshEntry> EntriesForMesh(const std::string& casePath,
+                                             const fs::path& meshPath) {
+    std::error_code error;
+    const fs::path mesh = fs::weakly_canonical(meshPath, error);
+    std::vector<SpatialMeshEntry> found, all = LoadSpatialMeshEntries(casePath);
+    for (const SpatialMeshEntry& entry : all)
+        if (fs::weakly_canonical(entry.file, error) == mesh) found.push_back(entry);
+    if (!found.empty()) return found;
+    std::string files;
+    for (const SpatialMeshEntry& entry : all)
+        files += (files.empty() ? "" : ", ") + entry.pointer + " " + entry.file.string();
+    throw InputError(
+        "--case: " + casePath + " has no mesh entry for " + meshPath.string() + " (" +
+        (files.empty() ? std::string("it has no mesh entries") : "its mesh entries: " + files) +
+        ")");
+}
+
+}  // namespace
+
+int MeshInfoCommand(const std::string& meshPath, const std::string& casePath) {
+    const std::vector<SpatialMeshEntry> entries =
+        casePath.empty() ? std::vector<SpatialMeshEntry>{} : EntriesForMesh(casePath, meshPath);
+    const spatial::LoadedMesh loaded = spatial::LoadMeshFile(meshPath);
+    std::ostringstream out;  // printed whole, after everything succeeded
+    out << "file: " << meshPath << "\nformat: " << loaded.format
+        << "\nvertices: " << loaded.mesh.positions.size()
+        << "\ntriangles: " << loaded.mesh.triangles.size()
+        << "\nbounds (file units): " << BoundsText(loaded.mesh.ComputeBounds()) << '\n';
+    if (entries.empty())
+        out << "up axis: y (the default; a case's mesh entry sets \"up\" and \"units\")\n";
+    for (const SpatialMeshEntry& entry : entries) {
+        const glm::dmat4 sceneFromFile = spatial::SceneFromFile(entry.frame);
+        out << casePath << " " << entry.pointer << ":\n  up axis: " << UpAxisName(entry.frame.up)
+            << ", units: " << FormatNumber(entry.frame.unitScale) << " scene units per file unit"
+            << "\n  bounds (scene axes and units): "
+            << BoundsText(spatial::TransformMesh(loaded.mesh, sceneFromFile).ComputeBounds())
+            << "\n  bounds (world, after the transform): "
+            << BoundsText(
+                   spatial::TransformMesh(loaded.mesh, entry.transform.Matrix() * sceneFromFile)
+                       .ComputeBounds())
+            << '\n';
+    }
+    std::cout << out.str();
     return 0;
 }
 

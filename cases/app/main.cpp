@@ -12,6 +12,7 @@
 //   lexel storage --case CASE.json [--method NAME...] [--format ...] [--out DIR]
 //                                   every method's measured storage factor beside the analytic
 //   lexel info                                      version and backends (the GL renderer)
+//   lexel mesh-info FILE [--case CASE.json]     a mesh's format, triangles, bounds, placement
 //   (run and sweep take --backend cpu|gl for 3D cases)
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
@@ -182,6 +183,18 @@ int RunLexel(int argc, char** argv) {
                      "Also write storage.json, storage.csv and the figures (PNG) here")
         ->check(NonEmpty("a directory"));
 
+    auto* meshInfo = app.add_subcommand(
+        "mesh-info", "A mesh file's format, triangles and bounds, and its placement by a case");
+    std::string meshInfoFile, meshInfoCase;
+    meshInfo->add_option("file", meshInfoFile, "Mesh file (obj, off, stl, ply, gltf, glb)")
+        ->required()
+        ->check(NonEmpty("a mesh file"));
+    meshInfo
+        ->add_option("--case", meshInfoCase,
+                     "3D case: also the bounds after each of its entries for the file (up axis, "
+                     "units, transform)")
+        ->check(CLI::ExistingFile);
+
     auto* info = app.add_subcommand("info", "The version and the renderers available here");
 
     auto* tables =
@@ -247,6 +260,7 @@ int RunLexel(int argc, char** argv) {
                                         sweepFormat, sweepOut, sweepCascades, sweepBackend});
         if (*timing) return cases::TimingCommand(timingFlags);
         if (*storage) return cases::StorageCommand(storageFlags);
+        if (*meshInfo) return cases::MeshInfoCommand(meshInfoFile, meshInfoCase);
         if (*info) return cases::InfoCommand(std::string("lexel ") + LEXEL_VERSION);
         if (*tables) return cases::TablesCommand(tablesOut, casesDir);
         if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);

@@ -7,9 +7,12 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/mesh_frame.h"
+#include "lexel/spatial/harness/primitives.h"
 #include "lexel/spatial/harness/scene.h"
 
 namespace lexel::cases {
@@ -43,6 +46,21 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
                                     const std::filesystem::path& baseDir);
 // Reads the file; errors are prefixed with its path.
 spatial::Scene LoadSpatialScene(const std::filesystem::path& path);
+
+// A `mesh` geometry entry of a 3D case: its file (a relative path resolved against the case's
+// directory), the file's axes and units (`up`, `units`) and the entry's transform; the entry's
+// triangles in world space are transform.Matrix() · SceneFromFile(frame) applied to the file's.
+struct SpatialMeshEntry {
+    std::string pointer;  // "/geometry/K"
+    std::filesystem::path file;
+    spatial::MeshFrame frame;
+    spatial::Transform transform;
+};
+
+// The mesh entries of a 3D case file, read and checked as LoadSpatialScene reads them, without
+// loading any mesh or checking the rest of the scene. Throws InputError "<case>: <pointer>:
+// reason".
+std::vector<SpatialMeshEntry> LoadSpatialMeshEntries(const std::filesystem::path& path);
 
 // Where in a case a DomainError met while evaluating its loaded scene points, for one-line
 // errors: `camera` (default "/camera") for Subject::kCamera, `light` for kLight ("/lights/k" of
