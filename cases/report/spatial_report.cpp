@@ -317,9 +317,9 @@ std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& di
                                       LightLabel(o.light) + " · " + m.method;
             std::vector<spatial::Cascade> cascades;
             for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
-            const std::vector<std::uint8_t> uncovered =
-                spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera, m.shades,
-                                         m.map.matrix, m.map.resolution, cascades);
+            const std::vector<std::uint8_t> uncovered = spatial::UncoveredPixels(
+                evaluator.frame(), lightSpace, scene.camera, m.shades, m.map.matrix,
+                m.map.resolution, cascades, m.map.warp ? &*m.map.warp : nullptr);
             write(l, m.method, "frame",
                   spatial::FrameImage(evaluator.frame(), lightSpace, m.shades, uncovered),
                   FrameFigure(title + " · frame", o, m, false));

@@ -54,9 +54,9 @@ TEST(SpatialImages, MarkUncoveredPixelsWhereTheEvaluationCountsThem) {
     for (const spatial::MethodOutcome& m : o.methods) {
         std::vector<spatial::Cascade> cascades;
         for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
-        const std::vector<std::uint8_t> uncovered =
-            spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera, m.shades,
-                                     m.map.matrix, m.map.resolution, cascades);
+        const std::vector<std::uint8_t> uncovered = spatial::UncoveredPixels(
+            evaluator.frame(), lightSpace, scene.camera, m.shades, m.map.matrix, m.map.resolution,
+            cascades, m.map.warp ? &*m.map.warp : nullptr);
         std::int64_t marked = 0;
         for (std::uint8_t u : uncovered) marked += u;
         EXPECT_EQ(marked, m.uncovered) << m.method;
@@ -88,10 +88,11 @@ TEST(SpatialImages, EveryImageIsListedWithItsLightMethodAndKind) {
     std::size_t calls = 0;
     const std::vector<SpatialImageFile> files =
         WriteSpatialImages(dir, scene, run, [&] { ++calls; });
-    // 13 single-map methods × 3, 6 partitioned × (2 + 4 cascades), fp-lispsm 2 + 3 wedges.
-    EXPECT_EQ(files.size(), 80u);
-    EXPECT_EQ(SpatialImageCount(run), 80u);
-    EXPECT_EQ(calls, 80u);
+    // 16 single-map methods (rtw, rtw-lagrange and logpsm among them) × 3, 6 partitioned ×
+    // (2 + 4 cascades), fp-lispsm 2 + 3 wedges.
+    EXPECT_EQ(files.size(), 89u);
+    EXPECT_EQ(SpatialImageCount(run), 89u);
+    EXPECT_EQ(calls, 89u);
     std::set<std::string> names;
     for (const SpatialImageFile& f : files) {
         EXPECT_TRUE(fs::is_regular_file(dir / f.file)) << f.file;
