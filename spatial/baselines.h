@@ -195,8 +195,11 @@ double LispsmOptimalNear(double zNear, double zFar, double sinGamma);
 // Not taken from Filament: its orthographic map below sin γ = 0.02 (γ < 1.146°). Both rules keep
 // warping down to lexel's cutoff sin γ = 1e-3 and fall back as lispsm-tight does below it; n is
 // continuous in γ down to there.
+//   kNearDepth  n = z_n / sin γ: Lloyd et al. 2006's η = 1 (n' = n) over Wimmer's sin γ, the
+//            warping frustum of the optimal logarithmic parameterization for an overhead light
+//            (their Appendix C: the view frustum itself); LogPSM's perspective warp (logpsm.h).
 struct LispsmNearRule {
-    enum class Kind { kWimmer, kEngine };
+    enum class Kind { kWimmer, kEngine, kNearDepth };
     Kind kind = Kind::kWimmer;
     // kEngine only: Filament's virtual near and far planes, view depths in world units (Filament's
     // defaults are 1 m and 100 m). 0 and +∞: none.

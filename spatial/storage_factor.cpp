@@ -655,6 +655,53 @@ std::vector<glm::dvec3> FrustumSamples(const ViewFrustum& frustum, int perAxis, 
     return samples;
 }
 
+glm::dvec2 LogWarpedMap::Map(const glm::dvec3& esPoint) const {
+    const WarpedMap& w = perspective;
+    const double depth = w.zHi - w.zLo, fromNear = w.frame.ToLight(esPoint).z - w.zLo;
+    const glm::dvec2 st = w.Map(esPoint);
+    if (std::isinf(w.nPrime)) return st;
+    return {st.x, std::log1p(fromNear / w.nPrime) / std::log1p(depth / w.nPrime)};
+}
+
+ErrorPair LogWarpedMap::BeamWidths(const glm::dvec3& esPoint) const {
+    const WarpedMap& w = perspective;
+    const ErrorPair widths = w.BeamWidths(esPoint);
+    if (std::isinf(w.nPrime)) return widths;
+    const double depth = w.zHi - w.zLo;
+    const double zeta = w.nPrime + (w.frame.ToLight(esPoint).z - w.zLo);
+    return {widths.x, zeta * std::log1p(depth / w.nPrime)};
+}
+
+LogWarpedMap FitLogWarpedMap(const LightFrame& frame, std::span<const glm::dvec3> esBody,
+                             double nPrime) {
+    return {FitWarpedMap(frame, esBody, nPrime)};
+}
+
+ErrorPair LogVertexMaxErrors(const ViewFrustum& frustum, const LogWarpedMap& map,
+                             std::span<const glm::dvec3> esVertices) {
+    Require(!esVertices.empty(), "vertices", "none given");
+    ErrorPair worst;
+    for (const glm::dvec3& p : esVertices) {
+        const ErrorPair w = map.BeamWidths(p);
+        const double wi = ImageBeamWidth(frustum, p);
+        worst.x = std::max(worst.x, w.x / wi);
+        worst.z = std::max(worst.z, w.z / wi);
+    }
+    return worst;
+}
+
+double LogPsmStorageFactor(const ViewFrustum& frustum, const glm::dvec3& esToLight) {
+    ValidateFrustum(frustum);
+    const LightFrame frame = MakeLightFrame(esToLight, kEsView);
+    const std::vector<glm::dvec3> corners =
+        SubFrustumCorners(frustum, frustum.nearPlane, frustum.farPlane);
+    const double nPrime =
+        SchemeWarpOffset(1.0, frustum.nearPlane, frustum.farPlane, frame.sinGamma);
+    const ErrorPair worst =
+        LogVertexMaxErrors(frustum, FitLogWarpedMap(frame, corners, nPrime), corners);
+    return worst.x * worst.z / frustum.aspect;
+}
+
 double StorageFactorForWarpOffset(const ViewFrustum& frustum, const glm::dvec3& esToLight,
                                   double nPrime) {
     ValidateFrustum(frustum);

@@ -164,6 +164,29 @@ ErrorPair SampledMaxErrors(const ViewFrustum& frustum, const LightFrame& frame,
 // every partition's vertices are samples. perAxis ≥ 2, k ≥ 1.
 std::vector<glm::dvec3> FrustumSamples(const ViewFrustum& frustum, int perAxis, int k = 1);
 
+// LogPSM (D. B. Lloyd, N. K. Govindaraju, C. Quammen, S. E. Molnar, D. Manocha, "Logarithmic
+// Perspective Shadow Maps", ACM TOG 2008) as a map of §4.4: a perspective warp of offset n'
+// followed by the logarithm of ζ = n' + (z − zLo), the distance from its projection centre along
+// the frame's z: s as the warp's, t = ln(ζ / n') / ln(1 + (zHi − zLo) / n'). Appendix C's
+// derivation in general position: w_lz = dz/dt = ζ ln(1 + (zHi − zLo) / n'), w_lx the warp's;
+// n' = +∞ is the orthographic map (t linear in z).
+struct LogWarpedMap {
+    WarpedMap perspective;
+
+    glm::dvec2 Map(const glm::dvec3& esPoint) const;        // (s, t)
+    ErrorPair BeamWidths(const glm::dvec3& esPoint) const;  // (w_lx, w_lz), resolution 1
+};
+LogWarpedMap FitLogWarpedMap(const LightFrame& frame, std::span<const glm::dvec3> esBody,
+                             double nPrime);
+// M_x, M_z of a LogWarpedMap over vertices: m_x and m_z = ζ ln(·) / (2 tanθ z) are
+// linear-fractional in the point, so their maxima over a convex body lie at its vertices.
+ErrorPair LogVertexMaxErrors(const ViewFrustum& frustum, const LogWarpedMap& map,
+                             std::span<const glm::dvec3> esVertices);
+// LogPSM's S̄ for the frustum: the map fitted to its 8 corners with n' = n / sin γ (η = 1, as
+// Scheme's maps; +∞ along the light), S̄ = M_x M_z / aspect by the vertex rule. For an overhead
+// light n' = n, the warping frustum is the view frustum, and S̄ = S̄_opt (OptimalStorageFactor).
+double LogPsmStorageFactor(const ViewFrustum& frustum, const glm::dvec3& esToLight);
+
 // The single map of §4.4 for an explicit n' (light-space units, > 0 or +∞), fitted to the whole
 // frustum in the frame of the view vector: S̄ = M_x M_z / aspect over the 8 vertices.
 double StorageFactorForWarpOffset(const ViewFrustum& frustum, const glm::dvec3& esToLight,

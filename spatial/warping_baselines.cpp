@@ -337,6 +337,7 @@ std::optional<double> LispsmNear(const LispsmNearRule& rule, const LispsmDepths&
           std::isfinite(d)))
         return std::nullopt;
     if (rule.kind == LispsmNearRule::Kind::kWimmer) return LispsmOptimalNear(zn, zf, sinGamma);
+    if (rule.kind == LispsmNearRule::Kind::kNearDepth) return zn / sinGamma;
     // ShadowMap::applyLISPSM's names: z0, z1 the near and far depth along the warp axis, dzn how
     // far the virtual near plane lies beyond the camera's (world units).
     const double z0 = zn, z1 = z0 + d * sinGamma;
@@ -397,8 +398,9 @@ LightMatrix LispsmRuleLightMatrix(const BaselineContext& context, const LispsmNe
         LispsmWarp(context, ChooseNormalAxis(context), TightBody(context),
                    context.wsRelevantHull.empty() ? context.wsRelevant : context.wsRelevantHull,
                    rule, diagnostics, &failure);
-    const char* method =
-        rule.kind == LispsmNearRule::Kind::kWimmer ? "lispsm-tight" : "lispsm-engine";
+    const char* method = rule.kind == LispsmNearRule::Kind::kWimmer   ? "lispsm-tight"
+                         : rule.kind == LispsmNearRule::Kind::kEngine ? "lispsm-engine"
+                                                                      : "logpsm";
     return FitTight(context, warped, method, failure, diagnostics);
 }
 

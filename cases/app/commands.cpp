@@ -39,6 +39,7 @@
 #include "lexel/spatial/harness/mesh_loader.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/primitives.h"
+#include "lexel/spatial/harness/warped_methods.h"
 
 #ifndef LEXEL_SOURCE_DATA_DIR
 #define LEXEL_SOURCE_DATA_DIR ""
@@ -134,6 +135,16 @@ BackendKind BackendOf(const std::string& name) {
     return *kind;
 }
 
+// With --backend gl, one line on stderr for each method whose map the GPU does not render
+// (logpsm: a logarithm is no vertex warp, its map is ray-cast on the CPU: warped_methods.h).
+void NoteCpuOnlyMethods(const std::vector<std::string>& methods, BackendKind backend) {
+    if (backend != BackendKind::kGl) return;
+    for (const std::string& m : methods)
+        if (spatial::IsWarpedMethod(m) && !spatial::WarpedMethodRendersOnGl(m))
+            std::cerr << "lexel: note: --backend gl: " << m
+                      << "'s map is ray-cast on the CPU (a logarithmic warp is no vertex warp)\n";
+}
+
 // Errors a runner finds after loading get the case file's name in front, like the loader's own.
 template <class Body>
 auto WithCaseName(const fs::path& casePath, Body body) {
@@ -166,6 +177,7 @@ int RunSpatial(const RunFlags& flags) {
     options.mapTruth = flags.mapTruth;
     options.keepBuffers = !flags.outDir.empty();
     options.backend = BackendOf(flags.backend);
+    NoteCpuOnlyMethods(options.methods, options.backend);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
     if (!flags.outDir.empty())
         out.emplace(
@@ -347,6 +359,7 @@ int SweepCommand(const SweepFlags& flags) {
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
     const BackendKind backend = BackendOf(flags.backend);
+    NoteCpuOnlyMethods(methods, backend);
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     std::optional<OutputSet> out;  // --out is checked before anything is computed

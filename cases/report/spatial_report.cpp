@@ -367,10 +367,10 @@ std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& di
             for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
             // A virtual shadow map knows its uncovered pixels (no page serves them).
             const std::vector<std::uint8_t> uncovered =
-                m.pages
-                    ? m.uncoveredPixels
-                    : spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera,
-                                               m.shades, m.map.matrix, m.map.resolution, cascades);
+                m.pages ? m.uncoveredPixels
+                        : spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera,
+                                                   m.shades, m.map.matrix, m.map.resolution,
+                                                   cascades, m.map.warp ? &*m.map.warp : nullptr);
             write(l, m.method, "frame",
                   spatial::FrameImage(evaluator.frame(), lightSpace, m.shades, uncovered),
                   FrameFigure(title + " · frame", o, m, false));

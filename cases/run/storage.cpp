@@ -130,6 +130,10 @@ SchemeValue AnalyticStorageOf(const std::string& method, int partitions,
         return {"TSM (n' = (f − n) / 3 sin γ)",
                 spatial::StorageFactorForWarpOffset(frustum, esToLight, nPrime)};
     }
+    if (method == "logpsm") return {"LogPSM", spatial::LogPsmStorageFactor(frustum, esToLight)};
+    // RTW's warps follow the scene's importance: no closed form in Lloyd's analysis.
+    if (method.rfind("rtw", 0) == 0)
+        return {"adaptive (RTW)", std::numeric_limits<double>::quiet_NaN()};
     if (method.rfind("focused", 0) == 0) return scheme("no warp", spatial::Scheme::Zp(1));
     if (method.rfind("lispsm", 0) == 0) return scheme("LiSPSM", spatial::Scheme::ZpWarp(1, 0.0));
     if (method.rfind("psm", 0) == 0) return scheme("PSM", spatial::Scheme::ZpWarp(1, 1.0));

@@ -57,6 +57,8 @@ spatial::ViewFrustum FrustumOf(const spatial::Camera& camera);
 // zp-lispsm and sdsm-optimal ZP + W, fp-lispsm FP + W (one map per face, no z-split). tsm*: the
 // single map of n' = (f − n) / (3 sin γ), the 80% rule with the focus at mid-depth; vsm*: ZP with
 // k = ⌈log₂ f/n⌉ unwarped maps (ρ ≤ 2: a level per halving of the texel, as its pages have).
+// Warped: logpsm LogPSM (LogPsmStorageFactor: S̄_opt with the light overhead); rtw* "adaptive
+// (RTW)" with no value (NaN: an empty cell, null in JSON), its warps having no closed form.
 struct SchemeValue {
     std::string scheme;
     double storage = 0.0;

@@ -2,6 +2,7 @@
 
 #include "lexel/spatial/gl/gl_renderer.h"
 #include "lexel/spatial/gl/visibility.h"
+#include "lexel/spatial/harness/ray_cast_map.h"
 
 namespace lexel::spatial::gl {
 
@@ -31,8 +32,23 @@ class GlBackend final : public RenderBackend {
         return renderer_->ReadShadowMap(0);
     }
 
+    // RTW's piecewise-linear warps by the vertex warp of tessellated geometry; LogPSM's
+    // logarithm is no vertex warp: nullopt, and the harness ray-casts its map.
+    std::optional<ShadowMap> RenderWarpedShadowMap(const LightSpace& lightSpace,
+                                                   const MapWarp& warp,
+                                                   Resolution resolution) const override {
+        if (warp.x.kind() == AxisWarp::Kind::kLogarithmic ||
+            warp.y.kind() == AxisWarp::Kind::kLogarithmic)
+            return std::nullopt;
+        const CurrentContext current(renderer_->context());
+        renderer_->RenderWarpedShadowMap(0, lightSpace, warp, resolution);
+        return renderer_->ReadShadowMap(0);
+    }
+
     std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                    const ShadowMap& map) const override {
+        // A warped map is shaded on the CPU (ray_cast_map.h): the GPU pass maps through a matrix.
+        if (map.warp) return ShadeWarpedPixels(frame, lightSpace, map);
         const CurrentContext current(renderer_->context());
         renderer_->UploadCamera(CameraSlot::kFrame, frame);
         renderer_->UploadShadowMap(0, map);

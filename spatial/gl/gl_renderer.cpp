@@ -6,11 +6,14 @@
 #include <cmath>
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
 
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/clip_matrix.h"
 #include "lexel/spatial/gl/program.h"
 #include "lexel/spatial/gl/shaders.h"
+#include "lexel/spatial/gl/warp_refinement.h"
+#include "lexel/spatial/gl/warp_shaders.h"
 
 namespace lexel::spatial::gl {
 
@@ -133,12 +136,14 @@ GlRenderer::~GlRenderer() {
     for (CameraTarget& t : cameras_) Release(t);
     for (MapTarget& t : maps_) Release(t);
     glDeleteQueries(static_cast<GLsizei>(freeQueries_.size()), freeQueries_.data());
-    for (GLuint p : {cameraProgram_, shadowProgram_, shadeProgram_, boundaryProgram_})
+    for (GLuint p : {cameraProgram_, shadowProgram_, shadeProgram_, boundaryProgram_, warpProgram_})
         glDeleteProgram(p);
-    const GLuint buffers[] = {vertexBuffer_, indexBuffer_, normalBuffer_, planeBuffer_,
-                              boundaryBuffer_};
-    glDeleteBuffers(5, buffers);
+    const GLuint buffers[] = {vertexBuffer_,   indexBuffer_,      normalBuffer_,
+                              planeBuffer_,    boundaryBuffer_,   warpKnotBuffer_,
+                              warpBaseBuffer_, warpVertexBuffer_, warpTriangleBuffer_};
+    glDeleteBuffers(9, buffers);
     glDeleteVertexArrays(1, &vertexArray_);
+    glDeleteVertexArrays(1, &warpVertexArray_);
     glDeleteVertexArrays(1, &emptyVertexArray_);
 }
 
@@ -291,6 +296,7 @@ void GlRenderer::RenderShadowMap(int map, const LightSpace& lightSpace, const Li
                                  Resolution resolution) {
     MapTarget& t = EnsureMap(map, resolution);
     t.matrix = matrix;
+    t.warp.reset();
     const double maxDepth = MaxDepth(lightSpace, bounds_);
     t.depthScale = static_cast<float>(DepthScale(maxDepth));
     // Any valid range: depth clamping keeps every point in front of the light, and the fragment
@@ -324,9 +330,130 @@ void GlRenderer::RenderShadowMap(int map, const LightSpace& lightSpace, const Li
     EndPass();
 }
 
+namespace {
+
+// An axis warp as the warped pass's knots: (lo, hi) and the values at equally spaced knots.
+void AppendKnots(const AxisWarp& w, double extent, std::vector<float>* knots, float* lo,
+                 float* hi) {
+    if (w.kind() == AxisWarp::Kind::kLogarithmic)
+        throw std::invalid_argument("GlRenderer: a logarithmic axis warp is not a vertex warp");
+    if (w.kind() == AxisWarp::Kind::kPiecewise) {
+        *lo = static_cast<float>(w.lo()), *hi = static_cast<float>(w.hi());
+        for (double v : w.values()) knots->push_back(static_cast<float>(v));
+        return;
+    }
+    // Identity and affine: one segment, extended linearly beyond it.
+    *lo = 0.0f, *hi = static_cast<float>(extent);
+    knots->push_back(static_cast<float>(w.Apply(0.0)));
+    knots->push_back(static_cast<float>(w.Apply(extent)));
+}
+
+// Replaces *buffer by one holding `bytes` bytes of `data`.
+void Upload(GLuint* buffer, const void* data, std::size_t bytes) {
+    glDeleteBuffers(1, buffer);
+    glCreateBuffers(1, buffer);
+    glNamedBufferStorage(*buffer, static_cast<GLsizeiptr>(bytes), data, 0);
+}
+
+}  // namespace
+
+void GlRenderer::RenderWarpedShadowMap(int map, const LightSpace& lightSpace, const MapWarp& warp,
+                                       Resolution resolution) {
+    std::vector<float> knots;
+    float range[4];
+    AppendKnots(warp.x, resolution.width, &knots, &range[0], &range[1]);
+    const int knotsX = static_cast<int>(knots.size());
+    AppendKnots(warp.y, resolution.height, &knots, &range[2], &range[3]);
+    const int knotsY = static_cast<int>(knots.size()) - knotsX;
+    // The base coordinates of every column's and row's texel centre: warp.Inverse, axis by axis.
+    std::vector<double> texelBase;
+    for (int x = 0; x < resolution.width; ++x)
+        texelBase.push_back(warp.x.Invert(x + 0.5 - warp.phase.x));
+    for (int y = 0; y < resolution.height; ++y)
+        texelBase.push_back(warp.y.Invert(y + 0.5 - warp.phase.y));
+    if (warpProgram_ == 0) {
+        warpProgram_ = BuildProgram({{GL_VERTEX_SHADER, shaders::kWarpVertex},
+                                     {GL_TESS_CONTROL_SHADER, shaders::kWarpControl},
+                                     {GL_TESS_EVALUATION_SHADER, shaders::kWarpEvaluation},
+                                     {GL_FRAGMENT_SHADER, shaders::kWarpFragment}});
+        GLint level = 0;
+        glGetIntegerv(GL_MAX_TESS_GEN_LEVEL, &level);
+        maxTessLevel_ = static_cast<float>(std::max(level, 1));
+        // The mesh on the CPU once, from the GPU's own buffers, for the pieces.
+        GLint64 bytes = 0;
+        glGetNamedBufferParameteri64v(vertexBuffer_, GL_BUFFER_SIZE, &bytes);
+        unitPositions_.resize(static_cast<std::size_t>(bytes) / sizeof(glm::vec3));
+        glGetNamedBufferSubData(vertexBuffer_, 0, bytes, unitPositions_.data());
+        triangles_.resize(static_cast<std::size_t>(indexCount_) / 3);
+        glGetNamedBufferSubData(indexBuffer_, 0, indexCount_ * sizeof(GLuint), triangles_.data());
+        glCreateVertexArrays(1, &warpVertexArray_);
+        glEnableVertexArrayAttrib(warpVertexArray_, 0);
+        glVertexArrayAttribFormat(warpVertexArray_, 0, 3, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(warpVertexArray_, 0, 0);
+    }
+    Upload(&warpKnotBuffer_, knots.data(), knots.size() * sizeof(float));
+    Upload(&warpBaseBuffer_, texelBase.data(), texelBase.size() * sizeof(double));
+
+    MapTarget& t = EnsureMap(map, resolution);
+    t.matrix = warp.base;
+    t.warp = warp;
+    const double maxDepth = MaxDepth(lightSpace, bounds_);
+    t.depthScale = static_cast<float>(DepthScale(maxDepth));
+    const DepthRange depthRange =
+        lightSpace.IsPoint() ? DepthRange{1e-3 * maxDepth, maxDepth} : DepthRange{0.0, maxDepth};
+    const glm::dmat4 clipFromUnit =
+        ClipFromWorld(lightSpace, warp.base, resolution, depthRange, ClipDepth::kZeroToOne) *
+        frame_.WorldFromUnit();
+    const glm::mat4 clip = ToFloat(clipFromUnit);
+    const WarpPieces pieces =
+        RefineForWarp(unitPositions_, triangles_, clipFromUnit, warp, resolution,
+                      static_cast<double>(maxTessLevel_ * kWarpSegmentTexels));
+    Upload(&warpVertexBuffer_, pieces.unitVertices.data(),
+           pieces.unitVertices.size() * sizeof(glm::vec3));
+    Upload(&warpTriangleBuffer_, pieces.triangle.data(),
+           pieces.triangle.size() * sizeof(std::int32_t));
+    glVertexArrayVertexBuffer(warpVertexArray_, 0, warpVertexBuffer_, 0, sizeof(glm::vec3));
+    BeginPass(PassKind::kShadow);
+    const GLfloat empty = 1.0f;
+    glClearNamedFramebufferfv(t.framebuffer, GL_DEPTH, 0, &empty);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
+    glViewport(0, 0, resolution.width, resolution.height);
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_CLAMP);
+    glDisable(GL_CULL_FACE);
+    const GLuint p = warpProgram_;
+    glUseProgram(p);
+    glProgramUniformMatrix4fv(p, 0, 1, GL_FALSE, glm::value_ptr(clip));
+    glProgramUniform2f(p, 1, static_cast<float>(resolution.width),
+                       static_cast<float>(resolution.height));
+    glProgramUniform2i(p, 2, knotsX, knotsY);
+    glProgramUniform4fv(p, 3, 1, range);
+    glProgramUniform2f(p, 4, static_cast<float>(warp.phase.x), static_cast<float>(warp.phase.y));
+    glProgramUniform1f(p, 5, kWarpSegmentTexels);
+    glProgramUniform1f(p, 6, maxTessLevel_);
+    glProgramUniform1d(p, 7, 1.0 / t.depthScale);
+    glProgramUniform1i(p, 8, resolution.width);
+    SetLightUniforms(p, lightSpace, warp.base, frame_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, planeBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, warpKnotBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, warpBaseBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, warpTriangleBuffer_);
+    glBindVertexArray(warpVertexArray_);
+    glPatchParameteri(GL_PATCH_VERTICES, 3);
+    glDrawArrays(GL_PATCHES, 0, static_cast<GLsizei>(pieces.unitVertices.size()));
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDisable(GL_DEPTH_CLAMP);
+    EndPass();
+    CheckGlError("rendering a warped shadow map");
+}
+
 void GlRenderer::UploadShadowMap(int map, const ShadowMap& shadowMap) {
     MapTarget& t = EnsureMap(map, shadowMap.resolution);
     t.matrix = shadowMap.matrix;
+    t.warp = shadowMap.warp;
     double maxDepth = 0.0;
     for (float d : shadowMap.depth)
         if (std::isfinite(d)) maxDepth = std::max(maxDepth, static_cast<double>(d));
@@ -343,6 +470,7 @@ ShadowMap GlRenderer::ReadShadowMap(int map) const {
     ShadowMap out;
     out.resolution = t.resolution;
     out.matrix = t.matrix;
+    out.warp = t.warp;
     out.depth.resize(t.resolution.Count());
     glGetTextureImage(t.depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                       static_cast<GLsizei>(out.depth.size() * sizeof(float)), out.depth.data());

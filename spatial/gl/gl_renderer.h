@@ -26,6 +26,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "lexel/solvers/stopwatch.h"
@@ -79,6 +80,14 @@ class GlRenderer {
     // first use and keep their map until overwritten).
     void RenderShadowMap(int map, const LightSpace& lightSpace, const LightMatrix& matrix,
                          Resolution resolution);
+    // The map of a nonlinear `warp` (map_warp.h) at `resolution` into map slot `map`, by the
+    // vertex warp of tessellated geometry (warp_shaders.h: Rosen 2012's way), patch edges cut
+    // into segments of at most kWarpSegmentTexels warped texels (up to GL_MAX_TESS_GEN_LEVEL
+    // segments). Its axis warps must be the identity, affine or piecewise linear (RTW's);
+    // std::invalid_argument for a logarithmic one (LogPSM's map is ray-cast: ray_cast_map.h).
+    // ReadShadowMap then returns the map with the warp attached.
+    void RenderWarpedShadowMap(int map, const LightSpace& lightSpace, const MapWarp& warp,
+                               Resolution resolution);
     // A CPU shadow map into slot `map` in place of a shadow pass.
     void UploadShadowMap(int map, const ShadowMap& shadowMap);
     // Map slot `map` as a ShadowMap (+inf where empty).
@@ -112,7 +121,8 @@ class GlRenderer {
         Resolution resolution;
         GLuint framebuffer = 0, depth = 0;
         LightMatrix matrix;
-        float depthScale = 1.0f;  // stored × depthScale = linear depth
+        float depthScale = 1.0f;      // stored × depthScale = linear depth
+        std::optional<MapWarp> warp;  // a warped map's parameterization (RenderWarpedShadowMap)
     };
     enum class PassKind { kCamera, kShadow, kShading, kExtraction };
 
@@ -135,6 +145,13 @@ class GlRenderer {
     GLsizeiptr boundaryCapacity_ = 0;  // pixels
     GLsizeiptr boundaryPixels_ = 0;    // pixels of the last FindBoundary's image
     GLuint cameraProgram_ = 0, shadowProgram_ = 0, shadeProgram_ = 0, boundaryProgram_ = 0;
+    GLuint warpProgram_ = 0;                             // built on the first warped map
+    GLuint warpKnotBuffer_ = 0, warpBaseBuffer_ = 0;     // its axis knots and texel centres
+    GLuint warpVertexBuffer_ = 0, warpVertexArray_ = 0;  // the pieces (warp_refinement.h)
+    GLuint warpTriangleBuffer_ = 0;                      // ... and their mesh triangles
+    std::vector<glm::vec3> unitPositions_;               // the mesh on the CPU, for the pieces
+    std::vector<glm::uvec3> triangles_;
+    float maxTessLevel_ = 0.0f;
     std::array<CameraTarget, 2> cameras_{};
     std::vector<MapTarget> maps_;
 
@@ -152,6 +169,10 @@ class GlRenderer {
     GpuTimes times_;
     bool inPass_ = false;
 };
+
+// The longest patch edge segment of the warped pass, in warped texels: the axis warps (RTW's,
+// blurred over about two texels) are close to linear over it.
+inline constexpr float kWarpSegmentTexels = 2.0f;
 
 // The camera pass's clip-from-world for a framebuffer whose row 0 is the screen's top row:
 // x_ndc = 2x¹/W - 1, y_ndc = 2x²/H - 1 from Q = camera.ScreenFromWorld(resolution), and reversed

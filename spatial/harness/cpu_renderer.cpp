@@ -6,6 +6,7 @@
 
 #include "lexel/spatial/clip_matrix.h"
 #include "lexel/spatial/harness/raster.h"
+#include "lexel/spatial/harness/ray_cast_map.h"
 #include "lexel/spatial/harness/render_backend.h"
 
 namespace lexel::spatial {
@@ -31,6 +32,7 @@ namespace {
 Shade ShadeWithInverse(const LightSpace& lightSpace, const ShadowMap& map,
                        const glm::dmat3& lsFromMap, const glm::dvec3& wsPoint,
                        const glm::dvec3& wsNormal) {
+    if (map.warp) return ShadeWarpedPoint(lightSpace, map, wsPoint, wsNormal);
     if (!(glm::dot(wsNormal, lightSpace.DirectionToLight(wsPoint)) > 0.0))
         return Shade::kFacingAway;
     const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);

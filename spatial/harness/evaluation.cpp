@@ -9,6 +9,7 @@
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/page_shading.h"
+#include "lexel/spatial/harness/ray_cast_map.h"
 #include "lexel/spatial/harness/ray_caster.h"
 
 namespace lexel::spatial {
@@ -28,6 +29,7 @@ Evaluator::Evaluator(const Scene& scene, const RenderBackend& backend)
     for (std::size_t i = 0; i < frameDepth_.size(); ++i)
         if (frame_.Covered(i)) frameDepth_[i] = PlanarEyeDepth(scene.camera, frame_.wsPosition[i]);
     caster_ = std::make_unique<RayCaster>(scene.geometry);
+    mapper_ = std::make_unique<RayCastMapper>(scene.geometry, *caster_);
 }
 
 Evaluator::~Evaluator() = default;
@@ -117,6 +119,25 @@ FrameShading ShadeThroughMap(const RenderBackend& backend, const CameraBuffer& f
     return out;
 }
 
+// A warped method's map (ray_cast_map.h): the backend's where it rasterizes the warp, else
+// ray-cast; the frame shaded through it.
+FrameShading ShadeThroughWarp(const RenderBackend& backend, const RayCastMapper& mapper,
+                              const CameraBuffer& frame, const LightSpace& lightSpace,
+                              const MapWarp& warp, Resolution resolution) {
+    FrameShading out;
+    std::optional<ShadowMap> map = backend.RenderWarpedShadowMap(lightSpace, warp, resolution);
+    out.maps.push_back(map ? std::move(*map) : mapper.Render(lightSpace, warp, resolution));
+    out.shades = backend.ShadePixels(frame, lightSpace, out.maps.back());
+    out.cascade.assign(out.shades.size(), 0);
+    out.outside.assign(out.shades.size(), 0);
+    return out;
+}
+
+// A warped method's resolution: its own, or the scene's.
+Resolution WarpResolution(const MethodMatrix& computed, Resolution scene) {
+    return computed.resolution.width > 0 ? computed.resolution : scene;
+}
+
 struct Footprints {
     double mean = 0.0, max = 0.0;
     std::int64_t uncovered = 0;
@@ -147,18 +168,18 @@ Footprints MeasureFootprints(const Camera& camera, const LightSpace& lightSpace,
         if (shading.shades[i] != Shade::kLit && shading.shades[i] != Shade::kShadowed) continue;
         const ShadowMap& map = shading.maps[shading.cascade[i]];
         const glm::dvec3 lsX = lightSpace.ToLight(frame.wsPosition[i]);
-        const bool inFront = InFront(map.matrix.p4, lsX);
-        const glm::dvec2 u = inFront ? map.matrix.Map(lsX) : glm::dvec2(-1.0);
+        const glm::dvec2 u = MapCoordinates(map, lsX).value_or(glm::dvec2(-1.0));
         if (shading.outside[i] || !(u.x >= 0.0 && u.y >= 0.0 && u.x < map.resolution.width &&
                                     u.y < map.resolution.height)) {
             ++f.uncovered;
             continue;
         }
         const double aliasing =
-            PerspectiveAliasing(camera, lightSpace, map.matrix, frame.wsPosition[i]);
+            map.warp ? WarpPerspectiveAliasing(camera, lightSpace, *map.warp, frame.wsPosition[i])
+                     : PerspectiveAliasing(camera, lightSpace, map.matrix, frame.wsPosition[i]);
         if (std::isfinite(aliasing)) perspective.push_back(aliasing);
-        const double sigma = SampleBadness(map.matrix, lsX, lsFromWs * dWdx1[i],
-                                           lsFromWs * dWdx2[i], Badness::kLargestSingularValue);
+        const double sigma = MapSampleBadness(map, lsX, lsFromWs * dWdx1[i], lsFromWs * dWdx2[i],
+                                              Badness::kLargestSingularValue);
         if (!std::isfinite(sigma)) continue;  // J singular: the pixel's plane contains its ray
         sum += sigma;
         f.max = std::max(f.max, sigma);
@@ -219,6 +240,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     context.samples = &out.samples;
     context.baseline.samples = &out.samples;
     context.readback = &readback_;
+    context.frame = scene_.camera.resolution;
 
     // The counted frame pixels (covered, facing the light) and the truth there.
     std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
@@ -302,6 +324,9 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
         PageShading p =
             ShadeThroughPages(backend_, frame_, lightSpace, scene_.camera, *computed.virtualMap);
         shading = {std::move(p.shades), std::move(p.maps), std::move(p.page), std::move(p.outside)};
+    } else if (computed.warp) {
+        shading = ShadeThroughWarp(backend_, *mapper_, frame_, lightSpace, *computed.warp,
+                                   WarpResolution(computed, scene_.shadowMap));
     } else {
         shading =
             cascades.empty()
@@ -329,11 +354,13 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
                         vsm->dropped,          vsm->layout.pageTexels,
                         vsm->layout.poolPages, vsm->lodBias};
     } else if (cascades.empty()) {
-        m->h = Energy(m->matrix, samples);
+        const ShadowMap& map = shading.maps.front();
+        m->h = computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
         for (std::size_t s = 0; s < grazing.size(); ++s)
             if (grazing[s])
                 m->hGrazing +=
-                    SampleBadness(m->matrix, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s]);
+                    MapSampleBadness(map, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s],
+                                     Badness::kFrobeniusInverseSquared);
     } else {
         for (const Cascade& c : cascades) {
             m->cascades.push_back({c, 0, 0.0});

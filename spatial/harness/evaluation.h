@@ -41,6 +41,7 @@
 namespace lexel::spatial {
 
 class RayCaster;
+class RayCastMapper;
 
 // texels · aliasing² / framePixels: the storage factor S̄ (Lloyd 2006 eq. 12's texels over image
 // pixels) that brings a worst aliasing `aliasing` to 1 by scaling every map's resolution alike.
@@ -168,6 +169,7 @@ class Evaluator {
     std::vector<glm::dvec3> frameDWdx1_, frameDWdx2_;  // per frame pixel (PlaneDerivatives)
     std::vector<double> frameDepth_;                   // per frame pixel: planar eye depth
     std::unique_ptr<RayCaster> caster_;
+    std::unique_ptr<RayCastMapper> mapper_;  // warped methods' maps (ray_cast_map.h)
 };
 
 }  // namespace lexel::spatial

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace lexel::spatial {
 namespace {
@@ -32,19 +33,25 @@ bool InsideMap(const LightMatrix& matrix, Resolution map, const glm::dvec3& lsX)
     return u.x >= 0.0 && u.y >= 0.0 && u.x < map.width && u.y < map.height;
 }
 
+// The same through a warped map's parameterization (Forward: nullopt behind its plane).
+bool InsideWarpedMap(const MapWarp& warp, Resolution map, const glm::dvec3& lsX) {
+    const std::optional<glm::dvec2> u = warp.Forward(lsX);
+    return u && u->x >= 0.0 && u->y >= 0.0 && u->x < map.width && u->y < map.height;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> UncoveredPixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                           const Camera& camera, std::span<const Shade> shades,
                                           const LightMatrix& matrix, Resolution map,
-                                          std::span<const Cascade> cascades) {
+                                          std::span<const Cascade> cascades, const MapWarp* warp) {
     std::vector<std::uint8_t> uncovered(shades.size(), 0);
     for (std::size_t i = 0; i < shades.size(); ++i) {
         if (shades[i] != Shade::kLit && shades[i] != Shade::kShadowed) continue;
         const glm::dvec3& wsPoint = frame.wsPosition[i];
         const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
         if (cascades.empty()) {
-            uncovered[i] = !InsideMap(matrix, map, lsX);
+            uncovered[i] = warp ? !InsideWarpedMap(*warp, map, lsX) : !InsideMap(matrix, map, lsX);
             continue;
         }
         bool covered = true;

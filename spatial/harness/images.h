@@ -34,12 +34,13 @@ inline constexpr float kNearGrey = 0.9f, kFarGrey = 0.2f;
 // Per frame pixel, 1 where a counted pixel (shade lit or shadowed) is uncovered as the evaluation
 // counts it (MethodOutcome::uncovered): behind the serving map's plane or outside its texels, or,
 // for cascades, outside every cascade's depth interval and half-spaces. The serving map is
-// `matrix` at `map` texels, or with `cascades` the one CascadeFor picks by the pixel's planar eye
-// depth for `camera`.
+// `matrix` at `map` texels (through `warp` when given: a warped map, map_warp.h), or with
+// `cascades` the one CascadeFor picks by the pixel's planar eye depth for `camera`.
 std::vector<std::uint8_t> UncoveredPixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                           const Camera& camera, std::span<const Shade> shades,
                                           const LightMatrix& matrix, Resolution map,
-                                          std::span<const Cascade> cascades = {});
+                                          std::span<const Cascade> cascades = {},
+                                          const MapWarp* warp = nullptr);
 
 // Lambert-shaded grey frame; shadowed and facing-away pixels get only the ambient term; pixels
 // without geometry kSkyColour; `uncovered` pixels (optional, UncoveredPixels) kUncoveredColour.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "lexel/spatial/harness/warped_methods.h"
 #include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/tsm.h"
 
@@ -54,6 +55,7 @@ std::vector<std::string> SpatialMethodNames() {
     for (const std::string& m : ReportMethodNames())
         if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
     names.push_back("optimal-shear");
+    for (const std::string& m : WarpedMethodNames()) names.push_back(m);
     for (const std::string& m : PartitionedMethodNames()) names.push_back(m);
     for (const std::string& m : TsmMethodNames()) names.push_back(m);
     for (const std::string& m : VirtualMethodNames()) names.push_back(m);
@@ -81,6 +83,9 @@ constexpr MethodDescription kDescriptions[] = {
     {"lispsm", "LiSPSM for the view frustum and scene bounds, as the report ran it"},
     {"psm", "PSM with Kozlov's fixes for the view frustum and scene bounds"},
     {"optimal-shear", "Algorithm 1 with the report's affine shear (Fig. 3), optimized exactly"},
+    {"rtw", "Rosen 2012: focused-tight + two 1-D warps from the readback's importance"},
+    {"rtw-lagrange", "rtw's warps with Lagrange densities of h's per-sample cost per row/column"},
+    {"logpsm", "Lloyd et al. 2008: perspective warp, then the log of its depth (CPU map)"},
     {"pssm", "cascades: Zhang et al. 2006's split depths, a focused-tight map each"},
     {"sdsm", "cascades: Lauritzen et al. 2011, log splits of the visible depth range"},
     {"sdsm-snap", "sdsm with texel snapping for directional lights"},
@@ -207,6 +212,7 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
     for (const NamedPartition& p : kPartitions)
         if (p.name == name) return Partitioned(p, context);
     if (IsVirtualMethod(name)) return Virtual(name, context);
+    if (IsWarpedMethod(name)) return WarpedLightMatrix(name, context);
     throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 

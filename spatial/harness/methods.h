@@ -13,6 +13,8 @@
 // `sdsm-snap` (SDSM with texel snapping), `sdsm-rect`, `zp-lispsm`, `fp-lispsm`, `sdsm-optimal`.
 // Trapezoidal shadow maps (tsm.h): `tsm` (fair) and `tsm-report` (the paper's view frustum).
 // Virtual shadow maps (virtual_shadow_map.h): `vsm` and `vsm-dynamic`, pages at equal texels.
+// The warped methods (warped_methods.h) return one map with a nonlinear parameterization: `rtw`,
+// `rtw-lagrange`, `logpsm`.
 #pragma once
 
 #include <optional>
@@ -23,6 +25,7 @@
 
 #include "lexel/spatial/baselines.h"
 #include "lexel/spatial/harness/scene.h"
+#include "lexel/spatial/map_warp.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/partitions.h"
 #include "lexel/spatial/samples.h"
@@ -40,11 +43,13 @@ struct MethodContext {
     BaselineContext baseline;               // its samples are set: plane-optimal uses them
     const LightSamples* samples = nullptr;  // boundary samples and relevant points (light space)
     PartitionOptions partitions;            // k, λ and the allocation of the partitioned methods
-    const Readback* readback = nullptr;     // the readback the visible points come from (vsm*)
+    const Readback* readback =
+        nullptr;       // the readback (vsm*'s page requests, rtw's importance map)
+    Resolution frame;  // the final frame's size (rtw's sampling rates)
 };
 
 // Every method: the fair comparison's first (optimal its reference), then the report's, then
-// optimal-shear, then the partitioned ones.
+// optimal-shear, then the warped ones, then the partitioned ones.
 std::vector<std::string> SpatialMethodNames();
 // The report's Table 1 as published (reference: optimal-report).
 std::vector<std::string> ReportMethodNames();
@@ -79,6 +84,10 @@ struct MethodMatrix {
     std::vector<Cascade> cascades;  // partitioned methods only
     // vsm*: the virtual map and its resident pages (`matrix` is then its coarsest page's).
     std::optional<VirtualShadowMap> virtualMap;
+    // Warped methods (rtw, rtw-lagrange, logpsm: warped_methods.h): the map's parameterization,
+    // whose base is `matrix`, and its resolution when it is not the scene's (0 × 0: the scene's).
+    std::optional<MapWarp> warp;
+    Resolution resolution;
 };
 // std::invalid_argument for an unknown name, an optimal* or partitioned method without samples,
 // or a vsm* method without the readback.

@@ -193,6 +193,59 @@ std::optional<RayCaster::Hit> RayCaster::Intersect(const glm::dvec3& wsOrigin,
     return Hit{static_cast<double>(rayHit.ray.tfar) * impl_->frame.wsScale, rayHit.hit.primID};
 }
 
+void RayCaster::IntersectBatch(std::span<const ShadowRay> rays, std::span<std::int32_t> triangle,
+                               RayOrder order) const {
+    if (rays.size() != triangle.size())
+        throw std::invalid_argument("ray caster: " + std::to_string(rays.size()) + " rays but " +
+                                    std::to_string(triangle.size()) + " result slots");
+    const std::size_t chunkCount = (rays.size() + kRaysPerChunk - 1) / kRaysPerChunk;
+    const RTCScene scene = impl_->scene;
+    const RTCDevice device = impl_->device;
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, chunkCount),
+        [&](const tbb::blocked_range<std::size_t>& chunks) {
+            RTCIntersectContext context;
+            rtcInitIntersectContext(&context);
+            context.flags = order == RayOrder::kCoherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                                         : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+            RTCRayHit16 packet;
+            alignas(64) int valid[kPacketSize];
+            for (std::size_t chunk = chunks.begin(); chunk != chunks.end(); ++chunk) {
+                const std::size_t chunkBegin = chunk * kRaysPerChunk;
+                const std::size_t chunkEnd = std::min(rays.size(), chunkBegin + kRaysPerChunk);
+                for (std::size_t first = chunkBegin; first < chunkEnd; first += kPacketSize) {
+                    const std::size_t count = std::min(kPacketSize, chunkEnd - first);
+                    for (std::size_t i = 0; i < kPacketSize; ++i) {
+                        // Lanes past the end repeat the last ray but are masked off.
+                        const ShadowRay& r = rays[first + std::min(i, count - 1)];
+                        valid[i] = i < count ? -1 : 0;
+                        packet.ray.org_x[i] = r.unitOrigin.x;
+                        packet.ray.org_y[i] = r.unitOrigin.y;
+                        packet.ray.org_z[i] = r.unitOrigin.z;
+                        packet.ray.dir_x[i] = r.direction.x;
+                        packet.ray.dir_y[i] = r.direction.y;
+                        packet.ray.dir_z[i] = r.direction.z;
+                        packet.ray.tnear[i] = r.tNear;
+                        packet.ray.tfar[i] = r.tFar;
+                        packet.ray.time[i] = 0.0f;
+                        packet.ray.mask[i] = std::numeric_limits<unsigned>::max();
+                        packet.ray.id[i] = static_cast<unsigned>(i);
+                        packet.ray.flags[i] = 0;
+                        packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+                        packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+                        packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+                    }
+                    rtcIntersect16(valid, scene, &context, &packet);
+                    ThrowOnEmbreeError(device, "tracing a packet of rays");
+                    for (std::size_t i = 0; i < count; ++i)
+                        triangle[first + i] = packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID
+                                                  ? -1
+                                                  : static_cast<std::int32_t>(packet.hit.primID[i]);
+                }
+            }
+        });
+}
+
 void RayCaster::OccludedBatch(std::span<const ShadowRay> rays, std::span<std::uint8_t> occluded,
                               RayOrder order) const {
     if (rays.size() != occluded.size())

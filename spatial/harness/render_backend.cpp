@@ -7,6 +7,11 @@ Readback RenderReadback(const RenderBackend& backend, const Camera& camera, Reso
                         camera.ScreenFromWorld(resolution));
 }
 
+std::optional<ShadowMap> RenderBackend::RenderWarpedShadowMap(const LightSpace&, const MapWarp&,
+                                                              Resolution) const {
+    return std::nullopt;
+}
+
 LightSamples RenderBackend::BoundarySamples(const Readback& readback, const LightSpace& lightSpace,
                                             const ShadowMap& map) const {
     return MakeLightSamples(readback, lightSpace, ShadePixels(readback.buffer, lightSpace, map));

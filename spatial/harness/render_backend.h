@@ -21,12 +21,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
+#include "lexel/spatial/map_warp.h"
 #include "lexel/spatial/readback.h"
 #include "lexel/spatial/samples.h"
 
@@ -36,6 +38,10 @@ struct ShadowMap {
     Resolution resolution;
     LightMatrix matrix;
     std::vector<float> depth;  // linear light depth (LightSpace::Depth); +inf where empty
+    // A nonlinear map (map_warp.h, its base `matrix`): a point lands at warp->Forward(X) and
+    // texel t stands for the ray warp->Inverse(t + ½), both in ShadePoint's decision; built by
+    // ray casting (ray_cast_map.h) or a backend's RenderWarpedShadowMap. Empty: the matrix's map.
+    std::optional<MapWarp> warp;
 };
 
 inline constexpr double kRelativeBias = 1e-5;
@@ -51,6 +57,12 @@ class RenderBackend {
     virtual CameraBuffer RenderCamera(const Camera& camera, Resolution resolution) const = 0;
     virtual ShadowMap RenderShadowMap(const LightSpace& lightSpace, const LightMatrix& matrix,
                                       Resolution resolution) const = 0;
+    // The map of a nonlinear warp where this backend rasterizes it (the GL backend: RTW's
+    // piecewise-linear warps by the vertex warp of tessellated geometry); nullopt where it does
+    // not, and the harness ray-casts the map instead (ray_cast_map.h). The default: nullopt.
+    virtual std::optional<ShadowMap> RenderWarpedShadowMap(const LightSpace& lightSpace,
+                                                           const MapWarp& warp,
+                                                           Resolution resolution) const;
     virtual std::vector<Shade> ShadePixels(const CameraBuffer& frame, const LightSpace& lightSpace,
                                            const ShadowMap& map) const = 0;
     // Algorithm 1 step 3 for one light: the boundary samples of `readback` under `map` (a

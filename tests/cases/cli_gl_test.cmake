@@ -70,6 +70,17 @@ if(NOT glFiles STREQUAL cpuFiles OR nGl LESS 3)
     message(FATAL_ERROR "run --out: the GL backend wrote ${glFiles}, the CPU backend ${cpuFiles}")
 endif()
 
+# Warped methods: rtw renders on the GPU (the vertex warp of tessellated geometry); logpsm's map is
+# ray-cast on the CPU, and one line says so.
+expect_run(0 "^\\{\n  \"case\": \"spatial_small\""
+           "^lexel: backend gl: [^\n]+\nlexel: note: --backend gl: logpsm's map is ray-cast on the CPU [^\n]+\n$"
+           run "${small}" --backend gl --format json --method rtw --method logpsm)
+string(JSON rtwName GET "${lastStdout}" lights 0 methods 0 method)
+string(JSON logName GET "${lastStdout}" lights 0 methods 1 method)
+if(NOT rtwName STREQUAL "rtw" OR NOT logName STREQUAL "logpsm")
+    message(FATAL_ERROR "run --backend gl --method rtw --method logpsm: ${rtwName}, ${logName}")
+endif()
+
 # sweep and timing.
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^lexel: backend gl" sweep "${small}" --backend gl
            --lights 3 --methods optimal --methods focused --format json)

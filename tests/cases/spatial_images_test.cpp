@@ -58,7 +58,8 @@ TEST(SpatialImages, MarkUncoveredPixelsWhereTheEvaluationCountsThem) {
         const std::vector<std::uint8_t> uncovered =
             m.pages ? m.uncoveredPixels
                     : spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera,
-                                               m.shades, m.map.matrix, m.map.resolution, cascades);
+                                               m.shades, m.map.matrix, m.map.resolution, cascades,
+                                               m.map.warp ? &*m.map.warp : nullptr);
         if (m.pages) {
             EXPECT_EQ(uncovered.size(), m.shades.size()) << m.method;
         }
@@ -93,11 +94,11 @@ TEST(SpatialImages, EveryImageIsListedWithItsLightMethodAndKind) {
     std::size_t calls = 0;
     const std::vector<SpatialImageFile> files =
         WriteSpatialImages(dir, scene, run, [&] { ++calls; });
-    // 17 single-map methods × 3 (vsm and vsm-dynamic: frame, errors and the page pool), 6
-    // partitioned × (2 + 4 cascades), fp-lispsm 2 + 3 wedges.
-    EXPECT_EQ(files.size(), 92u);
-    EXPECT_EQ(SpatialImageCount(run), 92u);
-    EXPECT_EQ(calls, 92u);
+    // 20 single-map methods (rtw, rtw-lagrange and logpsm among them) × 3 (vsm and vsm-dynamic:
+    // frame, errors and the page pool), 6 partitioned × (2 + 4 cascades), fp-lispsm 2 + 3 wedges.
+    EXPECT_EQ(files.size(), 101u);
+    EXPECT_EQ(SpatialImageCount(run), 101u);
+    EXPECT_EQ(calls, 101u);
     std::set<std::string> names;
     for (const SpatialImageFile& f : files) {
         EXPECT_TRUE(fs::is_regular_file(dir / f.file)) << f.file;

@@ -61,6 +61,12 @@ TEST(StorageRun, EachMethodIsComparedWithItsScheme) {
     EXPECT_EQ(value("optimal", 1).scheme, "best single map");
     EXPECT_NEAR(value("optimal", 1).storage, 865.159, 1e-3);
     EXPECT_EQ(value("fp-lispsm", 3).scheme, "FP + W");
+    // LogPSM reaches the log bound with the light overhead (Lloyd 2006 Appendix C): 5.98229.
+    EXPECT_EQ(value("logpsm", 1).scheme, "LogPSM");
+    EXPECT_NEAR(value("logpsm", 1).storage, OptimalStorageFactor(frustum), 1e-12);
+    EXPECT_NEAR(value("logpsm", 1).storage, 5.98229, 1e-5);
+    EXPECT_TRUE(std::isnan(value("rtw", 1).storage));
+    EXPECT_TRUE(std::isnan(value("rtw-lagrange", 1).storage));
 }
 
 TEST(StorageRun, StudyHoldsEveryFigure) {

@@ -243,6 +243,55 @@ TEST(StorageFactorOptimal, LogarithmicParameterizationMatchesTheDenseEvaluation)
     }
 }
 
+// --- LogPSM (Lloyd et al. 2008): the η = 1 warp with a logarithmic t ---
+
+TEST(StorageFactorLogPsm, OverheadIsTheOptimalStorageFactor) {
+    // Appendix C: with the light overhead the warping frustum is the view frustum (n' = n) and the
+    // log map reaches S̄_opt exactly; M_x = a, M_z = ln(f/n) / (2 tanθ).
+    for (const ViewFrustum& frustum : OverheadFrusta()) {
+        ExpectRelative(LogPsmStorageFactor(frustum, DirectionToLight(90.0)),
+                       OptimalStorageFactor(frustum), 1e-12, Describe(frustum));
+        const LightFrame frame = MakeLightFrame(DirectionToLight(90.0), kEsView);
+        const std::vector<glm::dvec3> corners = FrustumSamples(frustum, 2, 1);
+        const LogWarpedMap map = FitLogWarpedMap(frame, corners, frustum.nearPlane);
+        const ErrorPair worst = LogVertexMaxErrors(frustum, map, corners);
+        ExpectRelative(worst.x, frustum.aspect, 1e-12, Describe(frustum));
+        ExpectRelative(worst.z, std::log(frustum.DepthRatio()) / (2.0 * frustum.TanHalfFovY()),
+                       1e-12, Describe(frustum));
+    }
+}
+
+TEST(StorageFactorLogPsm, VertexRuleMatchesDenseSamplesForRandomLights) {
+    std::mt19937_64 random(20080401);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 40; ++trial) {
+        ViewFrustum f;
+        f.fovYDeg = 20.0 + 100.0 * unit(random);
+        f.aspect = 0.6 + 1.2 * unit(random);
+        f.nearPlane = 0.1 + unit(random);
+        f.farPlane = f.nearPlane * std::exp(1.0 + 6.0 * unit(random));
+        const double gamma = 5.0 + 170.0 * unit(random), azimuth = 360.0 * unit(random);
+        const glm::dvec3 light = DirectionToLight(gamma, azimuth);
+        std::ostringstream what;
+        what << "trial " << trial << ": " << Describe(f) << ", gamma " << gamma << "°, azimuth "
+             << azimuth << "°";
+        SCOPED_TRACE(what.str());
+        const LightFrame frame = MakeLightFrame(light, kEsView);
+        const std::vector<glm::dvec3> corners = FrustumSamples(f, 2, 1);
+        const double nPrime = f.nearPlane / frame.sinGamma;
+        const LogWarpedMap map = FitLogWarpedMap(frame, corners, nPrime);
+        const ErrorPair vertices = LogVertexMaxErrors(f, map, corners);
+        const double step = 1e-3 * std::min(nPrime, f.farPlane - f.nearPlane);
+        const ErrorPair sampled = SampledMaxErrors(
+            f, frame, [&](const glm::dvec3& p) { return map.Map(p); }, FrustumSamples(f, 7, 1),
+            step);
+        ExpectRelative(sampled.x, vertices.x, kNumericTolerance, "M_x");
+        ExpectRelative(sampled.z, vertices.z, kNumericTolerance, "M_z");
+        ExpectRelative(LogPsmStorageFactor(f, light), vertices.x * vertices.z / f.aspect, 1e-12,
+                       "S̄");
+    }
+}
+
 // --- Partitioning: eqs. 17–21 against the dense evaluation of the schemes ---
 
 const std::vector<ViewFrustum>& PartitionFrusta() {

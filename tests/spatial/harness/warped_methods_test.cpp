@@ -1,0 +1,180 @@
+// The warped methods (warped_methods.h) in the evaluation: LogPSM's measured storage factor on a
+// box scene lit from overhead is within 10% of its analytic value (Lloyd et al. 2008; at γ = 90°
+// the analytic S̄_opt of Lloyd 2006 Appendix C) and its texels split as that analysis says; every
+// warped method gets the other single maps' texels and covers what focused-tight covers.
+#include "lexel/spatial/harness/warped_methods.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/spatial/cascades.h"
+#include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/logpsm.h"
+#include "lexel/spatial/storage_factor.h"
+#include "spatial/spatial_test_scenes.h"
+
+namespace lexel::spatial {
+namespace {
+
+// A floor 400 across with a box on it, seen by a level camera 2 above it (60°, near 0.1, far
+// 100): the floor fills the lower half of the view from depth 2 / tan 30° = 3.46 to the far plane.
+Scene BoxScene(const Light& light) {
+    Scene scene;
+    scene.name = "box";
+    scene.camera.position = {0.0, 2.0, 0.0};
+    scene.camera.target = {0.0, 2.0, -1.0};
+    scene.camera.fovYDeg = 60.0;
+    scene.camera.nearPlane = 0.1;
+    scene.camera.farPlane = 100.0;
+    scene.camera.resolution = {320, 320};
+    scene.readback = {160, 160};
+    scene.shadowMap = {256, 256};
+    scene.geometry = testing::FloorQuad(200.0);
+    scene.geometry.Append(testing::BoxMesh({-1.0, 0.0, -12.0}, {1.0, 1.5, -10.0}));
+    scene.floorPlane = glm::dvec4(0.0, 1.0, 0.0, 0.0);
+    scene.lights = {light};
+    return scene;
+}
+
+// The frame's visible planar depth range, as `lexel storage --case` takes it.
+ViewFrustum VisibleFrustum(const Evaluator& evaluator) {
+    const Camera& camera = evaluator.scene().camera;
+    ViewFrustum f;
+    f.fovYDeg = camera.fovYDeg;
+    f.aspect = static_cast<double>(camera.resolution.width) / camera.resolution.height;
+    f.nearPlane = std::numeric_limits<double>::infinity();
+    f.farPlane = 0.0;
+    const CameraBuffer& frame = evaluator.frame();
+    for (std::size_t i = 0; i < frame.wsPosition.size(); ++i) {
+        if (!frame.Covered(i)) continue;
+        const double z = PlanarEyeDepth(camera, frame.wsPosition[i]);
+        f.nearPlane = std::min(f.nearPlane, z);
+        f.farPlane = std::max(f.farPlane, z);
+    }
+    return f;
+}
+
+// LogPSM's effective storage factor with the light overhead, in closed form. Per texel of an
+// M_x × M_z map the beam's cross-section (the plane ⊥ the light: the floor's x, z) has the
+// columns J⁻¹ e_s = (p, 0) and J⁻¹ e_t = (−r q, q): p = 2 a tanθ z (1+m) / M_x the lateral step,
+// q = z ln(ρ) (1+m) / M_z the step along the view (ρ the fitted depth ratio; 1+m the margin on
+// each axis), and r = x/z the slope of the warp's rays (the perspective's t-lines are rays from
+// the eye), |r| ≤ a tanθ = tan φ, φ the horizontal half angle. LogPsmLightMap balances the
+// column lengths, p = q √(1 + r²) at |r| = tan φ (logpsm.h), and then σ₁² of [[p, −rq], [0, q]]
+// is q² (λ² + λ r), λ = √(1 + r²). With the pixel 2 tanθ z / H wide, texels · σ₁² / pixels is
+//     S = S̄_opt · (1+m)² · (sec φ + tan φ),        S̄_opt = ln(ρ) / (2 tanθ),
+// largest at the frustum's side faces: the lexel measure (the widest cross-section) exceeds
+// Lloyd's S̄ (the texel's extents along x and z, which leave the shear out) by sec φ + tan φ,
+// √3 for a 60° square frame.
+double OverheadLogPsmEffectiveStorage(const ViewFrustum& visible, double margin) {
+    const double tanPhi = visible.aspect * visible.TanHalfFovY();
+    return OptimalStorageFactor(visible) * (1.0 + margin) * (1.0 + margin) *
+           (std::sqrt(1.0 + tanPhi * tanPhi) + tanPhi);
+}
+
+TEST(LogPsm, MeasuredStorageFactorOnABoxSceneIsWithinTenPercentOfItsAnalyticValue) {
+    const Scene scene = BoxScene({Light::Type::kDirectional, {}, {0.0, -1.0, 0.0}});
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Evaluator evaluator(scene, *backend);
+    EvaluationOptions options;
+    options.methods = {"logpsm", "lispsm-tight", "focused-tight"};
+    const LightOutcome o = evaluator.Evaluate(scene.lights.front(), options);
+    const ViewFrustum visible = VisibleFrustum(evaluator);
+    // The light overhead (γ = 90°): LogPSM's S̄ (Lloyd's measure) is S̄_opt for the visible depths.
+    const glm::dvec3 esToLight(0.0, 1.0, 0.0);
+    EXPECT_NEAR(LogPsmStorageFactor(visible, esToLight), OptimalStorageFactor(visible),
+                1e-12 * OptimalStorageFactor(visible));
+    const double analytic = OverheadLogPsmEffectiveStorage(visible, BaselineContext{}.margin);
+    const MethodOutcome& log = o.methods[0];
+    EXPECT_LE(log.texels, scene.shadowMap.width * scene.shadowMap.height);
+    EXPECT_GE(log.texels, scene.shadowMap.width * scene.shadowMap.height - 256);
+    EXPECT_NEAR(log.storageFactor, analytic, 0.10 * analytic)
+        << "visible depths " << visible.nearPlane << " to " << visible.farPlane;
+    // Both other single maps need more: LiSPSM's η = 0 warp, and no warp.
+    EXPECT_GT(o.methods[1].storageFactor, 2.0 * log.storageFactor);
+    EXPECT_GT(o.methods[2].storageFactor, 20.0 * log.storageFactor);
+    std::cout << "[ logpsm   ] box, overhead: measured " << log.storageFactor << ", analytic "
+              << analytic << " (S̄_opt " << OptimalStorageFactor(visible) << ", visible depths "
+              << visible.nearPlane << " to " << visible.farPlane << "); lispsm-tight "
+              << o.methods[1].storageFactor << ", focused-tight " << o.methods[2].storageFactor
+              << "\n";
+}
+
+TEST(LogPsm, OverheadLightSplitsTheTexelsAsTheOptimalParameterization) {
+    // Appendix C: M_x / M_z = a / (ln(f/n) / (2 tanθ)) at one texel per pixel.
+    const Scene scene = BoxScene({Light::Type::kDirectional, {}, {0.0, -1.0, 0.0}});
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Readback readback = RenderReadback(*backend, scene.camera, scene.readback);
+    const Bounds bounds = scene.geometry.ComputeBounds();
+    const LightSpace lightSpace(scene.lights.front(), bounds);
+    const BaselineContext context = MakeBaselineContext(
+        scene, lightSpace, bounds, readback.wsRelevant, readback.wsRelevantHull);
+    BaselineDiagnostics diagnostics;
+    const LogPsmMap map = LogPsmLightMap(context, &diagnostics);
+    EXPECT_TRUE(map.logarithmic) << diagnostics.fallback;
+    double zLo = std::numeric_limits<double>::infinity(), zHi = 0.0;
+    for (const glm::dvec3& x : readback.wsRelevant) {
+        zLo = std::min(zLo, PlanarEyeDepth(scene.camera, x));
+        zHi = std::max(zHi, PlanarEyeDepth(scene.camera, x));
+    }
+    // The columns' lengths (OverheadLogPsmEffectiveStorage above): A_x / A_z = 2 tanθ / ln ρ over
+    // √(1 + tan²φ), the t-column's shear at the side faces; ρ the visible depth ratio (the margin
+    // grows both axes alike).
+    const double tanPhi = std::tan(glm::radians(30.0));
+    const double expected =
+        2.0 * std::tan(glm::radians(30.0)) / std::log(zHi / zLo) / std::sqrt(1.0 + tanPhi * tanPhi);
+    EXPECT_NEAR(map.aliasingRatio, expected, 0.01 * expected);
+    // Every visible point lands in the map.
+    for (const glm::dvec3& x : readback.wsRelevant) {
+        const auto u = map.warp.Forward(lightSpace.ToLight(x));
+        ASSERT_TRUE(u);
+        EXPECT_GE(u->x, 0.0);
+        EXPECT_GE(u->y, 0.0);
+        EXPECT_LE(u->x, map.resolution.width);
+        EXPECT_LE(u->y, map.resolution.height);
+    }
+}
+
+TEST(WarpedMethods, GetTheSingleMapsTexelsAndCoverWhatTheirBaseCovers) {
+    const Scene scene = cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) / ".." /
+                                                "tests/cases/data/spatial_small.json");
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Evaluator evaluator(scene, *backend);
+    EvaluationOptions options;
+    options.methods = {"focused-tight", "lispsm-tight", "rtw", "rtw-lagrange", "logpsm"};
+    options.keepBuffers = true;
+    const std::int64_t texels =
+        static_cast<std::int64_t>(scene.shadowMap.width) * scene.shadowMap.height;
+    for (const Light& light : scene.lights) {
+        const LightOutcome o = evaluator.Evaluate(light, options);
+        const MethodOutcome& focused = o.methods[0];
+        const MethodOutcome& lispsm = o.methods[1];
+        for (std::size_t m = 2; m < o.methods.size(); ++m) {
+            const MethodOutcome& w = o.methods[m];
+            SCOPED_TRACE(w.method);
+            ASSERT_TRUE(w.map.warp);
+            EXPECT_FALSE(w.map.warp->IsLinear());
+            if (w.method == "logpsm") {
+                EXPECT_LE(w.texels, texels);
+                EXPECT_GE(w.texels,
+                          texels - std::max(w.map.resolution.width, w.map.resolution.height));
+                // The same warp frame fitted to the same visible points (in log coordinates).
+                EXPECT_LE(w.uncovered,
+                          std::max<std::int64_t>(2 * lispsm.uncovered, o.receiverPixels / 1000));
+            } else {
+                EXPECT_EQ(w.texels, texels);
+                EXPECT_EQ(w.uncovered, focused.uncovered);  // [0, W] onto [0, W]: the same cover
+                EXPECT_EQ(w.matrix.p4, focused.matrix.p4);
+            }
+            EXPECT_TRUE(std::isfinite(w.h));
+            EXPECT_GT(w.perspectiveMax, 0.0);
+            EXPECT_EQ(w.shades.size(), focused.shades.size());
+        }
+    }
+}
+
+}  // namespace
+}  // namespace lexel::spatial
