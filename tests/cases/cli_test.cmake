@@ -443,7 +443,7 @@ expect_run(0 "\ncamera path, light 1: P changed in 2 of 8 poses [^\n]*\n" "^$"
 # lexel sweep: Table 1 as published and the fair comparison, as JSON, Markdown, CSV and text.
 set(reportMethods optimal-report focused lispsm plane-optimal normal psm tsm-report)
 set(fairMethods optimal optimal-refined focused-tight lispsm-tight lispsm-engine psm-tight
-    plane-optimal normal optimal-shear tsm rtw rtw-lagrange logpsm)
+    plane-optimal normal optimal-shear rtw rtw-lagrange logpsm tsm)
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" sweep "${small}" --lights 3 --format json)
 string(JSON sweepCase GET "${lastStdout}" case)
 string(JSON sweepLights GET "${lastStdout}" lights)
