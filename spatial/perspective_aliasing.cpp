@@ -13,12 +13,9 @@ namespace lexel::spatial {
 // J_l in texels per world unit. The texel's beam cross-section is J_l⁻¹, whose largest singular
 // value is σ_max(J_l) / |det J_l| (σ_min σ_max = |det|), with σ_max² = (T + √(T² − 4 det²)) / 2,
 // T = ‖J_l‖_F²: no cancellation for the small singular value.
-double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
-                           const LightMatrix& matrix, const glm::dvec3& wsPoint) {
-    const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
-    if (!InFront(matrix.p4, lsX)) return std::numeric_limits<double>::infinity();
-    glm::dvec3 du1dX, du2dX;
-    matrix.MapJacobian(lsX, &du1dX, &du2dX);
+double PerspectiveAliasingOfRows(const Camera& camera, const LightSpace& lightSpace,
+                                 const glm::dvec3& du1dX, const glm::dvec3& du2dX,
+                                 const glm::dvec3& wsPoint) {
     const glm::dvec3 wsRay = -lightSpace.DirectionToLight(wsPoint);
     const glm::dvec3 helper =
         std::abs(wsRay.x) < 0.5 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
@@ -38,6 +35,15 @@ double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
     const double wsPixelWidth = 2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) *
                                 PlanarEyeDepth(camera, wsPoint) / camera.resolution.height;
     return wsTexelWidth / wsPixelWidth;
+}
+
+double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
+                           const LightMatrix& matrix, const glm::dvec3& wsPoint) {
+    const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
+    if (!InFront(matrix.p4, lsX)) return std::numeric_limits<double>::infinity();
+    glm::dvec3 du1dX, du2dX;
+    matrix.MapJacobian(lsX, &du1dX, &du2dX);
+    return PerspectiveAliasingOfRows(camera, lightSpace, du1dX, du2dX, wsPoint);
 }
 
 }  // namespace lexel::spatial

@@ -23,4 +23,11 @@ namespace lexel::spatial {
 double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
                            const LightMatrix& matrix, const glm::dvec3& wsPoint);
 
+// The same factor for any map whose rows ∂u¹/∂X, ∂u²/∂X (texels per light-space unit) at the
+// point are given: a linear matrix's (LightMatrix::MapJacobian) or a warp's (MapWarp::Jacobian).
+// +inf where they are singular on the plane ⊥ the light's ray; throws nothing.
+double PerspectiveAliasingOfRows(const Camera& camera, const LightSpace& lightSpace,
+                                 const glm::dvec3& du1dX, const glm::dvec3& du2dX,
+                                 const glm::dvec3& wsPoint);
+
 }  // namespace lexel::spatial
