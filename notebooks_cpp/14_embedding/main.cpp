@@ -64,7 +64,10 @@ int main(int argc, char** argv) {
     const std::vector<float> depth = renderer.DepthBuffer();
     const Camera& camera = renderer.camera();
     const Readback readback =
-        MakeReadback(DepthBuffer{res, depth, camera.ClipFromView() * camera.ViewFromWorld()});
+        MakeReadback(DepthBuffer{.resolution = res,
+                                 .depth = depth,
+                                 .clipFromWorld = camera.ClipFromView() * camera.ViewFromWorld(),
+                                 .convention = {}});
 
     // 2. The light's frame over the scene's bounds, the standard map and the renderer's mask.
     const Bounds wsBounds = renderer.SceneBounds();
