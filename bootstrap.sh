@@ -17,7 +17,7 @@ fi
 packages=(build-essential cmake ninja-build pkg-config
           libceres-dev libglm-dev libopenimageio-dev openimageio-tools libcli11-dev nlohmann-json3-dev
           libgtest-dev googletest libbenchmark-dev libcairo2-dev
-          libtbb-dev libembree-dev libassimp-dev assimp-testmodels libqhull-dev
+          libtbb-dev libembree-dev libassimp-dev assimp-testmodels libtinygltf-dev libqhull-dev
           libegl-dev libopengl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
           clang-14 libclang-rt-14-dev clang-format-14)
 # The line before the last is the OpenGL backend (spatial/gl): EGL and GL through GLVND, libepoxy
@@ -77,7 +77,7 @@ sanitizer_build() {
         -DLEXEL_FUZZ=ON -DLEXEL_WERROR="$werror" -DLEXEL_GL=OFF -DLEXEL_BUILD_BENCHMARKS=OFF \
         -DLEXEL_BUILD_NOTEBOOKS=OFF
     cmake --build build-asan --parallel "$(nproc)" --target input_tests \
-        flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer
+        flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer ply_fuzzer gltf_fuzzer
 }
 sanitizer_tests() {
     (cd build-asan && ctest --output-on-failure --parallel "$(nproc)" -L '^(input|fuzz)$')

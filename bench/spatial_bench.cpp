@@ -130,14 +130,19 @@ const RayCaster& Caster() {
     return caster;
 }
 
-// One shadow ray per pixel of a 750² grid over the floor, towards the light.
-const std::vector<ShadowRay>& Rays() {
-    static const std::vector<ShadowRay> rays = [] {
+struct WorldRay {
+    glm::dvec3 origin, direction;
+    double tNear, tFar;
+};
+
+// One shadow ray per pixel of a 750² grid over the floor, towards the light, in world units.
+const std::vector<WorldRay>& WorldRays() {
+    static const std::vector<WorldRay> rays = [] {
         const double sceneRadius = Scene().ComputeBounds().Radius();
         const double originOffset = 1e-5 * sceneRadius;  // along the floor normal, world units
         const double tNear = 1e-4 * sceneRadius;         // along the unit direction, world units
         const glm::dvec3 wsLight = 100.0 * glm::normalize(glm::dvec3(0.3, 0.9, 0.3));
-        std::vector<ShadowRay> out;
+        std::vector<WorldRay> out;
         out.reserve(static_cast<std::size_t>(kFrameSide) * kFrameSide);
         for (int j = 0; j < kFrameSide; ++j)
             for (int i = 0; i < kFrameSide; ++i) {
@@ -147,9 +152,19 @@ const std::vector<ShadowRay>& Rays() {
                 const glm::dvec3 wsOrigin = wsPoint + glm::dvec3(0.0, originOffset, 0.0);
                 const glm::dvec3 toLight = wsLight - wsOrigin;
                 const double distance = glm::length(toLight);
-                out.push_back({glm::vec3(wsOrigin), glm::vec3(toLight / distance),
-                               static_cast<float>(tNear), static_cast<float>(distance - tNear)});
+                out.push_back({wsOrigin, toLight / distance, tNear, distance - tNear});
             }
+        return out;
+    }();
+    return rays;
+}
+
+// The same rays as the batch form takes them (in the caster's unit frame, float).
+const std::vector<ShadowRay>& Rays() {
+    static const std::vector<ShadowRay> rays = [] {
+        std::vector<ShadowRay> out;
+        for (const WorldRay& r : WorldRays())
+            out.push_back(Caster().ToShadowRay(r.origin, r.direction, r.tNear, r.tFar));
         return out;
     }();
     return rays;
@@ -210,12 +225,11 @@ BENCHMARK(BM_OccludedBatchShuffled)
 // rtcOccluded1 from one thread.
 void BM_OccludedSingleOneThread(benchmark::State& state) {
     const RayCaster& caster = Caster();
-    const std::vector<ShadowRay>& rays = Rays();
+    const std::vector<WorldRay>& rays = WorldRays();
     for (auto _ : state) {
         std::size_t shadowed = 0;
-        for (const ShadowRay& r : rays)
-            shadowed +=
-                caster.Occluded(glm::dvec3(r.wsOrigin), glm::dvec3(r.wsDirection), r.tNear, r.tFar);
+        for (const WorldRay& r : rays)
+            shadowed += caster.Occluded(r.origin, r.direction, r.tNear, r.tFar);
         benchmark::DoNotOptimize(shadowed);
     }
     state.SetItemsProcessed(state.iterations() * rays.size());
@@ -225,13 +239,12 @@ BENCHMARK(BM_OccludedSingleOneThread)->Unit(benchmark::kMillisecond)->UseRealTim
 // rtcOccluded1 over all TBB workers: the fair comparison with the batch form.
 void BM_OccludedSingleParallel(benchmark::State& state) {
     const RayCaster& caster = Caster();
-    const std::vector<ShadowRay>& rays = Rays();
+    const std::vector<WorldRay>& rays = WorldRays();
     std::vector<std::uint8_t> occluded(rays.size());
     for (auto _ : state) {
         tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
-            const ShadowRay& r = rays[i];
-            occluded[i] =
-                caster.Occluded(glm::dvec3(r.wsOrigin), glm::dvec3(r.wsDirection), r.tNear, r.tFar);
+            const WorldRay& r = rays[i];
+            occluded[i] = caster.Occluded(r.origin, r.direction, r.tNear, r.tFar);
         });
         benchmark::DoNotOptimize(occluded.data());
     }

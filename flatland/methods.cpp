@@ -5,6 +5,7 @@
 #include <functional>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include "lexel/flatland/angle_solvers.h"
 #include "lexel/flatland/baselines.h"
@@ -23,6 +24,27 @@ const std::vector<std::string>& FlatlandMethodNames() {
         "normal",           "psm",          "psm-thesis",
         "plane-optimal",    "split-greedy", "split-dp"};
     return names;
+}
+
+std::string_view FlatlandMethodDescription(std::string_view name) {
+    // One line per method of FlatlandMethodNames (README.md, "Flatland methods", says more).
+    static constexpr std::pair<std::string_view, std::string_view> kDescriptions[] = {
+        {"optimal-l1", "exact L1 optimum: the roots of one quadratic in tan x"},
+        {"optimal-l2", "exact L2 optimum: a quartic, solved by companion matrix"},
+        {"optimal-l2-newton", "thesis Algorithm 1: Newton with seeded random restarts"},
+        {"optimal-l2-ceres", "Ceres least squares over the angle"},
+        {"optimal-linf", "exact L-infinity optimum over the upper envelope of lines"},
+        {"sweep", "brute force over all valid angles, best cell refined (for --metric)"},
+        {"normal", "the axis bisecting the light's sweep of the visible points"},
+        {"psm", "Stamminger & Drettakis: the lexel plane that samples like a PSM"},
+        {"psm-thesis", "the thesis's reading of PSM, used in its tables"},
+        {"plane-optimal", "Theorem 1 for the case's first segment"},
+        {"split-greedy", "thesis Algorithm 2: greedy frustum merges, Lagrange lexel allocation"},
+        {"split-dp", "the exact frustum split by dynamic programming, Lagrange allocation"},
+    };
+    for (const auto& [method, description] : kDescriptions)
+        if (method == name) return description;
+    return {};
 }
 
 bool IsFlatlandMethod(std::string_view name) {

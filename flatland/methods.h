@@ -46,6 +46,8 @@ struct CaseReport {
 // All method names, in report order.
 const std::vector<std::string>& FlatlandMethodNames();
 bool IsFlatlandMethod(std::string_view name);
+// One line saying what the method is (for `lexel --help`); empty for an unknown name.
+std::string_view FlatlandMethodDescription(std::string_view name);
 
 // Runs `methods` (names from FlatlandMethodNames; std::invalid_argument otherwise) on the scene.
 // Throws DomainError as CheckSceneGeometry, RunSamplingPass and SplitLightFrustum do.

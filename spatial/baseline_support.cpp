@@ -166,8 +166,11 @@ double LightPlaneOffset(const BaselineContext& context, const NormalAxis& axis) 
     };
     for (const glm::dvec3& x : context.wsBounds.Corners()) consider(x);
     for (const glm::dvec3& x : context.wsRelevant) consider(x);
-    // Half the nearest depth: strictly positive, and below every point the map must see.
-    return std::isfinite(smallest) ? 0.5 * smallest : 1e-9;
+    // Half the nearest depth: strictly positive, and below every point the map must see. When
+    // no point is in front, any positive offset will do; 1e-9 scene radii keeps it scale-free.
+    if (std::isfinite(smallest)) return 0.5 * smallest;
+    const double radius = context.wsBounds.Radius();
+    return radius > 0.0 && std::isfinite(radius) ? 1e-9 * radius : 1e-9;
 }
 
 std::vector<glm::dvec3> FocusBody(const BaselineContext& context, const NormalAxis& axis) {

@@ -134,18 +134,29 @@ std::optional<LightMatrix> PlaneOptimalProjectiveMatrix(const BaselineContext& c
     const double nLen = glm::length(n);
     if (!(nLen > 0.0)) return fail("the floor plane normal is zero");
     const glm::dvec3 unitN = n / nLen;
-    const glm::dvec3 wsOnPlane = -(floorPlane.w / nLen) * unitN;
+    // The construction runs in the scene's unit frame x = c + R·x' (c, R: the bounds' centre and
+    // radius), where the spanning points are one unit apart and the light O(1) or more away
+    // whatever the scene's size and distance from the origin: [B, L] stays well conditioned and
+    // the determinant test below is dimensionless.
+    const glm::dvec3 wsSceneCenter = context.wsBounds.Center();
+    const double radius = context.wsBounds.Radius() > 0.0 ? context.wsBounds.Radius() : 1.0;
+    glm::dmat4 worldFromUnit(radius);
+    worldFromUnit[3] = glm::dvec4(wsSceneCenter, 1.0);
+    glm::dmat4 unitFromWorld(1.0 / radius);
+    unitFromWorld[3] = glm::dvec4(-wsSceneCenter / radius, 1.0);
+    // The floor n·x + d = 0 is n·x' + d' = 0 there; its point nearest the scene's centre:
+    const double unitD = (glm::dot(unitN, wsSceneCenter) + floorPlane.w / nLen) / radius;
+    const glm::dvec3 unitOnPlane = -unitD * unitN;
     glm::dvec3 t1, t2;
     PlaneBasis(unitN, &t1, &t2);
-    // Spanning points a bounds radius apart keep [B, L] well conditioned at scene scale.
-    const double spread = std::max(context.wsBounds.Radius(), 1.0);
     const LightSpace& ls = *context.lightSpace;
-    const glm::dvec4 light =
-        ls.IsPoint() ? glm::dvec4(ls.light().position, 1.0) : glm::dvec4(ls.light().direction, 0.0);
-    glm::dmat4 basis;  // columns: B (three plane points), L
-    basis[0] = glm::dvec4(wsOnPlane, 1.0);
-    basis[1] = glm::dvec4(wsOnPlane + spread * t1, 1.0);
-    basis[2] = glm::dvec4(wsOnPlane + spread * t2, 1.0);
+    const glm::dvec4 light = ls.IsPoint()
+                                 ? glm::dvec4((ls.light().position - wsSceneCenter) / radius, 1.0)
+                                 : glm::dvec4(ls.light().direction, 0.0);
+    glm::dmat4 basis;  // columns: B (three plane points), L, in the unit frame
+    basis[0] = glm::dvec4(unitOnPlane, 1.0);
+    basis[1] = glm::dvec4(unitOnPlane + t1, 1.0);
+    basis[2] = glm::dvec4(unitOnPlane + t2, 1.0);
     basis[3] = light / glm::length(light);
     // Columns normalized, so |det| is a dimensionless measure of how far L is from Π: below 1e-12
     // the light lies on the floor plane and every floor point maps to one line of the map.
@@ -154,11 +165,11 @@ std::optional<LightMatrix> PlaneOptimalProjectiveMatrix(const BaselineContext& c
     if (!(std::abs(glm::determinant(unit)) > 1e-12))
         return fail("the light lies on the floor plane");
 
-    const glm::dmat4 screenFromWorld = context.camera.ScreenFromWorld(context.map);
-    const glm::dmat4 qb = screenFromWorld * basis;  // columns Q·B_k (and Q·L, dropped)
+    const glm::dmat4 screenFromUnit = context.camera.ScreenFromWorld(context.map) * worldFromUnit;
+    const glm::dmat4 qb = screenFromUnit * basis;  // columns Q·B_k (and Q·L, dropped)
     glm::dmat4 target = qb;
     target[3] = glm::dvec4(0.0);  // P·L = 0
-    const glm::dmat4 rows = target * glm::inverse(basis);
+    const glm::dmat4 rows = target * glm::inverse(basis) * unitFromWorld;
     glm::dvec3 wsCenter = context.wsBounds.Center();
     if (!context.wsRelevant.empty()) {
         wsCenter = glm::dvec3(0.0);

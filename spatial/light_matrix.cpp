@@ -59,17 +59,20 @@ std::optional<LightMatrix> FromScreenRows(const LightSpace& lightSpace,
         // orthonormal, so the covector transforms like a vector).
         glm::dvec3 p(glm::dot(glm::dvec3(linear[0][0], linear[1][0], linear[2][0]), rXyz),
                      glm::dot(glm::dvec3(linear[0][1], linear[1][1], linear[2][1]), rXyz), 0.0);
-        const double scale = glm::length(rXyz) + std::abs(rW);
         if (lightSpace.IsPoint()) {
             const glm::dvec3 e3(linear[0][2], linear[1][2], linear[2][2]);
             p.z = glm::dot(e3, rXyz);
-            const double atLight = glm::dot(rXyz, lightSpace.light().position) + rW;
-            if (std::abs(atLight) > 1e-9 * scale * (1.0 + glm::length(lightSpace.light().position)))
+            // r·L + rW = 0 up to rounding: relative to the terms' magnitude |r||L| + |rW|, so the
+            // test is the same at any scale and distance from the origin.
+            const glm::dvec3& wsLight = lightSpace.light().position;
+            const double atLight = glm::dot(rXyz, wsLight) + rW;
+            const double terms = glm::length(rXyz) * glm::length(wsLight) + std::abs(rW);
+            if (std::abs(atLight) > 1e-9 * terms)
                 return fail("row " + std::to_string(r + 1) +
                             " does not send the point light to infinity");
         } else {
             const double alongLight = glm::dot(rXyz, lightSpace.light().direction);
-            if (std::abs(alongLight) > 1e-9 * scale)
+            if (std::abs(alongLight) > 1e-9 * glm::length(rXyz))
                 return fail("row " + std::to_string(r + 1) +
                             " does not send the directional light to infinity");
             // p·X(c) = r·[c; 1] at the centre fixes the third component.

@@ -44,7 +44,9 @@ LightSpace::LightSpace(const Light& light, const Bounds& wsBounds) : light_(ligh
         light_.direction = light.direction / len;
         e3_ = light_.direction;
         origin_ = wsBounds.Center();
-        s_ = 2.0 * std::max(wsBounds.Radius(), 1e-9);
+        // Twice the radius, a length of the scene's own scale (any positive s serves one point).
+        const double radius = wsBounds.Radius();
+        s_ = radius > 0.0 ? 2.0 * radius : 1.0;
     }
     PlaneBasis(e3_, &e1_, &e2_);  // right-handed: e1 × e2 = e3
 }

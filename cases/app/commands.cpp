@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/fit_report.h"
 #include "lexel/cases/report/flatland_report.h"
+#include "lexel/cases/report/html_report.h"
 #include "lexel/cases/report/lowres_report.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/report/spatial_report.h"
@@ -33,7 +35,10 @@
 #include "lexel/cases/run/timing.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/mesh_frame.h"
+#include "lexel/spatial/harness/mesh_loader.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/primitives.h"
 
 #ifndef LEXEL_SOURCE_DATA_DIR
 #define LEXEL_SOURCE_DATA_DIR ""
@@ -53,6 +58,32 @@ fs::path DataDirectory() {
         if (fs::is_directory(installed / "published", error)) return installed;
     }
     return fs::path(LEXEL_SOURCE_DATA_DIR);
+}
+
+namespace {
+
+std::string MethodLines(const std::vector<std::string>& names,
+                        std::string_view (*describe)(std::string_view)) {
+    std::size_t width = 0;
+    for (const std::string& name : names) width = std::max(width, name.size());
+    std::string lines;
+    for (const std::string& name : names)
+        lines += "  " + name + std::string(width + 2 - name.size(), ' ') +
+                 std::string(describe(name)) + '\n';
+    return lines;
+}
+
+}  // namespace
+
+std::string MethodsHelp(bool flatland, bool spatial) {
+    std::string help;
+    if (flatland)
+        help += "Flatland methods (default: all):\n" +
+                MethodLines(flatland::FlatlandMethodNames(), &flatland::FlatlandMethodDescription);
+    if (spatial)
+        help += std::string(flatland ? "\n" : "") + "3D methods (default: all):\n" +
+                MethodLines(spatial::SpatialMethodNames(), &spatial::SpatialMethodDescription);
+    return help;
 }
 
 namespace {
@@ -145,6 +176,8 @@ int RunSpatial(const RunFlags& flags) {
                                   (file.starts_with(name + "_light") && file.ends_with(".png")) ||
                                   file == "index.html";
                        }});
+    Progress bar("run " + scene.name, SpatialRunSteps(scene, options), "steps");
+    options.onStep = [&] { bar.Step(); };
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
     if (flags.format == "json")
         std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
@@ -153,13 +186,19 @@ int RunSpatial(const RunFlags& flags) {
     else
         std::cout << SpatialRunText(scene, run);
     if (!out) return 0;
-    const int images =
-        out->Writing([&] { return WriteSpatialImages(out->StagingDir(), scene, run); });
+    Progress imageBar("run " + scene.name + ": images", SpatialImageCount(run), "images");
+    const std::vector<SpatialImageFile> images = out->Writing([&] {
+        return WriteSpatialImages(out->StagingDir(), scene, run, [&] { imageBar.Step(); });
+    });
     out->WriteText(scene.name + ".json", SpatialRunJson(scene, run).dump(2) + "\n");
     out->WriteText(scene.name + ".csv", SpatialRunCsv(run));
+    out->WriteText("index.html",
+                   SpatialRunHtml(scene, run, images,
+                                  {{scene.name + ".json", "every number of this run (JSON)"},
+                                   {scene.name + ".csv", "one row per light and method (CSV)"}}));
     out->Commit();
-    std::cerr << "lexel: wrote " << images << " images and " << scene.name << ".json/.csv to "
-              << flags.outDir << '\n';
+    std::cerr << "lexel: wrote " << images.size() << " images, index.html and " << scene.name
+              << ".json/.csv to " << flags.outDir << '\n';
     return 0;
 }
 
@@ -210,13 +249,19 @@ int RunFlatland(const RunFlags& flags) {
         for (std::size_t i = 0; i < reports.size(); ++i)
             std::cout << (i ? "\n" : "") << CaseTable(reports[i]);
     if (!out) return 0;
+    std::vector<LinkedFile> files;
     for (const auto& r : reports) {
         out->WriteText(r.caseName + ".json", CaseReportJson(r).dump(2) + "\n");
         out->WriteText(r.caseName + ".csv", RunCsv(std::span(&r, 1)));
         out->WriteText(r.caseName + ".md", CaseMarkdown(r));
+        files.push_back({r.caseName + ".json", "every number of " + r.caseName + " (JSON)"});
+        files.push_back({r.caseName + ".csv", "one row per method (CSV)"});
+        files.push_back({r.caseName + ".md", "the table in Markdown"});
     }
+    out->WriteText("index.html", FlatlandRunHtml(reports, files));
     out->Commit();
-    std::cerr << "lexel: wrote " << reports.size() * 3 << " files to " << flags.outDir << '\n';
+    std::cerr << "lexel: wrote index.html and " << reports.size() * 3 << " files to "
+              << flags.outDir << '\n';
     return 0;
 }
 
@@ -231,14 +276,15 @@ int RunCommand(const RunFlags& flags) {
 namespace {
 
 // For `lexel sweep --out`: the frame, errors and per-cascade maps of the partitioned methods for
-// the sweep's first light; the number of images.
-int WriteFirstLightCascades(const fs::path& dir, const spatial::Scene& scene, const SweepResult& r,
-                            BackendKind backend) {
+// the sweep's first light.
+std::vector<SpatialImageFile> WriteFirstLightCascades(const fs::path& dir,
+                                                      const spatial::Scene& scene,
+                                                      const SweepResult& r, BackendKind backend) {
     SpatialRunOptions options;
     options.backend = backend;
     for (const std::string& m : r.methods)
         if (spatial::IsPartitionedMethod(m)) options.methods.push_back(m);
-    if (options.methods.empty() || r.lights.empty()) return 0;
+    if (options.methods.empty() || r.lights.empty()) return {};
     options.mapTruth = false;
     options.keepBuffers = true;
     spatial::Scene first = scene;
@@ -301,21 +347,33 @@ int SweepCommand(const SweepFlags& flags) {
     out->WriteText("table1.csv", SweepCsv(r, report));
     out->WriteText("sweep.json", SweepJson(r).dump(2) + "\n");
     out->WriteText("lights.csv", SweepLightsCsv(r));
+    std::vector<LinkedFile> files = {
+        {"table1.md", "the tables above in Markdown"},
+        {"table1.csv", "the tables above, one row per table, set of lights and method (CSV)"},
+        {"sweep.json", "every number of the tables (JSON)"},
+        {"lights.csv",
+         "one row per light: its position, counted pixels, and every method's "
+         "misclassified pixels, h and time"}};
     std::string also;
+    std::vector<SpatialImageFile> images;
     if (study) {
         out->WriteText("cascades.csv", CascadeStudyCsv(*study));
         out->Writing(
             [&] { WriteCascadeStudyPlot(out->Staged("cascades.png").string(), *study, r); });
-        const int images = WithCaseName(casePath, [&] {
+        images = WithCaseName(casePath, [&] {
             return out->Writing(
                 [&] { return WriteFirstLightCascades(out->StagingDir(), scene, r, backend); });
         });
-        also = ", cascades.csv, cascades.png and " + std::to_string(images) +
+        files.push_back({"cascades.csv", "mean misclassified pixels per method and k"});
+        files.push_back({"cascades.png", "the same as a plot"});
+        also = ", cascades.csv, cascades.png and " + std::to_string(images.size()) +
                " images of the first light";
     }
+    out->WriteText("index.html", SweepHtml(r, report, study ? &*study : nullptr,
+                                           study ? "cascades.png" : "", images, files));
     out->Commit();
-    std::cerr << "lexel: wrote table1.md, table1.csv, sweep.json, lights.csv" << also << " to "
-              << flags.outDir << '\n';
+    std::cerr << "lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv" << also
+              << " to " << flags.outDir << '\n';
     return 0;
 }
 
@@ -331,6 +389,8 @@ int TimingCommand(const TimingFlags& flags) {
     options.optimal = flags.optimizer;
     const ReportTiming report =
         LoadReportTiming(DataDirectory() / "published" / "report_timing.json");
+    Progress bar("timing", static_cast<std::size_t>(options.frames) + 1, "frames");
+    options.onFrameDone = [&] { bar.Step(); };
     const TimingRun run = WithCaseName(casePath, [&] { return RunTiming(scene, options); });
     if (flags.format == "json")
         std::cout << TimingJson(scene, run, report).dump(2) << '\n';
@@ -434,6 +494,65 @@ int StorageCommand(const StorageFlags& flags) {
     return 0;
 }
 
+namespace {
+
+// Bounds to 6 significant digits: "[x, y, z] .. [x, y, z], size [dx, dy, dz]".
+std::string BoundsText(const spatial::Bounds& bounds) {
+    const auto vec = [](const glm::dvec3& v) {
+        char text[96];
+        std::snprintf(text, sizeof text, "[%.6g, %.6g, %.6g]", v.x, v.y, v.z);
+        return std::string(text);
+    };
+    return vec(bounds.lo) + " .. " + vec(bounds.hi) + ", size " + vec(bounds.hi - bounds.lo);
+}
+
+// The case's mesh entries whose file is `meshPath` (the same file, however the paths are spelled).
+std::vector<SpatialMeshEntry> EntriesForMesh(const std::string& casePath,
+                                             const fs::path& meshPath) {
+    std::error_code error;
+    const fs::path mesh = fs::weakly_canonical(meshPath, error);
+    std::vector<SpatialMeshEntry> found, all = LoadSpatialMeshEntries(casePath);
+    for (const SpatialMeshEntry& entry : all)
+        if (fs::weakly_canonical(entry.file, error) == mesh) found.push_back(entry);
+    if (!found.empty()) return found;
+    std::string files;
+    for (const SpatialMeshEntry& entry : all)
+        files += (files.empty() ? "" : ", ") + entry.pointer + " " + entry.file.string();
+    throw InputError(
+        "--case: " + casePath + " has no mesh entry for " + meshPath.string() + " (" +
+        (files.empty() ? std::string("it has no mesh entries") : "its mesh entries: " + files) +
+        ")");
+}
+
+}  // namespace
+
+int MeshInfoCommand(const std::string& meshPath, const std::string& casePath) {
+    const std::vector<SpatialMeshEntry> entries =
+        casePath.empty() ? std::vector<SpatialMeshEntry>{} : EntriesForMesh(casePath, meshPath);
+    const spatial::LoadedMesh loaded = spatial::LoadMeshFile(meshPath);
+    std::ostringstream out;  // printed whole, after everything succeeded
+    out << "file: " << meshPath << "\nformat: " << loaded.format
+        << "\nvertices: " << loaded.mesh.positions.size()
+        << "\ntriangles: " << loaded.mesh.triangles.size()
+        << "\nbounds (file units): " << BoundsText(loaded.mesh.ComputeBounds()) << '\n';
+    if (entries.empty())
+        out << "up axis: y (the default; a case's mesh entry sets \"up\" and \"units\")\n";
+    for (const SpatialMeshEntry& entry : entries) {
+        const glm::dmat4 sceneFromFile = spatial::SceneFromFile(entry.frame);
+        out << casePath << " " << entry.pointer << ":\n  up axis: " << UpAxisName(entry.frame.up)
+            << ", units: " << FormatNumber(entry.frame.unitScale) << " scene units per file unit"
+            << "\n  bounds (scene axes and units): "
+            << BoundsText(spatial::TransformMesh(loaded.mesh, sceneFromFile).ComputeBounds())
+            << "\n  bounds (world, after the transform): "
+            << BoundsText(
+                   spatial::TransformMesh(loaded.mesh, entry.transform.Matrix() * sceneFromFile)
+                       .ComputeBounds())
+            << '\n';
+    }
+    std::cout << out.str();
+    return 0;
+}
+
 int InfoCommand(const std::string& version) {
     std::cout << version << '\n' << DescribeBackend(BackendKind::kCpu) << '\n';
     try {
@@ -469,7 +588,7 @@ int TablesCommand(const std::string& outDir, const std::string& casesDir) {
     std::cout << TablesText(results);
     for (const auto& [name, rows] : studies) std::cout << LowresText(name, rows) << '\n';
     const std::string summary = LowresSummary(results, lowres);
-    std::cout << summary;
+    std::cout << WrapText(summary);
 
     std::string markdown =
         TablesMarkdown(results) + "## Low-resolution decision (thesis 4.1.1, Fig. 4.1)\n\n";

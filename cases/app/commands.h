@@ -15,6 +15,9 @@ namespace lexel::cases {
 // cases/published under this directory.
 std::filesystem::path DataDirectory();
 
+// The method names with one line each, for --help: the flatland methods, the 3D methods, or both.
+std::string MethodsHelp(bool flatland, bool spatial);
+
 struct RunFlags {
     std::vector<std::string> cases;    // case files
     std::vector<std::string> methods;  // empty: all
@@ -65,6 +68,13 @@ struct StorageFlags {
     std::string outDir;                // empty: print only
 };
 int StorageCommand(const StorageFlags& flags);
+
+// A mesh file as lexel reads it: format, vertices, triangles and bounds in the file's units; with
+// a 3D case, for each of its geometry entries that loads the file, the entry's up axis and units
+// and the bounds after them (scene axes and units) and after the entry's transform (world).
+// Without a case the up axis printed is the default, y. Bad input (a mesh lexel refuses, a case
+// without an entry for the file) throws InputError or DomainError, nothing printed.
+int MeshInfoCommand(const std::string& meshPath, const std::string& casePath);
 
 // The version and the backends this build and machine offer (the GL renderer, or why none).
 int InfoCommand(const std::string& version);

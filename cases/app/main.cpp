@@ -12,6 +12,7 @@
 //   lexel storage --case CASE.json [--method NAME...] [--format ...] [--out DIR]
 //                                   every method's measured storage factor beside the analytic
 //   lexel info                                      version and backends (the GL renderer)
+//   lexel mesh-info FILE [--case CASE.json]     a mesh's format, triangles, bounds, placement
 //   (run and sweep take --backend cpu|gl for 3D cases)
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
@@ -64,7 +65,8 @@ int RunLexel(int argc, char** argv) {
     std::vector<std::string> casePaths, methods;
     std::string metric = "l1", format = "table", runOut;
     run->add_option("cases", casePaths, "Case files (JSON)")->required()->check(CLI::ExistingFile);
-    run->add_option("--method", methods, "Methods to run (default: all)");
+    run->add_option("--method", methods, "Methods to run (default: all; listed below)");
+    run->footer(lexel::cases::MethodsHelp(true, true));
     run->add_option("--metric", metric, "Metric the sweep minimizes")
         ->check(CLI::IsMember({"l1", "l2", "linf"}));
     run->add_option("--format", format, "Output format")
@@ -97,7 +99,9 @@ int RunLexel(int argc, char** argv) {
         ->add_option("--light-type", sweepLightType,
                      "Sweep point or directional lights (default: the case's light_sweep type)")
         ->check(CLI::IsMember({"point", "directional"}));
-    sweep->add_option("--methods,--method", sweepMethods, "Methods to run (default: all)");
+    sweep->add_option("--methods,--method", sweepMethods,
+                      "Methods to run (default: all; listed below)");
+    sweep->footer(lexel::cases::MethodsHelp(false, true));
     sweep->add_option("--format", sweepFormat, "Output format")
         ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
     sweep
@@ -169,13 +173,27 @@ int RunLexel(int argc, char** argv) {
             ->check(CLI::ExistingFile);
     for (const char* flag : {"--fov-y", "--aspect", "--near", "--far"})
         storageCase->excludes(storage->get_option(flag));
-    storage->add_option("--method", storageFlags.methods, "With --case: methods (default: all)");
+    storage->add_option("--method", storageFlags.methods,
+                        "With --case: methods (default: all; listed below)");
+    storage->footer(lexel::cases::MethodsHelp(false, true));
     storage->add_option("--format", storageFlags.format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
     storage
         ->add_option("--out", storageFlags.outDir,
                      "Also write storage.json, storage.csv and the figures (PNG) here")
         ->check(NonEmpty("a directory"));
+
+    auto* meshInfo = app.add_subcommand(
+        "mesh-info", "A mesh file's format, triangles and bounds, and its placement by a case");
+    std::string meshInfoFile, meshInfoCase;
+    meshInfo->add_option("file", meshInfoFile, "Mesh file (obj, off, stl, ply, gltf, glb)")
+        ->required()
+        ->check(NonEmpty("a mesh file"));
+    meshInfo
+        ->add_option("--case", meshInfoCase,
+                     "3D case: also the bounds after each of its entries for the file (up axis, "
+                     "units, transform)")
+        ->check(CLI::ExistingFile);
 
     auto* info = app.add_subcommand("info", "The version and the renderers available here");
 
@@ -242,6 +260,7 @@ int RunLexel(int argc, char** argv) {
                                         sweepFormat, sweepOut, sweepCascades, sweepBackend});
         if (*timing) return cases::TimingCommand(timingFlags);
         if (*storage) return cases::StorageCommand(storageFlags);
+        if (*meshInfo) return cases::MeshInfoCommand(meshInfoFile, meshInfoCase);
         if (*info) return cases::InfoCommand(std::string("lexel ") + LEXEL_VERSION);
         if (*tables) return cases::TablesCommand(tablesOut, casesDir);
         if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);

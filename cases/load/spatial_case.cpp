@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -18,6 +20,7 @@
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/generator.h"
 #include "lexel/spatial/harness/memory_estimate.h"
+#include "lexel/spatial/harness/mesh_frame.h"
 #include "lexel/spatial/harness/mesh_loader.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/primitives.h"
@@ -69,14 +72,13 @@ void CheckDepthRange(const JsonField& field, const spatial::Camera& camera) {
 }
 
 // Refuses a geometry entry whose transformed vertices reach beyond kMaxCoordinate (a scale or
-// translate too large; measured in double, before the float vertices would overflow to inf) or
-// collapse to one point (a scale so small that every float vertex coincides).
+// translate too large) or collapse to one point (a scale so small that every vertex coincides).
 void CheckEntryExtent(const JsonField& entry, const spatial::TriangleMesh& osMesh,
                       const spatial::Transform& transform, const spatial::TriangleMesh& wsMesh) {
     const JsonField field = entry.Has("transform") ? entry["transform"] : entry;
     const glm::dmat4 wsFromOs = transform.Matrix();
     double largest = 0.0;
-    for (const glm::vec3& osPoint : osMesh.positions)
+    for (const glm::dvec3& osPoint : osMesh.positions)
         largest =
             std::max(largest, LargestMagnitude(glm::dvec3(wsFromOs * glm::dvec4(osPoint, 1.0))));
     if (!(largest <= kMaxCoordinate))
@@ -84,8 +86,8 @@ void CheckEntryExtent(const JsonField& entry, const spatial::TriangleMesh& osMes
                    ", coordinates must be at most " + FormatNumber(kMaxCoordinate));
     const spatial::Bounds wsBounds = wsMesh.ComputeBounds();
     if (!wsBounds.Empty() && !(wsBounds.Radius() > 0.0))
-        field.Fail("the transformed geometry collapses to the point " + FormatVec(wsBounds.lo) +
-                   " (its float vertices coincide)");
+        field.Fail("the transformed geometry collapses to the point " +
+                   FormatVec(wsBounds.Center()) + " (its extent rounds to zero)");
 }
 
 spatial::Resolution ReadResolution(const JsonField& field) {
@@ -148,6 +150,73 @@ spatial::Transform ReadTransform(const nlohmann::json& document, const JsonField
         }
     }
     return t;
+}
+
+// The axes and units of a mesh entry's file: `up` ("y" or "z") and `units` (a unit name or a
+// positive number of scene units per file unit); both only in a mesh entry.
+spatial::MeshFrame ReadMeshFrame(const nlohmann::json& document, const JsonField& entry) {
+    spatial::MeshFrame frame;
+    for (const char* key : {"up", "units"})
+        if (entry.Has(key) && !entry.Has("mesh"))
+            entry[key].Fail("only a mesh entry has a file whose axes and units it sets");
+    if (entry.Has("up")) {
+        const std::string up = entry["up"].String();
+        if (up != "y" && up != "z") entry["up"].Fail("must be y or z, got '" + up + "'");
+        frame.up = up == "z" ? spatial::UpAxis::kZ : spatial::UpAxis::kY;
+    }
+    if (entry.Has("units")) {
+        const JsonField units = entry["units"];
+        const nlohmann::json& raw = Raw(document, units);
+        if (raw.is_number()) {
+            frame.unitScale = units.Positive();
+        } else if (raw.is_string()) {
+            const std::string name = units.String();
+            const std::optional<double> scale = spatial::UnitScaleByName(name);
+            if (!scale)
+                units.Fail("must be one of " + std::string(spatial::kUnitNames) +
+                           " or a positive number, got '" + name + "'");
+            frame.unitScale = *scale;
+        } else {
+            units.Fail("must be a unit (" + std::string(spatial::kUnitNames) +
+                       ") or a positive number of scene units per file unit");
+        }
+    }
+    return frame;
+}
+
+// A mesh file's triangles in scene axes and units; `units` too large for the coordinates' bound
+// (kMaxCoordinate, measured in double) or so small that the float vertices coincide is refused.
+spatial::TriangleMesh MeshInSceneFrame(const JsonField& entry, const spatial::TriangleMesh& file,
+                                       const spatial::MeshFrame& frame) {
+    double largest = 0.0;
+    for (const glm::vec3& p : file.positions)
+        largest = std::max(largest, LargestMagnitude(glm::dvec3(p)) * frame.unitScale);
+    const JsonField field = entry.Has("units") ? entry["units"] : entry["mesh"];
+    if (!(largest <= kMaxCoordinate))
+        field.Fail("the mesh in these units reaches |x| = " + FormatNumber(largest) +
+                   ", coordinates must be at most " + FormatNumber(kMaxCoordinate));
+    spatial::TriangleMesh scene = spatial::TransformMesh(file, spatial::SceneFromFile(frame));
+    if (file.ComputeBounds().Radius() > 0.0 && !(scene.ComputeBounds().Radius() > 0.0))
+        field.Fail("the mesh in these units collapses to one point (its float vertices coincide)");
+    return scene;
+}
+
+// A geometry entry's keys and transform: exactly one of mesh and primitive.
+spatial::Transform ReadEntryTransform(const nlohmann::json& document, const JsonField& entry) {
+    entry.ExpectObject({}, {"mesh", "primitive", "transform", "up", "units"});
+    if (entry.Has("mesh") == entry.Has("primitive"))
+        entry.Fail("must have exactly one of mesh, primitive");
+    ReadMeshFrame(document, entry);  // up and units belong to a mesh entry
+    return entry.Has("transform") ? ReadTransform(document, entry["transform"])
+                                  : spatial::Transform{};
+}
+
+// A mesh entry's file, a relative path resolved against the case file's directory.
+std::filesystem::path ReadMeshPath(const JsonField& entry, const std::filesystem::path& baseDir) {
+    const JsonField mesh = entry["mesh"];
+    const std::filesystem::path file = mesh.String();
+    if (file.empty()) mesh.Fail("must be a file path, got an empty string");
+    return file.is_absolute() ? file : baseDir / file;
 }
 
 // The plane n·x + d = 0 of a transformed `plane` primitive, n unit on its +y side.
@@ -268,6 +337,29 @@ void CheckCameraOutside(const spatial::TriangleMesh& wsGeometry,
     }
 }
 
+// Refuses a scene outside the scale and offset range of spatial_case.h: smaller than
+// kMinSceneSize across, or centred more than kMaxCentreRadii bounding radii from the origin.
+void CheckSceneExtent(const std::string& field, const spatial::Bounds& wsBounds) {
+    const auto threeDigits = [](double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.3g", v);
+        return std::string(buffer);
+    };
+    const double across = 2.0 * wsBounds.Radius();
+    if (!(across >= kMinSceneSize))
+        throw InputError(field + ": the scene is " + threeDigits(across) +
+                         " across (its bounds' diagonal), must be at least " +
+                         FormatNumber(kMinSceneSize));
+    const double centreRadii = glm::length(wsBounds.Center()) / wsBounds.Radius();
+    if (!(centreRadii <= kMaxCentreRadii))
+        throw InputError(field + ": the scene's centre " + FormatVec(wsBounds.Center()) + " is " +
+                         threeDigits(centreRadii) +
+                         " bounding radii from the origin, must be at most " +
+                         threeDigits(kMaxCentreRadii) +
+                         " (farther, its coordinates keep under 8 digits within the scene); move "
+                         "it nearer the origin");
+}
+
 }  // namespace
 
 spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
@@ -320,22 +412,18 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     std::vector<std::size_t> entryEnd;  // per geometry entry: the end of its triangles
     if (root.Has("geometry")) {
         for (const JsonField& entry : root["geometry"].Array()) {
-            entry.ExpectObject({}, {"mesh", "primitive", "transform"});
-            if (entry.Has("mesh") == entry.Has("primitive"))
-                entry.Fail("must have exactly one of mesh, primitive");
-            const spatial::Transform transform = entry.Has("transform")
-                                                     ? ReadTransform(document, entry["transform"])
-                                                     : spatial::Transform{};
+            const spatial::Transform transform = ReadEntryTransform(document, entry);
             spatial::TriangleMesh osMesh;
             if (entry.Has("mesh")) {
-                const JsonField mesh = entry["mesh"];
-                const std::filesystem::path file = mesh.String();
-                if (file.empty()) mesh.Fail("must be a file path, got an empty string");
+                const spatial::MeshFrame frame = ReadMeshFrame(document, entry);
+                const std::filesystem::path file = ReadMeshPath(entry, baseDir);
+                spatial::TriangleMesh fileMesh;
                 try {
-                    osMesh = spatial::LoadMesh(file.is_absolute() ? file : baseDir / file);
+                    fileMesh = spatial::LoadMesh(file);
                 } catch (const DomainError& e) {
-                    mesh.Fail(e.what());
+                    entry["mesh"].Fail(e.what());
                 }
+                osMesh = MeshInSceneFrame(entry, fileMesh, frame);
             } else {
                 const JsonField primitive = entry["primitive"];
                 const std::string kind = primitive.String();
@@ -392,6 +480,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     if (wsBounds.Empty())
         throw InputError(std::string(root.Has("geometry") ? "/geometry" : "/") +
                          ": the scene has no geometry (give geometry entries or a generator)");
+    CheckSceneExtent(root.Has("geometry") ? "/geometry" : "/generator", wsBounds);
     CheckCameraOutside(scene.geometry, entryEnd, scene.camera, root["camera"]);
     if (root.Has("camera_path")) {
         const auto poses = root["camera_path"].Array(1);
@@ -481,6 +570,28 @@ spatial::Scene LoadSpatialScene(const std::filesystem::path& path) {
     } catch (const InputError& e) {
         throw InputError(path.string() + ": " + e.what());
     }
+}
+
+std::vector<SpatialMeshEntry> LoadSpatialMeshEntries(const std::filesystem::path& path) {
+    const nlohmann::json document = ParseJsonFile(path);
+    if (!IsSpatialCase(document))
+        throw InputError(path.string() +
+                         ": this is a flatland case (it has no \"lights\" or \"light_sweep\"); "
+                         "expected a 3D case");
+    std::vector<SpatialMeshEntry> entries;
+    try {
+        const JsonField root(document, "");
+        if (!root.Has("geometry")) return entries;
+        for (const JsonField& entry : root["geometry"].Array()) {
+            const spatial::Transform transform = ReadEntryTransform(document, entry);
+            if (!entry.Has("mesh")) continue;
+            entries.push_back({entry.Pointer(), ReadMeshPath(entry, path.parent_path()),
+                               ReadMeshFrame(document, entry), transform});
+        }
+    } catch (const InputError& e) {
+        throw InputError(path.string() + ": " + e.what());
+    }
+    return entries;
 }
 
 }  // namespace lexel::cases

@@ -7,9 +7,12 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/mesh_frame.h"
+#include "lexel/spatial/harness/primitives.h"
 #include "lexel/spatial/harness/scene.h"
 
 namespace lexel::cases {
@@ -17,11 +20,19 @@ namespace lexel::cases {
 // Screen, readback and shadow-map sides are at most this many pixels or texels.
 inline constexpr long long kMaxSide = 16384;
 
-// Every coordinate of the camera, its targets, the point lights and the transformed geometry is
-// at most this in magnitude (world units). Vertices are floats: within 1e15 their squares (1e30)
-// stay finite in float and the scene's products in double, so a bounding radius or a light
-// distance is a number, not inf.
+// The range of 3D scenes lexel accepts (world units). Every coordinate of the camera, its targets,
+// the point lights and the transformed geometry is at most kMaxCoordinate in magnitude; the
+// geometry is at least kMinSceneSize across (its bounds' diagonal); and the centre of its bounds
+// lies at most kMaxCentreRadii bounding radii from the origin. Inside this range 3D results do not
+// depend on the scene's scale or position (tests/spatial/harness/scale_invariance_test.cpp:
+// identical counts and samples, h to rounding): what works in float works in the scene's unit
+// frame (scene.h), squared lengths and the products of up to four stay normal doubles (1e±60),
+// and the case's coordinates keep about 8 significant digits within the scene (at 1e8 radii a
+// double's step is 2e-8 of the radius; measured on spatial_small: counts identical to 8e8 radii,
+// h within 1.2e-5 at 1e8).
 inline constexpr double kMaxCoordinate = 1e15;
+inline constexpr double kMinSceneSize = 1e-15;
+inline constexpr double kMaxCentreRadii = 1e8;
 // far / near of the camera is at most this. With the standard perspective depth mapping and a
 // depth buffer whose steps near 1 are 2^-24 (24-bit fixed or 32-bit float), the depth step at a
 // distance z is about z · (z / near) · 2^-24: at far = 1e5 · near that is 0.6% of the distance,
@@ -35,6 +46,21 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
                                     const std::filesystem::path& baseDir);
 // Reads the file; errors are prefixed with its path.
 spatial::Scene LoadSpatialScene(const std::filesystem::path& path);
+
+// A `mesh` geometry entry of a 3D case: its file (a relative path resolved against the case's
+// directory), the file's axes and units (`up`, `units`) and the entry's transform; the entry's
+// triangles in world space are transform.Matrix() · SceneFromFile(frame) applied to the file's.
+struct SpatialMeshEntry {
+    std::string pointer;  // "/geometry/K"
+    std::filesystem::path file;
+    spatial::MeshFrame frame;
+    spatial::Transform transform;
+};
+
+// The mesh entries of a 3D case file, read and checked as LoadSpatialScene reads them, without
+// loading any mesh or checking the rest of the scene. Throws InputError "<case>: <pointer>:
+// reason".
+std::vector<SpatialMeshEntry> LoadSpatialMeshEntries(const std::filesystem::path& path);
 
 // Where in a case a DomainError met while evaluating its loaded scene points, for one-line
 // errors: `camera` (default "/camera") for Subject::kCamera, `light` for kLight ("/lights/k" of

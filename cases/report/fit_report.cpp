@@ -100,7 +100,8 @@ std::string ParameterLines(const SceneFamily& family, const std::vector<double>&
     }
     std::ostringstream out;
     out << table.Render();
-    for (const auto& p : family.parameters) out << "  " << p.name << ": " << p.meaning << '\n';
+    for (const auto& p : family.parameters)
+        out << WrapText("  " + p.name + ": " + p.meaning, kTerminalColumns, "    ");
     return out.str();
 }
 
@@ -149,7 +150,7 @@ std::string FitText(const CaseFit& fit) {
     std::ostringstream out;
     out << fit.thesis.title << " — family " << fit.family->name << ", " << fit.best.evaluations
         << " scenes measured in " << Fixed(fit.seconds, 1) << " s\n"
-        << fit.family->layout << "\n\n"
+        << WrapText(fit.family->layout) << "\n"
         << ParameterLines(*fit.family, fit.best.parameters) << '\n'
         << NumbersTable(fit.table, fit.best.numbers).Render() << '\n'
         << "fitted: " << AgreementLine(fit.best.agreement)

@@ -61,13 +61,12 @@ nlohmann::json RunJson(std::span<const flatland::CaseReport> reports) {
 
 std::string RunCsv(std::span<const flatland::CaseReport> reports) {
     std::ostringstream out;
-    out.precision(17);
     out << "case,method,lexel_plane_deg,worst,average,mean_plus_sigma,median,l1,l2,linf,pixels_"
            "visible,"
            "solve_ms,frusta,note\n";
     for (const auto& r : reports)
         for (const auto& m : r.methods) {
-            const auto num = [](double v) { return CsvNumber(v, 17); };  // NaN: empty
+            const auto num = [](double v) { return CsvNumber(v); };  // NaN: empty
             out << CsvText(r.caseName) << ',' << CsvText(m.method) << ',' << num(m.lexelPlaneDeg)
                 << ',' << num(m.stats.worst()) << ',' << num(m.stats.average) << ','
                 << num(m.stats.meanPlusSigma) << ',' << num(m.stats.median) << ','
@@ -78,8 +77,7 @@ std::string RunCsv(std::span<const flatland::CaseReport> reports) {
     return out.str();
 }
 
-namespace {
-TextTable MethodTable(const flatland::CaseReport& report) {
+TextTable CaseMethodTable(const flatland::CaseReport& report) {
     TextTable table(
         {"method", "angle", "worst", "average", "mean+σ", "l1", "l2", "linf", "ms", "note"});
     for (const auto& m : report.methods) {
@@ -96,19 +94,19 @@ TextTable MethodTable(const flatland::CaseReport& report) {
     }
     return table;
 }
+
 std::string CaseHeader(const flatland::CaseReport& r) {
     return r.caseName + ": " + std::to_string(r.pixelsVisible) + " of " + std::to_string(r.pixels) +
            " pixels visible, " + std::to_string(r.lexels) + " lexels, decision pass " +
            std::to_string(r.decisionPixels) + " pixels";
 }
-}  // namespace
 
 std::string CaseTable(const flatland::CaseReport& report) {
-    return CaseHeader(report) + "\n" + MethodTable(report).Render();
+    return CaseHeader(report) + "\n" + CaseMethodTable(report).Render();
 }
 
 std::string CaseMarkdown(const flatland::CaseReport& report) {
-    return "## " + CaseHeader(report) + "\n\n" + MethodTable(report).RenderMarkdown();
+    return "## " + CaseHeader(report) + "\n\n" + CaseMethodTable(report).RenderMarkdown();
 }
 
 }  // namespace lexel::cases

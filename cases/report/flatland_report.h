@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 
+#include "lexel/cases/report/text_table.h"
 #include "lexel/flatland/methods.h"
 
 namespace lexel::cases {
@@ -16,5 +17,8 @@ nlohmann::json RunJson(std::span<const flatland::CaseReport> reports);
 std::string RunCsv(std::span<const flatland::CaseReport> reports);
 std::string CaseTable(const flatland::CaseReport& report);
 std::string CaseMarkdown(const flatland::CaseReport& report);
+// The pieces of CaseTable: "<case>: N of M pixels visible, ..." and the methods' table.
+std::string CaseHeader(const flatland::CaseReport& report);
+TextTable CaseMethodTable(const flatland::CaseReport& report);
 
 }  // namespace lexel::cases

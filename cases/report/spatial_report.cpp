@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
+#include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/harness/images.h"
@@ -16,96 +18,121 @@ nlohmann::json FiniteOrNull(double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-std::string LightHeader(std::size_t l, const spatial::LightOutcome& o) {
-    std::ostringstream text;
-    text << "light " << l << ": " << LightLabel(o.light) << " — " << o.receiverPixels
-         << " pixels face it, " << o.truthShadowed << " shadowed (Embree rays)";
+}  // namespace
+
+std::vector<std::string> LightHeaderLines(std::size_t l, const spatial::LightOutcome& o) {
+    std::vector<std::string> lines = {
+        "light " + std::to_string(l) + ": " + LightLabel(o.light) + " — " +
+        std::to_string(o.receiverPixels) + " pixels face it, " + std::to_string(o.truthShadowed) +
+        " shadowed (Embree rays), " + std::to_string(o.samples.lsX.size()) + " boundary samples"};
     if (o.mapTruthDisagree >= 0)
-        text << "; the report's focused 4000² map disagrees on " << o.mapTruthDisagree << " ("
-             << Fixed(100.0 * o.mapTruthDisagree / std::max<std::int64_t>(1, o.receiverPixels), 3)
-             << "%)";
-    text << "; " << o.samples.lsX.size() << " boundary samples\n";
-    return text.str();
+        lines.push_back(
+            "the report's focused 4000² truth map disagrees with the rays on " +
+            std::to_string(o.mapTruthDisagree) +
+            (o.mapTruthDisagree == 1 ? " pixel (" : " pixels (") +
+            Fixed(100.0 * o.mapTruthDisagree / std::max<std::int64_t>(1, o.receiverPixels), 3) +
+            "%)");
+    return lines;
 }
 
-std::string IterationLines(const spatial::LightOutcome& o) {
-    std::ostringstream text;
+TextTable SpatialMethodTable(const spatial::LightOutcome& o) {
+    TextTable table({"method", "misclassified", "false\nshadow", "false\nlight", "uncovered",
+                     "mean\nσ1(J⁻¹)", "max\nσ1(J⁻¹)", "storage\nfactor", "h\n(eq. 6)", "ms"});
+    for (const auto& m : o.methods)
+        table.AddRow({m.method, std::to_string(m.misclassified), std::to_string(m.falseShadow),
+                      std::to_string(m.misclassified - m.falseShadow), std::to_string(m.uncovered),
+                      Significant(m.footprintMean, 4), Significant(m.footprintMax, 4),
+                      Significant(m.storageFactor, 4), Significant(m.h, 6), Fixed(m.ms, 3)});
+    return table;
+}
+
+std::vector<std::string> IterationLines(const spatial::LightOutcome& o) {
+    std::vector<std::string> lines;
     for (const auto& m : o.methods) {
         if (m.hAfterIteration.empty()) continue;
-        text << m.method << ": h after each iteration (Algorithm 1)";
+        std::string line = m.method + ": h by Algorithm 1 iteration";
         for (std::size_t i = 0; i < m.hAfterIteration.size(); ++i)
-            text << (i ? " → " : " ") << Significant(m.hAfterIteration[i], 6);
-        if (m.h < m.hBeforeRefine) text << "; refined " << Significant(m.h, 6);
-        text << '\n';
+            line += (i ? " → " : " ") + Significant(m.hAfterIteration[i], 6);
+        if (m.h < m.hBeforeRefine) line += "; refined " + Significant(m.h, 6);
+        lines.push_back(line);
     }
-    return text.str();
+    return lines;
 }
 
-// Per partitioned method, its cascades: depth interval, map, readback points, pixels, h.
-std::string CascadeLines(const spatial::LightOutcome& o) {
-    std::ostringstream text;
-    for (const auto& m : o.methods) {
-        if (m.cascades.empty()) continue;
-        text << m.method << ": " << m.cascades.size() << " cascades";
-        if (m.emptyPartitions) text << " (" << m.emptyPartitions << " empty)";
-        for (const spatial::CascadeOutcome& c : m.cascades)
-            text << "; [" << Significant(c.cascade.zNear, 4) << ", "
-                 << Significant(c.cascade.zFar, 4) << ") " << c.cascade.map.width << "×"
-                 << c.cascade.map.height << " " << c.cascade.visiblePoints << " points " << c.pixels
-                 << " px h " << Significant(c.h, 4);
-        text << '\n';
-    }
-    return text.str();
+std::optional<TextTable> CascadeTable(const spatial::LightOutcome& o) {
+    TextTable table({"method", "cascade", "depth\nfrom", "depth\nto", "map", "readback\npoints",
+                     "pixels", "h"});
+    bool any = false;
+    for (const auto& m : o.methods)
+        for (std::size_t c = 0; c < m.cascades.size(); ++c) {
+            const spatial::CascadeOutcome& cascade = m.cascades[c];
+            table.AddRow({c == 0 ? m.method : "", std::to_string(c),
+                          Significant(cascade.cascade.zNear, 4),
+                          Significant(cascade.cascade.zFar, 4),
+                          std::to_string(cascade.cascade.map.width) + "×" +
+                              std::to_string(cascade.cascade.map.height),
+                          std::to_string(cascade.cascade.visiblePoints),
+                          std::to_string(cascade.pixels), Significant(cascade.h, 4)});
+            any = true;
+        }
+    if (!any) return std::nullopt;
+    return table;
 }
 
-std::string ShimmerText(const CameraPathStudy& study, std::size_t light) {
-    TextTable table({"method", "shimmer (% of stable pixels per step)"});
-    for (std::size_t m = 0; m < study.methods.size(); ++m)
-        table.AddRow({study.methods[m], Fixed(study.shimmerPercent[m], 3)});
-    std::ostringstream text;
-    text << "\ncamera path, light " << light
-         << ": pixels whose shadow decision changes between consecutive poses where the rays' "
-            "does not\n"
-         << table.Render();
-    return text.str();
+std::string CameraPathCaption(const CameraPathStudy& study, std::size_t light) {
+    return "camera path, light " + std::to_string(light) + ": P changed in " +
+           std::to_string(study.Changes()) + " of " + std::to_string(study.poses.size()) +
+           " poses (hysteresis: keep P unless the new median badness is below 80% of the kept "
+           "one)";
 }
 
-std::string CameraPathText(const CameraPathStudy& study, std::size_t light) {
-    TextTable table({"pose", "P changed", "median badness kept", "median badness new",
-                     "misclassified (hysteresis)", "misclassified (fresh)"});
+TextTable CameraPathTable(const CameraPathStudy& study) {
+    TextTable table({"pose", "P\nchanged", "median\nbadness\nkept", "median\nbadness\nnew",
+                     "misclassified\n(hysteresis)", "misclassified\n(fresh)"});
     for (std::size_t k = 0; k < study.poses.size(); ++k) {
         const PoseOutcome& p = study.poses[k];
         table.AddRow({std::to_string(k), p.changed ? "yes" : "no", Significant(p.medianKept, 5),
                       Significant(p.medianNew, 5), std::to_string(p.misclassifiedHysteresis),
                       std::to_string(p.misclassifiedFresh)});
     }
-    std::ostringstream text;
-    text << "\ncamera path, light " << light << ": P changed in " << study.Changes() << " of "
-         << study.poses.size() << " poses (hysteresis: keep P unless the new median "
-         << "badness is below 80% of the kept one)\n"
-         << table.Render() << ShimmerText(study, light);
-    return text.str();
+    return table;
 }
 
-}  // namespace
+std::string ShimmerCaption(std::size_t light) {
+    return "camera path, light " + std::to_string(light) +
+           ": pixels whose shadow decision changes between consecutive poses where the rays' "
+           "does not";
+}
+
+TextTable ShimmerTable(const CameraPathStudy& study) {
+    TextTable table({"method", "shimmer (% of stable\npixels per step)"});
+    for (std::size_t m = 0; m < study.methods.size(); ++m)
+        table.AddRow({study.methods[m], Fixed(study.shimmerPercent[m], 3)});
+    return table;
+}
 
 std::string SpatialRunText(const spatial::Scene&, const SpatialRun& run) {
     std::ostringstream text;
     for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
         const auto& o = run.outcomes[l];
-        TextTable table({"method", "misclassified", "false shadow", "false light", "uncovered",
-                         "mean σ1(J⁻¹)", "max σ1(J⁻¹)", "storage factor", "h (eq. 6)", "ms"});
-        for (const auto& m : o.methods)
-            table.AddRow({m.method, std::to_string(m.misclassified), std::to_string(m.falseShadow),
-                          std::to_string(m.misclassified - m.falseShadow),
-                          std::to_string(m.uncovered), Significant(m.footprintMean, 4),
-                          Significant(m.footprintMax, 4), Significant(m.storageFactor, 4),
-                          Significant(m.h, 6), Fixed(m.ms, 3)});
-        text << (l ? "\n" : "") << LightHeader(l, o) << table.Render() << IterationLines(o)
-             << CascadeLines(o);
+        const std::vector<std::string> header = LightHeaderLines(l, o);
+        text << (l ? "\n" : "");
+        for (std::size_t k = 0; k < header.size(); ++k)
+            text << WrapText((k ? "  " : "") + header[k], kTerminalColumns, "  ");
+        text << SpatialMethodTable(o).Render();
+        for (const std::string& line : IterationLines(o))
+            text << WrapText(line, kTerminalColumns, "  ");
+        if (const std::optional<TextTable> cascades = CascadeTable(o))
+            text << "\ncascades of the partitioned methods, light " << l
+                 << " (depth: planar eye depth)\n"
+                 << cascades->Render();
     }
     for (std::size_t l = 0; l < run.cameraPath.size(); ++l)
-        text << CameraPathText(run.cameraPath[l], l);
+        text << '\n'
+             << WrapText(CameraPathCaption(run.cameraPath[l], l), kTerminalColumns, "  ")
+             << CameraPathTable(run.cameraPath[l]).Render() << '\n'
+             << WrapText(ShimmerCaption(l), kTerminalColumns, "  ")
+             << ShimmerTable(run.cameraPath[l]).Render();
     return text.str();
 }
 
@@ -179,49 +206,152 @@ std::string SpatialRunCsv(const SpatialRun& run) {
     for (std::size_t l = 0; l < run.outcomes.size(); ++l)
         for (const auto& m : run.outcomes[l].methods)
             csv << l << ',' << m.method << ',' << m.misclassified << ',' << m.falseShadow << ','
-                << m.misclassified - m.falseShadow << ',' << Significant(m.h, 9) << ','
-                << Fixed(m.ms, 4) << ',' << m.uncovered << ',' << Significant(m.footprintMean, 9)
-                << ',' << Significant(m.footprintMax, 9) << ','
-                << std::max<std::size_t>(1, m.cascades.size()) << ','
-                << Significant(m.perspectiveMax, 9) << ',' << Significant(m.storageFactor, 9)
-                << '\n';
+                << m.misclassified - m.falseShadow << ',' << CsvNumber(m.h) << ','
+                << CsvNumber(m.ms) << ',' << m.uncovered << ',' << CsvNumber(m.footprintMean) << ','
+                << CsvNumber(m.footprintMax) << ',' << std::max<std::size_t>(1, m.cascades.size())
+                << ',' << CsvNumber(m.perspectiveMax) << ',' << CsvNumber(m.storageFactor) << '\n';
     return csv.str();
 }
 
-int WriteSpatialImages(const std::filesystem::path& dir, const spatial::Scene& scene,
-                       const SpatialRun& run) {
-    int images = 0;
+namespace {
+
+std::string Count(std::int64_t n, const std::string& what) {
+    return std::to_string(n) + " " + what;
+}
+
+// The figure of a frame or error image: title, counts and key.
+ImageFigure FrameFigure(const std::string& title, const spatial::LightOutcome& o,
+                        const spatial::MethodOutcome& m, bool errors) {
+    ImageFigure figure;
+    figure.title = title;
+    const std::int64_t falseLight = m.misclassified - m.falseShadow;
+    if (errors) {
+        figure.lines = {
+            "Where " + m.method + "'s shadow decision differs from exact shadow rays: " +
+                std::to_string(m.misclassified) + " of " +
+                Count(o.receiverPixels, "counted pixels") + " misclassified (" +
+                std::to_string(m.falseShadow) + " false shadow, " + std::to_string(falseLight) +
+                " false light); " + Count(m.uncovered, "uncovered") + ".",
+            "Counted pixels: visible and facing the light; those facing away are in "
+            "shadow for every method and the truth alike."};
+        figure.key = {
+            {"false shadow: a lit pixel shadowed (" + std::to_string(m.falseShadow) + ")",
+             spatial::kFalseShadowColour},
+            {"false light: a shadowed pixel lit (" + std::to_string(falseLight) + ")",
+             spatial::kFalseLightColour},
+            {"agrees with the rays (darker where truly shadowed)", {0.6f, 0.6f, 0.6f}},
+            {"uncovered: no map covers it, shaded lit (" + std::to_string(m.uncovered) + ")",
+             spatial::kUncoveredColour},
+            {"no geometry", spatial::kBackgroundColour}};
+        return figure;
+    }
+    figure.lines = {"The frame shaded with " + m.method +
+                    "'s shadows: " + Count(o.receiverPixels, "counted pixels") + ", " +
+                    Count(m.misclassified, "misclassified") + ", " +
+                    Count(m.uncovered, "uncovered") + "; " +
+                    Count(o.truthShadowed, "truly shadowed (Embree rays)") + "."};
+    figure.key = {{"lit (grey: n·l)", {0.75f, 0.75f, 0.75f}},
+                  {"shadowed or facing away (ambient)",
+                   {spatial::kAmbient, spatial::kAmbient, spatial::kAmbient}},
+                  {"uncovered: no map covers it (" + std::to_string(m.uncovered) + ")",
+                   spatial::kUncoveredColour},
+                  {"no geometry", spatial::kSkyColour}};
+    return figure;
+}
+
+// The figure of a shadow-map image: what the map is, its samples, key and depth scale.
+ImageFigure MapFigure(const std::string& title, const std::string& what,
+                      const spatial::ShadowMap& map, const spatial::LightSamples& samples) {
+    ImageFigure figure;
+    figure.title = title;
+    figure.lines = {
+        what + ", " + std::to_string(map.resolution.width) + "×" +
+        std::to_string(map.resolution.height) + " texels: " +
+        Count(static_cast<std::int64_t>(samples.lsX.size()), "boundary samples (Algorithm 1's)") +
+        ", " +
+        Count(static_cast<std::int64_t>(samples.lsRelevant.size()),
+              "visible points of the readback") +
+        ", as the report's Fig. 2."};
+    figure.key = {{"visible point (readback)", spatial::kVisiblePointColour},
+                  {"boundary sample", spatial::kBoundarySampleColour},
+                  {"empty texel", spatial::kEmptyTexelColour}};
+    const spatial::MapDepthRange range = spatial::DepthRangeOf(map);
+    if (range.any)
+        figure.bar = ColourBar{"depth from the light (scene units): near light, far dark",
+                               {{spatial::kNearGrey, spatial::kNearGrey, spatial::kNearGrey},
+                                {spatial::kFarGrey, spatial::kFarGrey, spatial::kFarGrey}},
+                               range.nearest,
+                               range.farthest,
+                               false};
+    return figure;
+}
+
+}  // namespace
+
+std::size_t SpatialImageCount(const SpatialRun& run) {
+    std::size_t images = 0;
+    for (const spatial::LightOutcome& o : run.outcomes)
+        for (const spatial::MethodOutcome& m : o.methods)
+            images += 2 + (m.cascades.empty() ? 1 : m.cascadeMaps.size());
+    return images;
+}
+
+std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& dir,
+                                                 const spatial::Scene& scene, const SpatialRun& run,
+                                                 const std::function<void()>& onImage) {
+    std::vector<SpatialImageFile> files;
     const spatial::Evaluator& evaluator = *run.evaluator;
+    const auto write = [&](std::size_t l, const std::string& method, const std::string& kind,
+                           const spatial::Image& image, const ImageFigure& figure) {
+        const std::string file =
+            scene.name + "_light" + std::to_string(l) + "_" + method + "_" + kind + ".png";
+        WriteImageFigure((dir / file).string(), image, figure);
+        files.push_back({file, l, method, kind, figure.lines.front()});
+        if (onImage) onImage();
+    };
     for (std::size_t l = 0; l < run.outcomes.size(); ++l) {
         const spatial::LightOutcome& o = run.outcomes[l];
         const spatial::LightSpace lightSpace(o.light, evaluator.bounds());
         for (const auto& m : o.methods) {
-            const std::string base =
-                (dir / (scene.name + "_light" + std::to_string(l) + "_" + m.method)).string();
-            spatial::WriteImage(base + "_frame.png",
-                                spatial::FrameImage(evaluator.frame(), lightSpace, m.shades));
-            spatial::WriteImage(
-                base + "_errors.png",
-                spatial::MisclassificationImage(evaluator.frame(), lightSpace, m.shades, o.truth));
-            images += 2;
+            const std::string title = scene.name + " · light " + std::to_string(l) + ": " +
+                                      LightLabel(o.light) + " · " + m.method;
+            std::vector<spatial::Cascade> cascades;
+            for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
+            const std::vector<std::uint8_t> uncovered =
+                spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera, m.shades,
+                                         m.map.matrix, m.map.resolution, cascades);
+            write(l, m.method, "frame",
+                  spatial::FrameImage(evaluator.frame(), lightSpace, m.shades, uncovered),
+                  FrameFigure(title + " · frame", o, m, false));
+            write(l, m.method, "errors",
+                  spatial::MisclassificationImage(evaluator.frame(), lightSpace, m.shades, o.truth,
+                                                  uncovered),
+                  FrameFigure(title + " · errors", o, m, true));
             if (m.cascades.empty()) {
-                spatial::WriteImage(base + "_map.png", spatial::ShadowMapImage(m.map, o.samples));
-                ++images;
+                write(l, m.method, "map", spatial::ShadowMapImage(m.map, o.samples),
+                      MapFigure(title + " · shadow map", m.method + "'s shadow map", m.map,
+                                o.samples));
                 continue;
             }
             // One image per cascade, with the samples it serves.
-            std::vector<spatial::Cascade> cascades;
-            for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
             for (std::size_t c = 0; c < m.cascadeMaps.size(); ++c) {
                 const spatial::LightSamples served = spatial::SamplesOfCascade(
                     o.samples, evaluator.readback().wsRelevant, scene.camera, cascades, c);
-                spatial::WriteImage(base + "_map" + std::to_string(c) + ".png",
-                                    spatial::ShadowMapImage(m.cascadeMaps[c], served));
-                ++images;
+                const spatial::CascadeOutcome& cascade = m.cascades[c];
+                const std::string what = m.method + "'s cascade " + std::to_string(c) + " of " +
+                                         std::to_string(m.cascades.size()) + " (depth [" +
+                                         Significant(cascade.cascade.zNear, 4) + ", " +
+                                         Significant(cascade.cascade.zFar, 4) + "), serving " +
+                                         Count(cascade.pixels, "pixels") + ", h " +
+                                         Significant(cascade.h, 4) + ")";
+                write(l, m.method, "map" + std::to_string(c),
+                      spatial::ShadowMapImage(m.cascadeMaps[c], served),
+                      MapFigure(title + " · cascade " + std::to_string(c), what, m.cascadeMaps[c],
+                                served));
             }
         }
     }
-    return images;
+    return files;
 }
 
 }  // namespace lexel::cases

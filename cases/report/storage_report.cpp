@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -91,9 +92,9 @@ std::string CrossoverText(const StorageStudy& s) {
 
 std::string StorageText(const StorageStudy& s) {
     std::ostringstream out;
-    out << "Lloyd et al. 2006's storage factor S̄ (texels over image pixels for w_l/w_i ≤ 1): "
-        << FrustumLine(s.frustum) << "\nS̄_opt = ln(f/n) / (2 tanθ) = " << Significant(s.optimal, 6)
-        << " (Appendix C)\n"
+    out << "Lloyd et al. 2006's storage factor S̄ (texels over image pixels for w_l/w_i ≤ 1):\n  "
+        << FrustumLine(s.frustum) << "\n"
+        << "S̄_opt = ln(f/n) / (2 tanθ) = " << Significant(s.optimal, 6) << " (Appendix C)\n"
         << WarpText(s) << HemisphereText(s) << PartitionText(s) << MapCountText(s)
         << CrossoverText(s);
     return out.str();
@@ -152,17 +153,14 @@ std::string StorageCsv(const StorageStudy& s) {
     csv << "figure,series,x1,x2,value\n";
     const auto row = [&](const char* figure, const std::string& series, const std::string& x1,
                          const std::string& x2, double value) {
-        csv << figure << ',' << series << ',' << x1 << ',' << x2 << ',' << Significant(value, 9)
-            << '\n';
+        csv << figure << ',' << series << ',' << x1 << ',' << x2 << ',' << CsvNumber(value) << '\n';
     };
     for (std::size_t r = 0; r < s.warpRatios.size(); ++r)
         for (const spatial::WarpSweepPoint& p : s.warp[r])
-            row("fig5_6", "warp", Significant(p.eta, 9), Significant(s.warpRatios[r], 9),
-                p.storage);
+            row("fig5_6", "warp", CsvNumber(p.eta), CsvNumber(s.warpRatios[r]), p.storage);
     for (const HemisphereStudy& h : s.hemisphere)
         for (const spatial::HemisphereCell& c : h.grid.cells)
-            if (c.inside)
-                row("fig7", h.scheme, Significant(c.gx, 9), Significant(c.gy, 9), c.storage);
+            if (c.inside) row("fig7", h.scheme, CsvNumber(c.gx), CsvNumber(c.gy), c.storage);
     for (const spatial::PartitionSweepPoint& p : s.partitions) {
         row("fig10", "ZP", std::to_string(p.k), "", p.zp);
         row("fig10", "ZP + W", std::to_string(p.k), "", p.zpWarp);
@@ -187,12 +185,15 @@ std::string StorageCsv(const StorageStudy& s) {
 
 namespace {
 
-// log10 S̄ in [lo, hi] → a dark-blue, cyan, yellow, red ramp; white outside the hemisphere.
-spatial::Image HemisphereImage(const HemisphereStudy& h, double lo, double hi, int scale) {
+// Fig. 7's colours for log10 S̄ from the smallest to the largest decade.
+constexpr spatial::ImageColour kHemisphereRamp[4] = {
+    {0.1f, 0.1f, 0.5f}, {0.0f, 0.8f, 0.9f}, {1.0f, 0.9f, 0.1f}, {0.8f, 0.05f, 0.05f}};
+
+// log10 S̄ in [lo, hi] → a dark-blue, cyan, yellow, red ramp; white outside the hemisphere. One
+// pixel per grid cell (the figure scales it up).
+spatial::Image HemisphereImage(const HemisphereStudy& h, double lo, double hi) {
     const int size = h.grid.size;
-    spatial::Image image = spatial::MakeImage(size * scale, size * scale, 3, 1.0f);
-    constexpr float kRamp[4][3] = {
-        {0.1f, 0.1f, 0.5f}, {0.0f, 0.8f, 0.9f}, {1.0f, 0.9f, 0.1f}, {0.8f, 0.05f, 0.05f}};
+    spatial::Image image = spatial::MakeImage(size, size, 3, 1.0f);
     for (int row = 0; row < size; ++row)
         for (int col = 0; col < size; ++col) {
             const spatial::HemisphereCell& cell = h.grid.cells[row * size + col];
@@ -202,13 +203,33 @@ spatial::Image HemisphereImage(const HemisphereStudy& h, double lo, double hi, i
             const double segment = std::min(2.999999, 3.0 * t);
             const int i = static_cast<int>(segment);
             const float w = static_cast<float>(segment - i);
-            for (int y = 0; y < scale; ++y)
-                for (int x = 0; x < scale; ++x)
-                    for (int c = 0; c < 3; ++c)
-                        image.at(col * scale + x, row * scale + y, c) =
-                            (1.0f - w) * kRamp[i][c] + w * kRamp[i + 1][c];
+            const spatial::ImageColour a = kHemisphereRamp[i], b = kHemisphereRamp[i + 1];
+            image.at(col, row, 0) = (1.0f - w) * a.r + w * b.r;
+            image.at(col, row, 1) = (1.0f - w) * a.g + w * b.g;
+            image.at(col, row, 2) = (1.0f - w) * a.b + w * b.b;
         }
     return image;
+}
+
+// Fig. 7's figure for one scheme: what the disc shows, its extremes, and the shared log scale.
+ImageFigure HemisphereFigure(const HemisphereStudy& h, const spatial::ViewFrustum& frustum,
+                             double lo, double hi) {
+    ImageFigure figure;
+    figure.title = "Fig. 7: storage factor S̄ over the hemisphere of light directions, " + h.scheme;
+    figure.lines = {
+        "The hemisphere seen from above (" + std::to_string(h.grid.size) + " × " +
+            std::to_string(h.grid.size) +
+            " cells): the light behind the viewer on the left, in front on the right, overhead "
+            "in the middle; frustum " +
+            FrustumLine(frustum) + ".",
+        "S̄ from " + Significant(h.minStorage, 4) + " to " + Significant(h.maxStorage, 4) + " for " +
+            h.scheme + "; the three schemes share one scale."};
+    figure.key = {{"outside the hemisphere", {1.0f, 1.0f, 1.0f}}};
+    figure.bar = ColourBar{
+        "storage factor S̄ (log scale)",
+        std::vector<spatial::ImageColour>(std::begin(kHemisphereRamp), std::end(kHemisphereRamp)),
+        lo, hi, true};
+    return figure;
 }
 
 std::string FileStem(const std::string& scheme) {
@@ -249,8 +270,8 @@ std::vector<std::string> WriteStorageFigures(const std::filesystem::path& dir,
         lo = std::min(lo, std::log10(h.minStorage)), hi = std::max(hi, std::log10(h.maxStorage));
     lo = std::floor(lo), hi = std::ceil(hi);
     for (const HemisphereStudy& h : s.hemisphere)
-        spatial::WriteImage(path("fig7_hemisphere_" + FileStem(h.scheme) + ".png"),
-                            HemisphereImage(h, lo, hi, 4));
+        WriteImageFigure(path("fig7_hemisphere_" + FileStem(h.scheme) + ".png"),
+                         HemisphereImage(h, lo, hi), HemisphereFigure(h, s.frustum, lo, hi));
 
     const std::vector<double> powersOfTwo = {1, 2, 4, 8, 16};
     CurvePlot partitions;
@@ -308,11 +329,11 @@ std::vector<std::string> WriteStorageFigures(const std::filesystem::path& dir,
 
 std::string CaseStorageText(const CaseStorage& r) {
     std::ostringstream out;
-    out << "Measured storage factor beside Lloyd et al. 2006's S̄, " << r.caseName << ": camera "
-        << FrustumLine(r.camera) << "; visible planar depths "
+    out << "Measured storage factor beside Lloyd et al. 2006's S̄, " << r.caseName << ":\n  camera "
+        << FrustumLine(r.camera) << "\n  visible planar depths "
         << Significant(r.visible.nearPlane, 4) << "–" << Significant(r.visible.farPlane, 4)
         << " (f/n = " << Significant(r.visible.DepthRatio(), 4)
-        << "); partitioned methods k = " << r.partitions << "\n";
+        << ")\n  partitioned methods k = " << r.partitions << "\n";
     for (std::size_t l = 0; l < r.lights.size(); ++l) {
         const CaseStorageLight& light = r.lights[l];
         out << (l ? "\n" : "") << "light " << l << ": " << LightLabel(light.light)
@@ -324,9 +345,9 @@ std::string CaseStorageText(const CaseStorage& r) {
             << Significant(light.optimalVisible, 4) << " (visible depths); best single map "
             << Significant(light.bestSingleCamera, 4) << " / "
             << Significant(light.bestSingleVisible, 4) << "\n";
-        TextTable table({"method", "maps", "max w_l/w_i", "S measured", "S measured (p99)",
-                         "scheme", "S scheme (camera)", "S scheme (visible)",
-                         "measured / S_opt (visible)"});
+        TextTable table({"method", "maps", "max\nw_l/w_i", "S\nmeasured", "S measured\n(p99)",
+                         "scheme", "S scheme\n(camera)", "S scheme\n(visible)",
+                         "measured /\nS_opt\n(visible)"});
         for (const CaseStorageRow& row : light.rows)
             table.AddRow({row.method, std::to_string(row.maps), Significant(row.perspectiveMax, 4),
                           Significant(row.measured, 4), Significant(row.measuredP99, 4),
@@ -379,11 +400,11 @@ std::string CaseStorageCsv(const CaseStorage& r) {
     for (std::size_t l = 0; l < r.lights.size(); ++l)
         for (const CaseStorageRow& row : r.lights[l].rows)
             csv << l << ',' << row.method << ',' << row.maps << ',' << row.texels << ','
-                << Significant(row.perspectiveMax, 9) << ',' << Significant(row.measured, 9) << ','
-                << Significant(row.measuredP99, 9) << ',' << row.camera.scheme << ','
-                << Significant(row.camera.storage, 9) << ',' << Significant(row.visible.storage, 9)
-                << ',' << Significant(r.lights[l].optimalCamera, 9) << ','
-                << Significant(r.lights[l].optimalVisible, 9) << '\n';
+                << CsvNumber(row.perspectiveMax) << ',' << CsvNumber(row.measured) << ','
+                << CsvNumber(row.measuredP99) << ',' << row.camera.scheme << ','
+                << CsvNumber(row.camera.storage) << ',' << CsvNumber(row.visible.storage) << ','
+                << CsvNumber(r.lights[l].optimalCamera) << ','
+                << CsvNumber(r.lights[l].optimalVisible) << '\n';
     return csv.str();
 }
 

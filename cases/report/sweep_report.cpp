@@ -101,9 +101,11 @@ std::vector<std::size_t> AllLights(const SweepResult& r) {
     return all;
 }
 
-// Table 1's rows: all lights, then each method's worst 10%.
+// Table 1's rows: all lights, then each method's worst 10% when the sweep has enough lights for
+// that to be more than one or two of them (kWorstRowsMinLights).
 std::vector<Row> Table1Rows(const SweepResult& r, const View& view) {
     std::vector<Row> rows = {{"all", MeanOver(r, AllLights(r))}};
+    if (r.lights.size() < kWorstRowsMinLights) return rows;
     for (std::size_t m : view.methods)
         rows.push_back({r.methods[m], MeanOver(r, WorstLights(r, m))});
     return rows;
@@ -217,6 +219,10 @@ std::string SetLabel(const std::string& set) {
     return set == "all" ? "all lights" : "worst 10% by " + set;
 }
 
+// The label of the report's own rows: its counts are totals over its 500 lights on its scene and
+// frame (ours: means per light), so only its percentages compare with ours.
+constexpr const char* kPublishedLabel = "  published (report)";
+
 TextTable MisclassifiedTable(const SweepResult& r, const View& view, const ReportTable1& report) {
     std::vector<std::string> header = {"lights"};
     for (std::size_t m : view.methods) header.push_back(r.methods[m]);
@@ -230,29 +236,32 @@ TextTable MisclassifiedTable(const SweepResult& r, const View& view, const Repor
         if (compareToReport) {
             std::vector<std::string> published = ReportCells(report, row.set, r, view);
             if (!published.empty()) {
-                published.insert(published.begin(), "  report (Table 1)");
-                table.AddRow(published);
+                published.insert(published.begin(), kPublishedLabel);
+                table.AddRow(published, "published");
             }
         }
     }
     return table;
 }
 
+std::string PercentCell(double pct, bool isReference) {
+    return isReference ? "0" : (pct >= 0 ? "+" : "") + Fixed(pct, 2) + "%";
+}
+
 // Mean misclassified, % more than the reference, % of lights beating it, mean h and time.
 TextTable SummaryTable(const SweepResult& r, const View& view) {
-    const std::string ref = r.methods[view.reference];
-    TextTable table({"method", "mean misclassified", "% more than " + ref,
-                     "% of lights beating " + ref, "mean h (eq. 6)", "lights with h = inf",
-                     "h orders as errors (% lights)", "grazing share of h", "median storage factor",
-                     "mean ms per light"});
+    TextTable table({"method", "mean\nmisclassified", "% more\nthan ref", "% lights\nbeating\nref",
+                     "mean h\n(eq. 6)", "lights\nwith\nh = inf", "h orders\nas errors",
+                     "grazing\nshare\nof h", "median\nstorage\nfactor", "mean ms\nper light"});
     const MethodSummary reference = Summarize(r, view.reference, view.reference);
     for (std::size_t m : view.methods) {
         const MethodSummary s = Summarize(r, m, view.reference);
-        const double pct = PercentMore(s.meanMisclassified, reference.meanMisclassified);
+        const bool isReference = m == view.reference;
         table.AddRow({r.methods[m], Fixed(s.meanMisclassified, 1),
-                      m == view.reference ? "0" : (pct >= 0 ? "+" : "") + Fixed(pct, 2) + "%",
-                      m == view.reference ? "–" : Fixed(s.beatingPercent, 0) + "%",
-                      Significant(s.meanH, 5), std::to_string(s.infiniteH),
+                      PercentCell(PercentMore(s.meanMisclassified, reference.meanMisclassified),
+                                  isReference),
+                      isReference ? "–" : Fixed(s.beatingPercent, 0) + "%", Significant(s.meanH, 5),
+                      std::to_string(s.infiniteH),
                       std::isnan(s.hAgreesPercent) ? "–" : Fixed(s.hAgreesPercent, 0) + "%",
                       Fixed(100.0 * s.grazingShare, 0) + "%", Significant(s.medianStorage, 4),
                       Fixed(s.meanMs, 3)});
@@ -261,24 +270,43 @@ TextTable SummaryTable(const SweepResult& r, const View& view) {
 }
 
 // At equal texels: mean misclassified, % more than optimal, % of lights beating it, the
-// footprints σ₁(J⁻¹), uncovered pixels, empty partitions, time.
-TextTable EqualTexelTable(const SweepResult& r, const View& view) {
-    const std::string ref = r.methods[view.reference];
-    TextTable table({"method", "maps", "mean misclassified", "% more than " + ref,
-                     "% of lights beating " + ref, "mean σ1(J⁻¹)", "max σ1(J⁻¹)",
-                     "uncovered pixels (mean)", "empty partitions", "median storage factor",
-                     "mean h (eq. 6)", "mean ms per light"});
+// footprints σ₁(J⁻¹), uncovered pixels, empty partitions, time. The terminal leaves out the
+// largest σ₁(J⁻¹) (it comes from grazing pixels) to fit kTerminalColumns.
+TextTable EqualTexelTable(const SweepResult& r, const View& view, bool terminal) {
+    std::vector<std::string> header = {"method",
+                                       "maps",
+                                       "mean\nmisclassified",
+                                       "% more\nthan ref",
+                                       "% lights\nbeating\nref",
+                                       "mean\nσ1(J⁻¹)",
+                                       "max\nσ1(J⁻¹)",
+                                       "uncovered\npixels\n(mean)",
+                                       "empty\nparti-\ntions",
+                                       "median\nstorage\nfactor",
+                                       "mean h\n(eq. 6)",
+                                       "mean ms\nper light"};
+    constexpr std::size_t kMaxFootprintColumn = 6;
+    if (terminal) header.erase(header.begin() + kMaxFootprintColumn);
+    TextTable table(header);
     const MethodSummary reference = Summarize(r, view.reference, view.reference);
     for (std::size_t m : view.methods) {
         const MethodSummary s = Summarize(r, m, view.reference);
-        const double pct = PercentMore(s.meanMisclassified, reference.meanMisclassified);
-        table.AddRow({r.methods[m], std::to_string(s.cascades), Fixed(s.meanMisclassified, 1),
-                      m == view.reference ? "0" : (pct >= 0 ? "+" : "") + Fixed(pct, 2) + "%",
-                      m == view.reference ? "–" : Fixed(s.beatingPercent, 0) + "%",
-                      Significant(s.meanFootprint, 4), Significant(s.maxFootprint, 4),
-                      Fixed(s.meanUncovered, 1), std::to_string(s.emptyPartitions),
-                      Significant(s.medianStorage, 4), Significant(s.meanH, 5),
-                      Fixed(s.meanMs, 3)});
+        const bool isReference = m == view.reference;
+        std::vector<std::string> row = {
+            r.methods[m],
+            std::to_string(s.cascades),
+            Fixed(s.meanMisclassified, 1),
+            PercentCell(PercentMore(s.meanMisclassified, reference.meanMisclassified), isReference),
+            isReference ? "–" : Fixed(s.beatingPercent, 0) + "%",
+            Significant(s.meanFootprint, 4),
+            Significant(s.maxFootprint, 4),
+            Fixed(s.meanUncovered, 1),
+            std::to_string(s.emptyPartitions),
+            Significant(s.medianStorage, 4),
+            Significant(s.meanH, 5),
+            Fixed(s.meanMs, 3)};
+        if (terminal) row.erase(row.begin() + kMaxFootprintColumn);
+        table.AddRow(row);
     }
     return table;
 }
@@ -295,39 +323,95 @@ std::string Lights(const SweepResult& r) {
     return out.str();
 }
 
-std::string ReportCaption(const SweepResult& r, const View& view) {
-    return "Table 1 as published (report-faithful baselines): misclassified shadow pixels, " +
-           r.caseName + ", " + Lights(r) + "; in parentheses: % more than " +
-           r.methods[view.reference] + " (Chong & Gortler, Table 1)";
+// What the summary tables' columns mean (every section that has one says it).
+constexpr const char* kSummaryColumns =
+    "Columns: the mean misclassified pixels per light; how many % more than the reference (ref); "
+    "the % of lights on which the method misclassifies fewer pixels than the reference; the mean "
+    "energy h of the report's eq. (6), which Algorithm 1 minimizes (over the lights where it is "
+    "finite), and the lights where it is infinite; h orders as errors: of the lights where the "
+    "method and the reference misclassify different counts, the % on which h ranks them the same "
+    "way (is h the right proxy?); the part of h from boundary samples the light grazes; Lloyd et "
+    "al. 2006's storage factor as measured (median over the lights); the time to compute the "
+    "light matrix.";
+
+std::vector<ReportSection> ReportSections(const SweepResult& r, const View& view,
+                                          const ReportTable1& report) {
+    const std::string ref = r.methods[view.reference];
+    const bool worstRows = r.lights.size() >= kWorstRowsMinLights;
+    ReportSection table1{
+        "Table 1 as published (report-faithful baselines): misclassified shadow pixels, " +
+            r.caseName + ", " + Lights(r) + "; in parentheses: % more than " + ref +
+            " (Chong & Gortler, Table 1)",
+        "The report's experiment with its methods as it describes them: per light, the counted "
+        "pixels (visible, facing the light) whose shadow decision differs from exact shadow "
+        "rays, averaged over all lights" +
+            std::string(worstRows ? " and over each method's worst 10% of lights (ranked by "
+                                    "that method's count)"
+                                  : "") +
+            ". Lower is better.",
+        MisclassifiedTable(r, view, report),
+        {}};
+    if (ref == "optimal-report" && report.Find("all"))
+        table1.notes.push_back(
+            "Rows \"published (report)\" are the report's own Table 1 as printed: absolute "
+            "counts summed over its 500 lights on its own scene and frame, while ours are means "
+            "per light on this case. The absolute numbers are on different scales and do not "
+            "compare; the percentages do.");
+    if (!worstRows)
+        table1.notes.push_back("No worst-10% rows: they need at least " +
+                               std::to_string(kWorstRowsMinLights) + " lights (this sweep has " +
+                               std::to_string(r.lights.size()) +
+                               ", so 10% would be one or two lights).");
+    ReportSection summary{
+        "The report's methods summarized: " + r.caseName + ", " + Lights(r) + "; ref = " + ref,
+        kSummaryColumns,
+        SummaryTable(r, view),
+        {}};
+    return {std::move(table1), std::move(summary)};
 }
 
-std::string FairCaption(const SweepResult& r) {
-    return "The fair comparison (every method on the optimizer's information: the visible "
-           "points, the same margin): " +
-           r.caseName + ", " + Lights(r);
+ReportSection FairSection(const SweepResult& r, const View& view) {
+    return {
+        "The fair comparison (every method on the optimizer's information: the visible "
+        "points, the same margin): " +
+            r.caseName + ", " + Lights(r) + "; ref = " + r.methods[view.reference],
+        "Every method gets what Algorithm 1 gets, the low-resolution readback's visible "
+        "points and the same 2% margin, and optimal searches from every baseline's start. " +
+            std::string(kSummaryColumns),
+        SummaryTable(r, view),
+        {}};
 }
 
-std::string EqualTexelCaption(const SweepResult& r) {
-    return "Equal texels (every partitioned method's maps add up to the single map's texels; "
-           "σ1(J⁻¹): frame pixels per texel): " +
-           r.caseName + ", " + Lights(r);
+ReportSection EqualTexelSection(const SweepResult& r, const View& view, bool terminal) {
+    ReportSection section{
+        "Equal texels (every partitioned method's maps add up to the single map's texels; "
+        "σ1(J⁻¹): frame pixels per texel): " +
+            r.caseName + ", " + Lights(r) + "; ref = " + r.methods[view.reference],
+        "The partitioned methods (cascades) against optimal's single map, all of a method's maps "
+        "together holding the same texels. Besides the summary's columns: the maps per light, the "
+        "mean and largest σ1(J⁻¹) (the most frame pixels one texel spans; above 1 where the map "
+        "undersamples the view), the counted pixels no map covers (mean per light), and the "
+        "partitions that served no visible point (summed over the lights).",
+        EqualTexelTable(r, view, terminal),
+        {}};
+    if (terminal) section.notes.push_back("max σ1(J⁻¹): in --format csv, json and markdown.");
+    return section;
 }
 
-template <class Render>
-std::string Tables(const SweepResult& r, const ReportTable1& report, const std::string& heading,
-                   Render render) {
-    std::string out;
+}  // namespace
+
+std::vector<ReportSection> SweepSections(const SweepResult& r, const ReportTable1& report,
+                                         bool terminal) {
+    std::vector<ReportSection> sections;
     if (const auto view = ReportView(r))
-        out += heading + ReportCaption(r, *view) + "\n" +
-               render(MisclassifiedTable(r, *view, report)) + "\n" + render(SummaryTable(r, *view));
-    if (const auto view = FairView(r))
-        out += (out.empty() ? "" : "\n") + heading + FairCaption(r) + "\n" +
-               render(SummaryTable(r, *view));
+        for (ReportSection& s : ReportSections(r, *view, report)) sections.push_back(std::move(s));
+    if (const auto view = FairView(r)) sections.push_back(FairSection(r, *view));
     if (const auto view = EqualTexelView(r))
-        out += (out.empty() ? "" : "\n") + heading + EqualTexelCaption(r) + "\n" +
-               render(EqualTexelTable(r, *view));
-    return out;
+        sections.push_back(EqualTexelSection(r, *view, terminal));
+    return sections;
 }
+
+namespace {
 
 nlohmann::json FiniteOrNull(double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
@@ -359,6 +443,7 @@ nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) 
              {"mean_ms", s.meanMs}});
     }
     if (worstRows) {
+        doc["worst_10_percent"] = nlohmann::json::array();  // empty under kWorstRowsMinLights
         const std::vector<Row> rows = Table1Rows(r, view);
         for (std::size_t k = 1; k < rows.size(); ++k) {
             nlohmann::json means;
@@ -373,11 +458,11 @@ nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) 
 }  // namespace
 
 std::string SweepTable(const SweepResult& r, const ReportTable1& report) {
-    return Tables(r, report, "", [](const TextTable& t) { return t.Render(); });
+    return SectionsText(SweepSections(r, report, true));
 }
 
 std::string SweepMarkdown(const SweepResult& r, const ReportTable1& report) {
-    return Tables(r, report, "## ", [](const TextTable& t) { return "\n" + t.RenderMarkdown(); });
+    return SectionsMarkdown(SweepSections(r, report, false));
 }
 
 std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
@@ -392,21 +477,20 @@ std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
             for (std::size_t m : view.methods) {
                 const MethodSummary s = Summarize(r, m, view.reference);
                 out << table << ',' << row.set << ',' << r.methods[m] << ','
-                    << Fixed(row.mean[m], 3) << ','
-                    << Fixed(PercentMore(row.mean[m], row.mean[view.reference]), 4) << ',';
+                    << CsvNumber(row.mean[m]) << ','
+                    << CsvNumber(PercentMore(row.mean[m], row.mean[view.reference])) << ',';
                 if (row.set == "all")
-                    out << Fixed(s.beatingPercent, 2) << ',' << Significant(s.meanH, 9) << ','
-                        << Fixed(s.meanMs, 4);
+                    out << CsvNumber(s.beatingPercent) << ',' << CsvNumber(s.meanH) << ','
+                        << CsvNumber(s.meanMs);
                 else
                     out << ",,";
                 out << ',';
                 const std::optional<std::size_t> col = report.Column(PublishedName(r.methods[m]));
-                if (published && reportRow && col) out << Fixed(reportRow->percentMore[*col], 2);
+                if (published && reportRow && col) out << CsvNumber(reportRow->percentMore[*col]);
                 if (row.set == "all")
-                    out << ',' << Significant(s.meanFootprint, 9) << ','
-                        << Significant(s.maxFootprint, 9) << ',' << Fixed(s.meanUncovered, 3) << ','
-                        << s.emptyPartitions << ',' << Significant(s.medianStorage, 9) << ','
-                        << Significant(s.maxStorage, 9);
+                    out << ',' << CsvNumber(s.meanFootprint) << ',' << CsvNumber(s.maxFootprint)
+                        << ',' << CsvNumber(s.meanUncovered) << ',' << s.emptyPartitions << ','
+                        << CsvNumber(s.medianStorage) << ',' << CsvNumber(s.maxStorage);
                 else
                     out << ",,,,,,";
                 out << '\n';
@@ -448,12 +532,11 @@ std::string SweepLightsCsv(const SweepResult& r) {
         const Light& light = r.lights[l];
         const glm::dvec3 v = light.type == Light::Type::kPoint ? light.position : light.direction;
         perLight << l << ',' << (light.type == Light::Type::kPoint ? "point" : "directional") << ','
-                 << Significant(v.x, 9) << ',' << Significant(v.y, 9) << ',' << Significant(v.z, 9)
-                 << ',' << r.receiverPixels[l];
+                 << CsvNumber(v.x) << ',' << CsvNumber(v.y) << ',' << CsvNumber(v.z) << ','
+                 << r.receiverPixels[l];
         for (std::size_t m = 0; m < r.methods.size(); ++m) {
             const SweepCell& c = r.cells[l][m];
-            perLight << ',' << c.misclassified << ',' << Significant(c.h, 9) << ','
-                     << Fixed(c.ms, 4);
+            perLight << ',' << c.misclassified << ',' << CsvNumber(c.h) << ',' << CsvNumber(c.ms);
             if (hasWinner(m)) perLight << ',' << c.winner;
         }
         perLight << '\n';
@@ -464,11 +547,11 @@ std::string SweepLightsCsv(const SweepResult& r) {
 std::string CascadeStudyCsv(const CascadeCountStudy& study) {
     std::ostringstream out;
     out << "method,k,mean_misclassified\n";
-    if (study.optimalMean) out << "optimal,1," << Fixed(*study.optimalMean, 3) << '\n';
+    if (study.optimalMean) out << "optimal,1," << CsvNumber(*study.optimalMean) << '\n';
     for (std::size_t m = 0; m < study.methods.size(); ++m)
         for (std::size_t k = 0; k < study.counts.size(); ++k)
             out << study.methods[m] << ',' << study.counts[k] << ','
-                << Fixed(study.meanMisclassified[m][k], 3) << '\n';
+                << CsvNumber(study.meanMisclassified[m][k]) << '\n';
     return out.str();
 }
 

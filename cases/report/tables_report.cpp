@@ -17,12 +17,12 @@ namespace {
 TextTable ComparisonTable(const TableResult& r) {
     const bool twoFrusta = r.thesis.title == "Projection Aliasing";
     std::vector<std::string> header = {"row", "angle", "worst", "average", "mean+σ"};
-    if (twoFrusta) header.push_back("mean (2 frusta)");
-    for (const char* h : {"thesis angle", "thesis worst", "thesis average", "thesis mean+σ"})
+    if (twoFrusta) header.push_back("mean\n(2 frusta)");
+    for (const char* h : {"thesis\nangle", "thesis\nworst", "thesis\naverage", "thesis\nmean+σ"})
         header.push_back(h);
-    if (twoFrusta) header.push_back("thesis mean (2 frusta)");
-    header.push_back("avg / L1 opt");
-    header.push_back("thesis avg / L1 opt");
+    if (twoFrusta) header.push_back("thesis\nmean\n(2 frusta)");
+    header.push_back("avg /\nL1 opt");
+    header.push_back("thesis\navg /\nL1 opt");
     TextTable table(header);
     const double oursL1 = r.Method("optimal-l1").stats.average;
     const ThesisRow* thesisL1 = r.thesis.RowFor("optimal-l1");
@@ -81,7 +81,7 @@ std::string SceneLine(const TableResult& r) {
 std::string TablesText(const std::vector<TableResult>& results) {
     std::ostringstream out;
     for (const auto& r : results)
-        out << r.thesis.title << " (" << SceneLine(r) << ")\n"
+        out << WrapText(r.thesis.title + " (" + SceneLine(r) + ")", kTerminalColumns, "  ")
             << ComparisonTable(r).Render() << '\n';
     return out.str();
 }
@@ -104,7 +104,6 @@ std::string TablesMarkdown(const std::vector<TableResult>& results) {
 
 std::string TablesCsv(const std::vector<TableResult>& results) {
     std::ostringstream out;
-    out.precision(17);
     out << "case,row,method,angle,worst,average,mean_plus_sigma,thesis_angle,thesis_worst,thesis_"
            "average,"
            "thesis_mean_plus_sigma,thesis_two_frusta_mean\n";
@@ -112,14 +111,14 @@ std::string TablesCsv(const std::vector<TableResult>& results) {
         for (const auto& [label, method] : TableRows()) {
             const auto& m = r.Method(method);
             const ThesisRow* p = r.thesis.RowFor(method);
-            const auto num = [](double v) { return CsvNumber(v, 17); };  // NaN: empty
+            const auto num = [](double v) { return CsvNumber(v); };  // NaN: empty
             out << CsvText(fs::path(r.thesis.file).stem().string()) << ',' << label << ',' << method
                 << ',' << num(m.lexelPlaneDeg) << ',' << num(m.stats.worst()) << ','
                 << num(m.stats.average) << ',' << num(m.stats.meanPlusSigma) << ',';
             if (p)
-                out << p->angle << ',' << p->worst << ',' << p->average << ',' << p->meanPlusSigma
-                    << ','
-                    << (p->twoFrustaMean ? std::to_string(*p->twoFrustaMean) : std::string());
+                out << num(p->angle) << ',' << num(p->worst) << ',' << num(p->average) << ','
+                    << num(p->meanPlusSigma) << ','
+                    << (p->twoFrustaMean ? num(*p->twoFrustaMean) : std::string());
             else
                 out << ",,,,";
             out << '\n';

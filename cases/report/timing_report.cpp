@@ -99,16 +99,23 @@ nlohmann::json MethodJson(const std::vector<FrameTimes>& frames) {
 
 std::string TimingText(const spatial::Scene& scene, const TimingRun& run,
                        const ReportTiming& report) {
+    std::ostringstream header;
+    header << "timing: " << run.caseName << ", " << run.lights.size() << " lights, "
+           << run.focused.size() << " frames per method over " << run.poses
+           << " camera pose(s), frame " << scene.camera.resolution.width << "×"
+           << scene.camera.resolution.height << ", readback " << scene.readback.width << "×"
+           << scene.readback.height << ", maps " << scene.shadowMap.width << "×"
+           << scene.shadowMap.height << "\nbackend " << run.backend << "\ntimed: " << run.passClock
+           << "\noptimal: " << run.optimizer << " every " << run.updateEvery
+           << " frame(s), step 1 from a standard map every " << run.standardEvery
+           << " update(s), else from the light's previous map";
     std::ostringstream out;
-    out << "timing: " << run.caseName << ", " << run.lights.size() << " lights, "
-        << run.focused.size() << " frames per method over " << run.poses
-        << " camera pose(s), frame " << scene.camera.resolution.width << "×"
-        << scene.camera.resolution.height << ", readback " << scene.readback.width << "×"
-        << scene.readback.height << ", maps " << scene.shadowMap.width << "×"
-        << scene.shadowMap.height << "\nbackend " << run.backend << "\ntimed: " << run.passClock
-        << "\noptimal: " << run.optimizer << " every " << run.updateEvery
-        << " frame(s), step 1 from a standard map every " << run.standardEvery
-        << " update(s), else from the light's previous map\n\n";
+    for (std::istringstream lines(header.str()); !lines.eof();) {
+        std::string line;
+        std::getline(lines, line);
+        out << WrapText(line, kTerminalColumns, "  ");
+    }
+    out << '\n';
     TextTable table(kTextHeader);
     for (const auto& [name, frames] :
          {std::pair{"focused", &run.focused}, std::pair{"optimal", &run.optimal}}) {
@@ -116,7 +123,8 @@ std::string TimingText(const spatial::Scene& scene, const TimingRun& run,
             table.AddRow(TextRow(std::string(name) + " " + std::to_string(k), (*frames)[k]));
         table.AddRow(TextRow(std::string(name) + " mean", MeanTimes(*frames)));
     }
-    out << table.Render() << '\n' << RatioText(run, report) << '\n';
+    out << table.Render() << '\n'
+        << WrapText(RatioText(run, report), kTerminalColumns, "  ") << '\n';
     out << "report Table 3 (" << report.table3Lights << " lights, " << report.table3MapSide
         << "² maps, GeForce 7800 GT) beside our means:\n"
         << Table3Text(run, report);
@@ -172,7 +180,7 @@ std::string TimingCsv(const TimingRun& run) {
         const auto* frames = method.second;
         const auto row = [&](const std::string& frame, const FrameTimes& t) {
             out << method.first << ',' << frame;
-            for (const auto& [column, value] : Columns(t)) out << ',' << Fixed(value, 4);
+            for (const auto& [column, value] : Columns(t)) out << ',' << CsvNumber(value);
             out << '\n';
         };
         for (std::size_t k = 0; k < frames->size(); ++k) row(std::to_string(k), (*frames)[k]);

@@ -38,15 +38,15 @@ struct PoseBuffers {
     std::vector<std::vector<spatial::Shade>> shades;  // per study method
 };
 
-spatial::LightOutcome EvaluatePose(const spatial::Scene& scene,
+// `poseScene` is the scene seen from the pose; the evaluator keeps a reference to it, so it must
+// outlive *evaluator.
+spatial::LightOutcome EvaluatePose(const spatial::Scene& poseScene,
                                    const spatial::RenderBackend& backend, std::size_t light,
                                    std::size_t pose, const spatial::EvaluationOptions& options,
                                    std::unique_ptr<spatial::Evaluator>* evaluator) {
-    spatial::Scene poseScene = scene;
-    poseScene.camera = scene.cameraPath[pose];
     *evaluator = MakeEvaluator(poseScene, backend, CameraPathField(pose));
     try {
-        return (*evaluator)->Evaluate(scene.lights[light], options);
+        return (*evaluator)->Evaluate(poseScene.lights[light], options);
     } catch (const DomainError& e) {
         throw InputError(SpatialErrorField(e, LightField(light), CameraPathField(pose)) + ": " +
                          e.what());
@@ -54,9 +54,11 @@ spatial::LightOutcome EvaluatePose(const spatial::Scene& scene,
 }
 
 CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBackend& backend,
-                           std::size_t l, const std::vector<std::string>& methods) {
+                           std::size_t l, const std::vector<std::string>& methods,
+                           const std::function<void()>& onMethodDone) {
     spatial::EvaluationOptions options;
     options.methods = methods;
+    if (onMethodDone) options.onMethodDone = [&](std::string_view) { onMethodDone(); };
     if (std::find(methods.begin(), methods.end(), "optimal") == methods.end())
         options.methods.push_back("optimal");
     options.keepBuffers = true;
@@ -71,8 +73,12 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
     std::optional<spatial::LightMatrix> previous;
     std::optional<PoseBuffers> before;
     for (std::size_t k = 0; k < scene.cameraPath.size(); ++k) {
+        // Declared before the evaluator, which holds a reference to it (it used to be a local of
+        // EvaluatePose: Misclassified below then read a destroyed scene).
+        spatial::Scene poseScene = scene;
+        poseScene.camera = scene.cameraPath[k];
         std::unique_ptr<spatial::Evaluator> evaluator;
-        spatial::LightOutcome o = EvaluatePose(scene, backend, l, k, options, &evaluator);
+        spatial::LightOutcome o = EvaluatePose(poseScene, backend, l, k, options, &evaluator);
         const spatial::HysteresisDecision d = spatial::ApplyHysteresis(
             previous, o.methods[optimal].matrix, o.samples, scene.shadowMap, margin);
         PoseOutcome pose;
@@ -116,11 +122,17 @@ int CameraPathStudy::Changes() const {
 
 std::vector<CameraPathStudy> RunCameraPathStudy(const spatial::Scene& scene,
                                                 const spatial::RenderBackend& backend,
-                                                const std::vector<std::string>& methods) {
+                                                const std::vector<std::string>& methods,
+                                                const std::function<void()>& onMethodDone) {
     std::vector<CameraPathStudy> studies;
     for (std::size_t l = 0; l < scene.lights.size(); ++l)
-        studies.push_back(StudyLight(scene, backend, l, methods));
+        studies.push_back(StudyLight(scene, backend, l, methods, onMethodDone));
     return studies;
+}
+
+std::size_t CameraPathSteps(const spatial::Scene& scene, const std::vector<std::string>& methods) {
+    const bool hasOptimal = std::find(methods.begin(), methods.end(), "optimal") != methods.end();
+    return scene.lights.size() * scene.cameraPath.size() * (methods.size() + (hasOptimal ? 0 : 1));
 }
 
 }  // namespace lexel::cases

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,14 @@ struct CameraPathStudy {
 // One study per fixed light of the scene, over scene.cameraPath, for `methods` (optimal is run
 // for the hysteresis whether listed or not). Throws InputError naming the pose (/camera_path/k)
 // or the light for input the evaluation cannot serve.
+// `onMethodDone` (may be empty) is called after each method of each pose is measured
+// (CameraPathSteps calls in all: a progress bar).
 std::vector<CameraPathStudy> RunCameraPathStudy(const spatial::Scene& scene,
                                                 const spatial::RenderBackend& backend,
-                                                const std::vector<std::string>& methods);
+                                                const std::vector<std::string>& methods,
+                                                const std::function<void()>& onMethodDone = {});
+// The calls RunCameraPathStudy makes to onMethodDone: lights × poses × (methods, and optimal when
+// they lack it).
+std::size_t CameraPathSteps(const spatial::Scene& scene, const std::vector<std::string>& methods);
 
 }  // namespace lexel::cases

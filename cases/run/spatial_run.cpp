@@ -5,6 +5,10 @@
 
 namespace lexel::cases {
 
+std::size_t SpatialRunSteps(const spatial::Scene& scene, const SpatialRunOptions& options) {
+    return scene.lights.size() * options.methods.size() + CameraPathSteps(scene, options.methods);
+}
+
 SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& options) {
     if (scene.lights.empty())
         throw InputError(
@@ -16,6 +20,7 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
     evalOptions.methods = options.methods;
     evalOptions.mapTruth = options.mapTruth;
     evalOptions.keepBuffers = options.keepBuffers;
+    if (options.onStep) evalOptions.onMethodDone = [&](std::string_view) { options.onStep(); };
     // Every fixed light must face some counted pixel; checked for all before any method runs.
     for (std::size_t l = 0; l < scene.lights.size(); ++l)
         CheckLightFacesPixels(*run.evaluator, scene.lights[l], LightField(l));
@@ -26,8 +31,9 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
             throw InputError(SpatialErrorField(e, LightField(l)) + ": " + e.what());
         }
     }
-    if (!scene.cameraPath.empty())
-        run.cameraPath = RunCameraPathStudy(scene, *run.backend, options.methods);
+    if (!scene.cameraPath.empty()) {
+        run.cameraPath = RunCameraPathStudy(scene, *run.backend, options.methods, options.onStep);
+    }
     return run;
 }
 

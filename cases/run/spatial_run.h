@@ -3,6 +3,8 @@
 // temporal-hysteresis study along the case's camera_path.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,7 +21,13 @@ struct SpatialRunOptions {
     bool mapTruth = true;              // also the report's focused 4000² truth map
     bool keepBuffers = false;          // keep shades and maps (for images)
     BackendKind backend = BackendKind::kCpu;
+    // Called after each step SpatialRunSteps counts (a progress bar); may be empty.
+    std::function<void()> onStep;
 };
+
+// The steps of RunSpatialCase: one per fixed light and method, and the camera-path study's
+// (CameraPathSteps) when the case has a camera_path.
+std::size_t SpatialRunSteps(const spatial::Scene& scene, const SpatialRunOptions& options);
 
 struct SpatialRun {
     std::unique_ptr<spatial::RenderBackend> backend;

@@ -80,6 +80,7 @@ TimingRun RunTiming(const spatial::Scene& scene, const TimingOptions& options) {
         } catch (const DomainError& e) {
             throw InputError(SpatialErrorField(e, "/lights", cameraField) + ": " + e.what());
         }
+        if (options.onFrameDone) options.onFrameDone();
         if (k < 0) continue;
         run.focused.push_back(focused);
         run.optimal.push_back(optimal);

@@ -3,6 +3,7 @@
 // same N lights, timed pass by pass (frame_pipeline.h) on the chosen backend.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct TimingOptions {
     int updateEvery = 1;
     int standardEvery = 1;
     std::string optimal = "optimal-report";  // FrameOptions::optimal
+    // Called after each frame (the warm-up one too: frames + 1 calls), both methods rendered; a
+    // progress bar. May be empty.
+    std::function<void()> onFrameDone;
 };
 
 struct TimingRun {

@@ -54,7 +54,8 @@ double MaxDepth(const LightSpace& lightSpace, const Bounds& wsBounds) {
 }
 
 // The light uniforms of shaders.h (LEXEL_LIGHT_UNIFORMS), in double, on `program`.
-void SetLightUniforms(GLuint program, const LightSpace& lightSpace, const LightMatrix& matrix) {
+void SetLightUniforms(GLuint program, const LightSpace& lightSpace, const LightMatrix& matrix,
+                      const UnitFrame& frame) {
     const bool point = lightSpace.IsPoint();
     glm::dvec3 rayBase, unused;
     lightSpace.Ray(glm::dvec3(0.0, 0.0, 1.0), &rayBase, &unused);  // directional: o - s e3
@@ -74,6 +75,8 @@ void SetLightUniforms(GLuint program, const LightSpace& lightSpace, const LightM
     glProgramUniform3dv(program, 17, 1, glm::value_ptr(lightSpace.light().direction));
     glProgramUniform1d(program, 18, lsOffset.z);
     glProgramUniform1d(program, 19, lightSpace.Depth(glm::dvec3(0.0)));
+    glProgramUniform3dv(program, 20, 1, glm::value_ptr(frame.wsOrigin));
+    glProgramUniform1d(program, 21, frame.wsScale);
 }
 
 }  // namespace
@@ -81,10 +84,14 @@ void SetLightUniforms(GLuint program, const LightSpace& lightSpace, const LightM
 GlRenderer::GlRenderer(const TriangleMesh& geometry) : context_(Context::Shared()) {
     const CurrentContext current(context_);
     bounds_ = geometry.ComputeBounds();
+    frame_ = UnitFrameOf(bounds_);
     indexCount_ = static_cast<GLsizei>(3 * geometry.triangles.size());
+    std::vector<glm::vec3> unitPositions(geometry.positions.size());
+    for (std::size_t v = 0; v < unitPositions.size(); ++v)
+        unitPositions[v] = glm::vec3(frame_.ToUnit(geometry.positions[v]));
     glCreateBuffers(1, &vertexBuffer_);
-    glNamedBufferStorage(vertexBuffer_, geometry.positions.size() * sizeof(glm::vec3),
-                         geometry.positions.data(), 0);
+    glNamedBufferStorage(vertexBuffer_, unitPositions.size() * sizeof(glm::vec3),
+                         unitPositions.data(), 0);
     glCreateBuffers(1, &indexBuffer_);
     glNamedBufferStorage(indexBuffer_, geometry.triangles.size() * sizeof(glm::uvec3),
                          geometry.triangles.data(), 0);
@@ -104,8 +111,7 @@ GlRenderer::GlRenderer(const TriangleMesh& geometry) : context_(Context::Shared(
     std::vector<glm::dvec4> planes(normals.size(), glm::dvec4(0.0));
     for (std::size_t t = 0; t < geometry.triangles.size(); ++t) {
         const glm::dvec3 n = geometry.FaceNormal(t);
-        planes[t] =
-            glm::dvec4(n, glm::dot(n, glm::dvec3(geometry.positions[geometry.triangles[t][0]])));
+        planes[t] = glm::dvec4(n, glm::dot(n, geometry.positions[geometry.triangles[t][0]]));
     }
     glCreateBuffers(1, &planeBuffer_);
     glNamedBufferStorage(planeBuffer_, planes.size() * sizeof(glm::dvec4), planes.data(), 0);
@@ -228,9 +234,10 @@ void GlRenderer::RenderCamera(CameraSlot slot, const Camera& camera, Resolution 
     glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_CULL_FACE);
     glUseProgram(cameraProgram_);
-    const glm::mat4 clip = ToFloat(CameraClipFromWorld(camera, resolution));
+    const glm::mat4 clip =
+        ToFloat(CameraClipFromWorld(camera, resolution) * frame_.WorldFromUnit());
     glProgramUniformMatrix4fv(cameraProgram_, 0, 1, GL_FALSE, glm::value_ptr(clip));
-    const glm::vec3 eye(camera.position);
+    const glm::vec3 eye(frame_.ToUnit(camera.position));
     glProgramUniform3fv(cameraProgram_, 1, 1, glm::value_ptr(eye));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, normalBuffer_);
     glBindVertexArray(vertexArray_);
@@ -245,7 +252,7 @@ void GlRenderer::UploadCamera(CameraSlot slot, const CameraBuffer& buffer) {
     const std::size_t n = r.Count();
     std::vector<glm::vec4> position(n), normal(n);
     for (std::size_t i = 0; i < n; ++i) {
-        position[i] = glm::vec4(glm::vec3(buffer.wsPosition[i]), 1.0f);
+        position[i] = glm::vec4(glm::vec3(frame_.ToUnit(buffer.wsPosition[i])), 1.0f);
         normal[i] = glm::vec4(glm::vec3(buffer.wsNormal[i]), 0.0f);
     }
     glTextureSubImage2D(t.color[0], 0, 0, 0, r.width, r.height, GL_RED_INTEGER, GL_INT,
@@ -267,6 +274,8 @@ std::vector<glm::vec4> GlRenderer::ReadPositions(CameraSlot slot) const {
     std::vector<glm::vec4> out(t.resolution.Count());
     glGetTextureImage(t.color[1], 0, GL_RGBA, GL_FLOAT,
                       static_cast<GLsizei>(out.size() * sizeof(glm::vec4)), out.data());
+    for (glm::vec4& p : out)
+        if (p.w != 0.0f) p = glm::vec4(glm::vec3(frame_.ToWorld(glm::dvec3(p))), 1.0f);
     return out;
 }
 
@@ -289,7 +298,8 @@ void GlRenderer::RenderShadowMap(int map, const LightSpace& lightSpace, const Li
     const DepthRange range =
         lightSpace.IsPoint() ? DepthRange{1e-3 * maxDepth, maxDepth} : DepthRange{0.0, maxDepth};
     const glm::mat4 clip =
-        ToFloat(ClipFromWorld(lightSpace, matrix, resolution, range, ClipDepth::kZeroToOne));
+        ToFloat(ClipFromWorld(lightSpace, matrix, resolution, range, ClipDepth::kZeroToOne) *
+                frame_.WorldFromUnit());
 
     BeginPass(PassKind::kShadow);
     const GLfloat empty = 1.0f;
@@ -305,7 +315,7 @@ void GlRenderer::RenderShadowMap(int map, const LightSpace& lightSpace, const Li
     glUseProgram(shadowProgram_);
     glProgramUniformMatrix4fv(shadowProgram_, 0, 1, GL_FALSE, glm::value_ptr(clip));
     glProgramUniform1d(shadowProgram_, 4, 1.0 / t.depthScale);
-    SetLightUniforms(shadowProgram_, lightSpace, matrix);
+    SetLightUniforms(shadowProgram_, lightSpace, matrix, frame_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, planeBuffer_);
     glBindVertexArray(vertexArray_);
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
@@ -350,7 +360,7 @@ void GlRenderer::ShadePass(CameraSlot slot, int map, const LightSpace& lightSpac
     const GLuint p = shadeProgram_;
     glProgramUniform1d(p, 0, m.depthScale);
     glProgramUniform2i(p, 1, m.resolution.width, m.resolution.height);
-    SetLightUniforms(p, lightSpace, m.matrix);
+    SetLightUniforms(p, lightSpace, m.matrix, frame_);
     glBindTextureUnit(0, m.depth);
     for (int i = 0; i < 3; ++i) glBindTextureUnit(1 + i, c.color[i]);
     glBindFramebuffer(GL_FRAMEBUFFER, c.shadeFramebuffer);

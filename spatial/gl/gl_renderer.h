@@ -1,8 +1,8 @@
 // The passes of report Algorithm 1 and §3 on OpenGL 4.5 (render_backend.h names them), with the
 // buffers kept on the GPU between passes, as a renderer would run them:
-//   - camera pass into a slot's G-buffer: triangle id (R32I), world point and facing normal
-//     (RGBA32F), depth reversed (D32F, 1 at the near plane, 0 at the far plane: float precision
-//     is relative, not absolute);
+//   - camera pass into a slot's G-buffer: triangle id (R32I), point in the mesh's unit frame
+//     (scene.h) and facing normal (RGBA32F), depth reversed (D32F, 1 at the near plane, 0 at the
+//     far plane: float precision is relative, not absolute);
 //   - shadow map into a map slot: any light matrix P through ClipFromWorld (clip_matrix.h) with
 //     depth clamping, storing the linear light depth LightSpace::Depth / 2^k (D32F) — along the
 //     texel centre's ray to the triangle's plane, in double — so that the stored value times 2^k
@@ -12,7 +12,10 @@
 //   - the boundary pixels of a shaded slot (a compute pass appending into a buffer): only they
 //     come back to the CPU (report §2.4: the readback is the cost to keep small).
 // Each pass can be timed (PassTimer).
-// The shaders and their precision: shaders.h.
+// The shaders and their precision: shaders.h. Every float the GPU holds (vertices, G-buffer points)
+// is in the mesh's UnitFrame, centred on its bounds and scaled to unit size, and every uniform that
+// maps them is composed with that frame in double: the passes' results do not depend on the
+// scene's size or distance from the origin.
 //
 // Every member function needs the shared context current on the calling thread (CurrentContext);
 // the constructor and destructor take care of it themselves. Throws GlUnavailable when the GPU
@@ -53,8 +56,8 @@ struct GpuTimes {
 
 class GlRenderer {
   public:
-    // Uploads the mesh (float positions, indices, face normals) into the shared context. Throws
-    // GlUnavailable when there is no context or a program does not build.
+    // Uploads the mesh (float unit-frame positions, indices, face normals) into the shared
+    // context. Throws GlUnavailable when there is no context or a program does not build.
     explicit GlRenderer(const TriangleMesh& geometry);
     ~GlRenderer();
     GlRenderer(const GlRenderer&) = delete;
@@ -69,7 +72,7 @@ class GlRenderer {
     // The slot's triangle ids, row-major from the top row (-1 where nothing is visible).
     std::vector<std::int32_t> ReadTriangles(CameraSlot slot) const;
     // The slot's world points and normals as stored on the GPU (float), for agreement tests.
-    std::vector<glm::vec4> ReadPositions(CameraSlot slot) const;
+    std::vector<glm::vec4> ReadPositions(CameraSlot slot) const;  // taken back to world units
     std::vector<glm::vec4> ReadNormals(CameraSlot slot) const;
 
     // The shadow map of `matrix` at `resolution` into map slot `map` ≥ 0 (slots are created on
@@ -122,7 +125,8 @@ class GlRenderer {
     static void Release(MapTarget& target);
 
     const Context& context_;
-    Bounds bounds_;  // of the mesh: the largest light depth for the depth scale
+    Bounds bounds_;    // of the mesh: the largest light depth for the depth scale
+    UnitFrame frame_;  // of bounds_: the frame of every float on the GPU
     GLsizei indexCount_ = 0;
     GLuint emptyVertexArray_ = 0;  // the full-screen triangle needs no attributes
     GLuint vertexArray_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0, normalBuffer_ = 0;

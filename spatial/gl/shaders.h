@@ -8,31 +8,34 @@
 
 namespace lexel::spatial::gl::shaders {
 
-// Both geometry passes: world positions through a 4×4 clip-from-world matrix.
+// Both geometry passes: positions in the mesh's unit frame (scene.h: centred on its bounds and
+// scaled to unit size, so a float carries ~1e-7 of the scene whatever its size and position)
+// through a 4×4 clip-from-unit matrix.
 inline constexpr std::string_view kGeometryVertex = R"(#version 450 core
-layout(location = 0) in vec3 wsVertex;
-layout(location = 0) uniform mat4 clipFromWorld;
-out vec3 wsPoint;
+layout(location = 0) in vec3 unitVertex;
+layout(location = 0) uniform mat4 clipFromUnit;
+out vec3 unitPoint;
 void main() {
-    wsPoint = wsVertex;
-    gl_Position = clipFromWorld * vec4(wsVertex, 1.0);
+    unitPoint = unitVertex;
+    gl_Position = clipFromUnit * vec4(unitVertex, 1.0);
 }
 )";
 
 // The camera pass: per pixel the triangle (gl_PrimitiveID of the one draw call = the mesh's
-// triangle index), the world point and the face normal turned towards the eye (as CpuRenderer).
+// triangle index), the point in the unit frame and the face normal turned towards the eye (as
+// CpuRenderer; the frame is a translation and a positive scale, so normals are the world's).
 inline constexpr std::string_view kCameraFragment = R"(#version 450 core
-layout(location = 1) uniform vec3 wsEye;
+layout(location = 1) uniform vec3 unitEye;
 layout(std430, binding = 0) readonly buffer FaceNormals { vec4 wsFaceNormal[]; };
-in vec3 wsPoint;
+in vec3 unitPoint;
 layout(location = 0) out int triangle;
 layout(location = 1) out vec4 position;
 layout(location = 2) out vec4 normal;
 void main() {
     vec3 n = wsFaceNormal[gl_PrimitiveID].xyz;
-    if (dot(n, wsEye - wsPoint) < 0.0) n = -n;
+    if (dot(n, unitEye - unitPoint) < 0.0) n = -n;
     triangle = gl_PrimitiveID;
-    position = vec4(wsPoint, 1.0);
+    position = vec4(unitPoint, 1.0);
     normal = vec4(n, 0.0);
 }
 )";
@@ -42,7 +45,8 @@ void main() {
 // and the light ray through the texel centre c: from wsLight (point) or from
 // wsLight + (lsThird / X.z) worldFromLs X (directional), along normalize(worldFromLs X) (point)
 // or wsLightDirection (directional), X = lsFromMap (c, 1). In float the ray's direction carries
-// ~1e-7 relative error, which a grazing receiver turns into more than the 1e-5 bias.
+// ~1e-7 relative error, which a grazing receiver turns into more than the 1e-5 bias. WorldPoint
+// takes a unit-frame float point back to world coordinates in double.
 #define LEXEL_LIGHT_UNIFORMS                                                                   \
     "layout(location = 10) uniform int pointLight;\n"                                          \
     "layout(location = 11) uniform dmat3 lsFromWorld;\n"                                       \
@@ -54,6 +58,11 @@ void main() {
     "layout(location = 17) uniform dvec3 wsLightDirection;\n"                                  \
     "layout(location = 18) uniform double lsThird;\n"                                          \
     "layout(location = 19) uniform double depthOffset;\n"                                      \
+    "layout(location = 20) uniform dvec3 wsUnitOrigin;\n"                                      \
+    "layout(location = 21) uniform double wsUnitScale;\n"                                      \
+    "dvec3 WorldPoint(vec3 unitPoint) {\n"                                                     \
+    "    return wsUnitOrigin + wsUnitScale * dvec3(unitPoint);\n"                              \
+    "}\n"                                                                                      \
     "void LightRay(dvec2 texelCentre, out dvec3 origin, out dvec3 direction) {\n"              \
     "    dvec3 X = lsFromMap * dvec3(texelCentre, 1.0);\n"                                     \
     "    if (pointLight != 0) {\n"                                                             \
@@ -84,12 +93,12 @@ inline constexpr std::string_view kShadowFragment =
     "#version 450 core\n"
     "layout(std430, binding = 2) readonly buffer FacePlanes { dvec4 wsFacePlane[]; };\n"
     "layout(location = 4) uniform double invDepthScale;\n"
-    "in vec3 wsPoint;\n" LEXEL_LIGHT_UNIFORMS R"(
+    "in vec3 unitPoint;\n" LEXEL_LIGHT_UNIFORMS R"(
 void main() {
     dvec3 origin, direction;
     LightRay(dvec2(gl_FragCoord.xy), origin, direction);
     dvec4 plane = wsFacePlane[gl_PrimitiveID];
-    double depth = dot(dvec3(wsPoint) - origin, direction);  // a degenerate triangle's
+    double depth = dot(WorldPoint(unitPoint) - origin, direction);  // a degenerate triangle's
     double facing = dot(plane.xyz, direction);
     if (facing != 0.0) {
         double t = (plane.w - dot(plane.xyz, origin)) / facing;
@@ -123,7 +132,7 @@ const double kRelativeBias = 1e-5;
 
 uint ShadeOf(ivec2 pixel) {
     if (texelFetch(triangleImage, pixel, 0).x < 0) return kEmpty;
-    dvec3 p = dvec3(texelFetch(positionImage, pixel, 0).xyz);
+    dvec3 p = WorldPoint(texelFetch(positionImage, pixel, 0).xyz);
     dvec3 n = dvec3(texelFetch(normalImage, pixel, 0).xyz);
     dvec3 toLight = pointLight != 0 ? normalize(wsLight - p) : -wsLightDirection;
     if (!(dot(n, toLight) > 0.0)) return kFacingAway;

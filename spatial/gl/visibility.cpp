@@ -27,7 +27,13 @@ CameraBuffer CameraBufferFromTriangles(const TriangleMesh& geometry, const Camer
     out.wsPosition.assign(n, glm::dvec3(0.0));
     out.wsNormal.assign(n, glm::dvec3(0.0));
     out.triangle.assign(triangle.begin(), triangle.end());
-    const glm::dmat4 screenFromWorld = camera.ScreenFromWorld(resolution);
+    // Q·[x; 1] = Q_eye·[x − eye; 1], with Q_eye the same camera moved to the origin (as the CPU
+    // renderer computes it): the window depth without the large translation whose cancellation
+    // would cost it digits in a scene far from the origin.
+    Camera eyeCentred = camera;
+    eyeCentred.target = camera.target - camera.position;
+    eyeCentred.position = glm::dvec3(0.0);
+    const glm::dmat4 screenFromEye = eyeCentred.ScreenFromWorld(resolution);
     const glm::dvec3 wsEye = camera.position;
     tbb::parallel_for(0, resolution.height, [&](int y) {
         for (int x = 0; x < resolution.width; ++x) {
@@ -43,7 +49,7 @@ CameraBuffer CameraBufferFromTriangles(const TriangleMesh& geometry, const Camer
                 continue;
             }
             const glm::dvec3 ws = wsEye + s * direction;
-            const glm::dvec4 h = screenFromWorld * glm::dvec4(ws, 1.0);
+            const glm::dvec4 h = screenFromEye * glm::dvec4(s * direction, 1.0);
             out.wsPosition[i] = ws;
             out.windowDepth[i] = h.z / h.w;
             if (glm::dot(n, wsEye - ws) < 0.0) n = -n;

@@ -1,9 +1,9 @@
 // A cap on the memory the calling thread takes through operator new while a scope lives. Assimp
 // reserves what a model file's counts say before it reads the values they count (a PLY face whose
 // list length read 1.9e9 made it reserve 7.6 GB for a 303-byte file: the mesh_fuzzer input
-// tests/fuzz/seeds/mesh/regress_ply_list_length.ply; PLY is no longer read), and no check of a
-// header sees every count of a body; LoadMesh reads each file under a cap proportional to its
-// size.
+// tests/fuzz/seeds/mesh/regress_ply_list_length.ply; Assimp no longer reads PLY: lexel has its own
+// reader), and no check of a header sees every count of a body; LoadMesh reads each file under a
+// cap proportional to its size.
 //
 // Linking this file replaces the global operator new and delete of the whole program (malloc and
 // free underneath; the bytes a block holds are malloc_usable_size). Outside a scope they cost one

@@ -67,8 +67,9 @@ namespace {
 class CpuRenderer final : public RenderBackend {
   public:
     explicit CpuRenderer(const TriangleMesh& geometry) : geometry_(geometry) {
-        const Bounds b = geometry.ComputeBounds();
-        sceneRadius_ = b.Empty() ? 1.0 : std::max(b.Radius(), 1e-12);
+        // A scene of one point (radius 0) covers no pixel: any positive length serves it.
+        const double radius = geometry.ComputeBounds().Radius();
+        sceneRadius_ = radius > 0.0 && std::isfinite(radius) ? radius : 1.0;
         normals_.resize(geometry.triangles.size());
         for (std::size_t t = 0; t < normals_.size(); ++t) normals_[t] = geometry.FaceNormal(t);
     }
@@ -76,16 +77,23 @@ class CpuRenderer final : public RenderBackend {
     std::string_view Name() const override { return "cpu"; }
 
     CameraBuffer RenderCamera(const Camera& camera, Resolution resolution) const override {
-        const glm::dmat4 screenFromWorld = camera.ScreenFromWorld(resolution);
+        // Q·[x; 1] = Q_eye·[x - eye; 1], with Q_eye the same camera moved to the origin: the
+        // same map, without the large translation whose cancellation would cost the window depth
+        // its digits far from the origin (the readback's smoothness test needs ~1e-12).
+        Camera eyeCentred = camera;
+        eyeCentred.target = camera.target - camera.position;
+        eyeCentred.position = glm::dvec3(0.0);
+        const glm::dmat4 screenFromEye = eyeCentred.ScreenFromWorld(resolution);
         const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
         RasterBuffer raster = MakeRasterBuffer(resolution);
         // Depth key: distance along the view axis (= clip w); beyond the far plane is not seen.
-        const auto viewDepth = [&](const glm::dvec3& ws) {
-            const double z = glm::dot(forward, ws - camera.position);
+        // The raster's points are eye-relative (world axes, origin at the eye).
+        const auto viewDepth = [&](const glm::dvec3& eyeRelative) {
+            const double z = glm::dot(forward, eyeRelative);
             return z <= camera.farPlane ? z : std::numeric_limits<double>::infinity();
         };
-        RasterizeNearest(geometry_, ImageRows(screenFromWorld), camera.nearPlane, viewDepth,
-                         &raster);
+        RasterizeNearest(geometry_, ImageRows(screenFromEye), camera.nearPlane, viewDepth, &raster,
+                         camera.position);
 
         CameraBuffer out;
         out.resolution = resolution;
@@ -95,9 +103,12 @@ class CpuRenderer final : public RenderBackend {
         out.triangle = std::move(raster.triangle);
         tbb::parallel_for(std::size_t(0), resolution.Count(), [&](std::size_t i) {
             if (out.triangle[i] < 0) return;
-            const glm::dvec3& ws = out.wsPosition[i];
-            const glm::dvec4 h = screenFromWorld * glm::dvec4(ws, 1.0);
+            // The window depth is a function of the view depth alone (the projection's depth row
+            // involves only z and w), so it comes from the eye-relative depth key, whose rounding
+            // is relative to the distance from the eye, not from the world's origin.
+            const glm::dvec4 h = screenFromEye * glm::dvec4(raster.depth[i] * forward, 1.0);
             out.windowDepth[i] = h.z / h.w;
+            const glm::dvec3& ws = out.wsPosition[i];
             glm::dvec3 n = normals_[out.triangle[i]];
             if (glm::dot(n, camera.position - ws) < 0.0) n = -n;
             out.wsNormal[i] = n;
@@ -109,7 +120,9 @@ class CpuRenderer final : public RenderBackend {
                               Resolution resolution) const override {
         const ImageFromWorld view = ImageRows(MapFromWorld(lightSpace, matrix));
         RasterBuffer raster = MakeRasterBuffer(resolution);
-        const auto lightDepth = [&](const glm::dvec3& ws) { return lightSpace.Depth(ws); };
+        const auto lightDepth = [&](const glm::dvec3& wsPoint) {
+            return lightSpace.Depth(wsPoint);
+        };
         // w = p4·X is a length; 1e-9 scene radii keeps clipped vertices finite.
         RasterizeNearest(geometry_, view, 1e-9 * sceneRadius_, lightDepth, &raster);
 

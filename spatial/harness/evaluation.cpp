@@ -42,9 +42,8 @@ std::vector<std::uint8_t> Evaluator::TraceTruth(const LightSpace& lightSpace) co
         if (!(glm::dot(frame_.wsNormal[i], toLight) > 0.0)) continue;
         const glm::dvec3 origin = ws + offset * frame_.wsNormal[i];
         const double distance = lightSpace.DistanceToLight(origin);
-        const float tFar = std::isinf(distance) ? std::numeric_limits<float>::infinity()
-                                                : static_cast<float>(distance - offset);
-        rays.push_back({glm::vec3(origin), glm::vec3(toLight), 0.0f, tFar});
+        const double tFar = std::isinf(distance) ? distance : distance - offset;
+        rays.push_back(caster_->ToShadowRay(origin, toLight, 0.0, tFar));
         pixels.push_back(i);
     }
     std::vector<std::uint8_t> occluded(rays.size(), 0);
@@ -295,6 +294,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
         m.winner = computed.winner;
         Measure(lightSpace, computed, out, grazing, truth, options.keepBuffers, &m);
         out.methods.push_back(std::move(m));
+        if (options.onMethodDone) options.onMethodDone(method);
     }
     if (options.keepBuffers) out.truth = std::move(truth);
     return out;

@@ -21,9 +21,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lexel/spatial/cascades.h"
@@ -51,7 +53,9 @@ double PerspectiveAliasing(const Camera& camera, const LightSpace& lightSpace,
 // 0 when framePixels ≤ 0.
 double EffectiveStorageFactor(std::int64_t texels, double aliasing, std::int64_t framePixels);
 
-inline constexpr double kRayOffset = 1e-5;  // scene radii; Embree works in float
+// The truth rays' origin offset along the surface normal, in scene radii: Embree works in float,
+// in the scene's unit frame (ray_caster.h), where this is ~100 ulps of a coordinate.
+inline constexpr double kRayOffset = 1e-5;
 // A sample where |n · l| < kGrazingCos (the light within ~11.5° of the receiver's plane) is a
 // grazing sample: its footprint is mostly projection aliasing (Lloyd 2006 eq. 1's cosine ratio),
 // which no light matrix removes.
@@ -62,6 +66,8 @@ struct EvaluationOptions {
     bool mapTruth = false;             // also render the report's focused truth map
     int truthMapSize = 4000;           // its resolution (square)
     bool keepBuffers = false;          // keep shades and maps (for images)
+    // Called after each method is measured, with its name (a progress bar); may be empty.
+    std::function<void(std::string_view method)> onMethodDone;
 };
 
 // One cascade of a partitioned method: its matrix, map, depth interval and readback points

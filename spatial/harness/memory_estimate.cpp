@@ -25,9 +25,9 @@ constexpr double kTexelScratchBytes = 8, kTexelBytes = 4;
 // Kept buffers become images one at a time (images.h, RGB float: 12 bytes a pixel): the frame
 // and its error map per frame pixel, the shadow map's picture per texel.
 constexpr double kImageBytes = 12;
-// Per triangle: the mesh (3 vertices 36, indices 12) and Embree's BVH (about 100 in its
+// Per triangle: the mesh (3 double vertices 72, indices 12) and Embree's BVH (about 100 in its
 // high-quality build) with world-space copies for the CPU rasterizer (72).
-constexpr double kTriangleBytes = 220;
+constexpr double kTriangleBytes = 256;
 // Over-reservation by std::vector growth and allocator slack.
 constexpr double kHeadroom = 1.5;
 

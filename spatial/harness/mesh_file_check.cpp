@@ -3,8 +3,13 @@
 // before Assimp reserves memory for it.
 #include "lexel/spatial/harness/mesh_file_check.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -298,10 +303,7 @@ void CheckMeshFile(const std::filesystem::path& path) {
         Refuse(path, "is " + std::to_string(size) + " bytes, larger than the " +
                          std::to_string(kMaxMeshFileBytes >> 20) + " MiB a mesh file may be");
     const std::string extension = LowerExtension(path);
-    if (extension == ".ply")
-        Refuse(path,
-               "PLY is not read: Assimp 5.2's PLY reader overflows its buffers on malformed "
-               "files (convert the mesh to OBJ, OFF or STL)");
+    if (extension == ".ply" || extension == ".gltf" || extension == ".glb") return;
     if (extension != ".obj" && extension != ".off" && extension != ".stl")
         Refuse(path, "format '" + extension +
                          "' is not read (mesh formats: " + std::string(kMeshFormats) + ")");
@@ -313,6 +315,32 @@ void CheckMeshFile(const std::filesystem::path& path) {
                "or UTF-8)");
     if (extension == ".off") CheckOff(path, std::move(text), size);
     if (extension == ".stl") CheckStl(path, text, size);
+}
+
+std::string ReadRegularFile(const std::filesystem::path& path, std::uintmax_t maxBytes) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) Refuse(path, "cannot open the file");
+    struct stat st {};
+    std::string bytes;
+    const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    const bool small = regular && static_cast<std::uintmax_t>(st.st_size) <= maxBytes;
+    if (small) {
+        bytes.resize(static_cast<std::size_t>(st.st_size));
+        std::size_t done = 0;
+        while (done < bytes.size()) {
+            const ::ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) break;
+            done += static_cast<std::size_t>(n);
+        }
+        bytes.resize(done);  // a file that shrank while read is read as it is now
+    }
+    ::close(fd);
+    if (!regular) Refuse(path, "is not a regular file");
+    if (!small)
+        Refuse(path, "is " + std::to_string(st.st_size) + " bytes, more than the " +
+                         std::to_string(maxBytes) + " read");
+    return bytes;
 }
 
 }  // namespace lexel::spatial

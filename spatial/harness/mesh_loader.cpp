@@ -1,5 +1,6 @@
-// Model files through Assimp (see mesh_loader.h). Assimp logs only through DefaultLogger, which we
-// never create, so its NullLogger keeps stdout and stderr clean.
+// Model files (see mesh_loader.h): OBJ, OFF and STL through Assimp, PLY and glTF through their
+// readers, each under an allocation cap. Assimp logs only through DefaultLogger, which we never
+// create, so its NullLogger keeps stdout and stderr clean.
 #include "lexel/spatial/harness/mesh_loader.h"
 
 #include <assimp/DefaultIOStream.h>
@@ -12,25 +13,33 @@
 #include <unistd.h>
 
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/allocation_cap.h"
 #include "lexel/spatial/harness/mesh_file_check.h"
+#include "lexel/spatial/harness/mesh_gltf_reader.h"
+#include "lexel/spatial/harness/mesh_ply_reader.h"
 
 namespace lexel::spatial {
 namespace {
 
-// Assimp's messages can span lines; error messages are one line.
+// Assimp's and tinygltf's messages can span lines, and quote a file's bytes: error messages are one
+// line of printable text (line ends as spaces, other control characters as '?').
 std::string OneLine(std::string text) {
     for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
+        if (c == '\n' || c == '\r')
+            c = ' ';
+        else if ((c >= 0 && c < 0x20) || c == 0x7f)
+            c = '?';
     while (!text.empty() && text.back() == ' ') text.pop_back();
     return text.empty() ? std::string("unknown error") : text;
 }
@@ -187,12 +196,42 @@ const aiScene* ReadScene(Assimp::Importer& importer, const std::filesystem::path
     return scene;
 }
 
-}  // namespace
+// Runs `read` under a ScopedAllocationCap of capBytes: a refusal becomes the one-line error
+// ReadScene gives, any other failure "<name>: cannot read <format>: <reason>".
+template <class T, class Read>
+T ReadUnderCap(const std::string& name, const char* format, std::uintmax_t capBytes, Read read) {
+    std::optional<T> result;
+    std::optional<std::string> error;
+    bool refused = false;
+    {
+        const ScopedAllocationCap cap(capBytes);
+        try {
+            result.emplace(read());
+        } catch (const std::bad_alloc&) {
+            // the cap refused, or the machine: told apart below
+        } catch (const std::exception& e) {  // DomainError, or a library's own (length_error)
+            error = e.what();
+        }
+        refused = cap.Refused();
+    }
+    if (refused)
+        throw DomainError(Subject::kGeometry,
+                          name + ": cannot read mesh: reading it needs more than " +
+                              std::to_string(capBytes >> 20) +
+                              " MiB (a count in the file larger than its data)");
+    if (error)
+        throw DomainError(Subject::kGeometry,
+                          name + ": cannot read " + format + ": " + OneLine(*error));
+    if (!result) throw std::bad_alloc();
+    return std::move(*result);
+}
 
-TriangleMesh LoadMesh(const std::filesystem::path& path) {
+std::uintmax_t ReadCapBytes(std::uintmax_t bytes) {
+    return kReadBaseBytes + kReadBytesPerFileByte * bytes;
+}
+
+TriangleMesh LoadAssimpMesh(const std::filesystem::path& path) {
     const std::string name = path.string();
-    CheckMeshFile(path);  // size, format and declared counts, before Assimp allocates for them
-
     Assimp::Importer importer;
     // Points and lines are removed by aiProcess_SortByPType rather than kept as degenerate meshes.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
@@ -226,5 +265,43 @@ TriangleMesh LoadMesh(const std::filesystem::path& path) {
         throw DomainError(Subject::kGeometry, name + ": the file holds no triangles");
     return mesh;
 }
+
+// glTF in two passes, each under its cap: the buffer files found and sized first, then the
+// document and its buffers read under a cap that counts them too.
+LoadedMesh LoadGltfMesh(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    const std::string bytes = ReadRegularFile(path, kMaxMeshFileBytes);
+    const bool binary = IsBinaryGltf(bytes);
+    const std::filesystem::path directory = path.parent_path();
+    const GltfBufferFiles files = ReadUnderCap<GltfBufferFiles>(
+        name, "glTF", ReadCapBytes(bytes.size()),
+        [&] { return FindGltfBufferFiles(bytes, binary, directory); });
+    return {
+        ReadUnderCap<TriangleMesh>(name, "glTF", ReadCapBytes(bytes.size() + files.bytes),
+                                   [&] { return ReadGltfMesh(bytes, binary, directory, files); }),
+        binary ? "glTF 2.0 (binary)" : "glTF 2.0 (JSON)"};
+}
+
+LoadedMesh LoadPlyMesh(const std::filesystem::path& path) {
+    const std::string bytes = ReadRegularFile(path, kMaxMeshFileBytes);
+    LoadedMesh loaded{ReadUnderCap<TriangleMesh>(path.string(), "PLY", ReadCapBytes(bytes.size()),
+                                                 [&] { return ReadPlyMesh(bytes); }),
+                      {}};
+    loaded.format = std::string("PLY (") + PlyEncodingName(ReadPlyEncoding(bytes)) + ")";
+    return loaded;
+}
+
+}  // namespace
+
+LoadedMesh LoadMeshFile(const std::filesystem::path& path) {
+    CheckMeshFile(path);  // size, format and declared counts, before Assimp allocates for them
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (extension == ".PLY") return LoadPlyMesh(path);
+    if (extension == ".GLTF" || extension == ".GLB") return LoadGltfMesh(path);
+    return {LoadAssimpMesh(path), extension.substr(1)};  // OBJ, OFF, STL
+}
+
+TriangleMesh LoadMesh(const std::filesystem::path& path) { return LoadMeshFile(path).mesh; }
 
 }  // namespace lexel::spatial

@@ -51,6 +51,44 @@ std::vector<std::string> SpatialMethodNames() {
     return names;
 }
 
+namespace {
+
+struct MethodDescription {
+    std::string_view name, description;
+};
+
+// One line per method of SpatialMethodNames (cases/README.md, "3D methods", says more).
+constexpr MethodDescription kDescriptions[] = {
+    {"optimal", "Algorithm 1 from every baseline's start, the least h wins (fair reference)"},
+    {"optimal-refined", "optimal, its best start refined by Ceres LBFGS on the unit sphere"},
+    {"focused-tight", "focused's axis, minimum-area rectangle around the visible points"},
+    {"lispsm-tight", "LiSPSM (Wimmer et al. 2004) fitted to the visible points"},
+    {"lispsm-engine", "lispsm-tight with the engines' n (z1 = z0 + d sin γ: Filament, OGRE)"},
+    {"psm-tight", "PSM (Stamminger & Drettakis 2002) fitted to the visible points"},
+    {"plane-optimal", "Chong & Gortler 2004: the floor plane's optimum, refitted to the view"},
+    {"normal", "the light's frustum over the scene bounds"},
+    {"optimal-report", "Algorithm 1 as published: from focused's axis only (Table 1's optimal)"},
+    {"focused", "the report's focused map: view frustum and scene bounds on the light's plane"},
+    {"lispsm", "LiSPSM for the view frustum and scene bounds, as the report ran it"},
+    {"psm", "PSM with Kozlov's fixes for the view frustum and scene bounds"},
+    {"optimal-shear", "Algorithm 1 with the report's affine shear (Fig. 3), optimized exactly"},
+    {"pssm", "cascades: Zhang et al. 2006's split depths, a focused-tight map each"},
+    {"sdsm", "cascades: Lauritzen et al. 2011, log splits of the visible depth range"},
+    {"sdsm-snap", "sdsm with texel snapping for directional lights"},
+    {"sdsm-rect", "sdsm's partitions, each fitted with the minimum-area rectangle"},
+    {"zp-lispsm", "cascades: Lloyd et al. 2006's log z-partitions, LiSPSM in each"},
+    {"fp-lispsm", "Lloyd et al. 2006's face partitioning: a LiSPSM map per face wedge"},
+    {"sdsm-optimal", "sdsm's partitions, Algorithm 1 (multi-start) in each"},
+};
+
+}  // namespace
+
+std::string_view SpatialMethodDescription(std::string_view name) {
+    for (const MethodDescription& d : kDescriptions)
+        if (d.name == name) return d.description;
+    return {};
+}
+
 bool IsSpatialMethod(std::string_view name) {
     const std::vector<std::string> names = SpatialMethodNames();
     return std::find(names.begin(), names.end(), name) != names.end();

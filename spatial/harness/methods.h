@@ -49,6 +49,8 @@ std::vector<std::string> FairMethodNames();
 // The partitioned methods, each compared with optimal at the same total texels.
 std::vector<std::string> PartitionedMethodNames();
 bool IsSpatialMethod(std::string_view name);
+// One line saying what the method is (for `lexel --help`); empty for an unknown name.
+std::string_view SpatialMethodDescription(std::string_view name);
 bool IsPartitionedMethod(std::string_view name);
 
 // The matrix; for the optimal* methods the optimizer's trace (h per iteration, time profile)

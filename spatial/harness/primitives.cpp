@@ -22,8 +22,8 @@ glm::dmat4 Transform::Matrix() const {
 TriangleMesh TransformMesh(const TriangleMesh& mesh, const glm::dmat4& wsFromOs) {
     TriangleMesh out;
     out.positions.reserve(mesh.positions.size());
-    for (const glm::vec3& osPoint : mesh.positions)
-        out.positions.push_back(glm::vec3(glm::dvec3(wsFromOs * glm::dvec4(osPoint, 1.0))));
+    for (const glm::dvec3& osPoint : mesh.positions)
+        out.positions.push_back(glm::dvec3(wsFromOs * glm::dvec4(osPoint, 1.0)));
     out.triangles = mesh.triangles;
     if (glm::determinant(glm::dmat3(wsFromOs)) < 0.0)
         for (glm::uvec3& t : out.triangles) std::swap(t[1], t[2]);
@@ -37,8 +37,7 @@ TriangleMesh TransformMesh(const TriangleMesh& mesh, const Transform& t) {
 TriangleMesh MakePlane() {
     TriangleMesh mesh;
     // Counter-clockwise seen from +y: -z edge to +z edge on the left, then back on the right.
-    mesh.positions = {
-        {-0.5f, 0.0f, -0.5f}, {-0.5f, 0.0f, 0.5f}, {0.5f, 0.0f, 0.5f}, {0.5f, 0.0f, -0.5f}};
+    mesh.positions = {{-0.5, 0.0, -0.5}, {-0.5, 0.0, 0.5}, {0.5, 0.0, 0.5}, {0.5, 0.0, -0.5}};
     mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
     return mesh;
 }
@@ -48,7 +47,7 @@ TriangleMesh MakeBox() {
     // Corner i has x, y, z = +0.5 where bit 0, 1, 2 of i is set.
     for (int i = 0; i < 8; ++i)
         mesh.positions.push_back(
-            {(i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f});
+            {(i & 1) ? 0.5 : -0.5, (i & 2) ? 0.5 : -0.5, (i & 4) ? 0.5 : -0.5});
     // Each face as a quad, counter-clockwise seen from outside.
     const unsigned quads[6][4] = {
         {0, 4, 6, 2},  // -x
@@ -74,18 +73,17 @@ TriangleMesh MakeSphere(int slices, int stacks) {
     // Vertex 0 is the north pole (+y), then rings 1 .. stacks-1 from north to south, then the
     // south pole. Polar angle θ from +y, azimuth φ; p = (sinθ cosφ, cosθ, sinθ sinφ), for which
     // ∂p/∂φ × ∂p/∂θ points outward, so (ring i, j), (i, j+1), (i+1, j) is counter-clockwise.
-    mesh.positions.push_back({0.0f, 1.0f, 0.0f});
+    mesh.positions.push_back({0.0, 1.0, 0.0});
     for (int i = 1; i < stacks; ++i) {
         const double theta = pi * i / stacks;
         for (int j = 0; j < slices; ++j) {
             const double phi = 2.0 * pi * j / slices;
-            mesh.positions.push_back(
-                glm::vec3(glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                     std::sin(theta) * std::sin(phi))));
+            mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta),
+                                      std::sin(theta) * std::sin(phi)});
         }
     }
     const unsigned south = static_cast<unsigned>(mesh.positions.size());
-    mesh.positions.push_back({0.0f, -1.0f, 0.0f});
+    mesh.positions.push_back({0.0, -1.0, 0.0});
 
     auto ring = [slices](int i, int j) {
         return static_cast<unsigned>(1 + (i - 1) * slices + (j % slices));
@@ -111,12 +109,12 @@ TriangleMesh MakeCylinder(int slices) {
     for (double y : {0.5, -0.5})
         for (int j = 0; j < slices; ++j) {
             const double phi = 2.0 * pi * j / slices;
-            mesh.positions.push_back(glm::vec3(glm::dvec3(std::cos(phi), y, std::sin(phi))));
+            mesh.positions.push_back({std::cos(phi), y, std::sin(phi)});
         }
     const unsigned n = static_cast<unsigned>(slices);
     const unsigned topCentre = 2 * n, bottomCentre = 2 * n + 1;
-    mesh.positions.push_back({0.0f, 0.5f, 0.0f});
-    mesh.positions.push_back({0.0f, -0.5f, 0.0f});
+    mesh.positions.push_back({0.0, 0.5, 0.0});
+    mesh.positions.push_back({0.0, -0.5, 0.0});
     for (unsigned j = 0; j < n; ++j) {
         const unsigned k = (j + 1) % n;
         // Side: same orientation argument as the sphere (top ring plays θ small).
@@ -131,7 +129,8 @@ TriangleMesh MakeCylinder(int slices) {
 double SignedVolume(const TriangleMesh& mesh) {
     double sixVolume = 0.0;
     for (const glm::uvec3& t : mesh.triangles) {
-        const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
+        const glm::dvec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]],
+                         &c = mesh.positions[t[2]];
         sixVolume += glm::dot(a, glm::cross(b, c));
     }
     return sixVolume / 6.0;

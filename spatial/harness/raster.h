@@ -46,8 +46,9 @@ struct RasterBuffer {
 namespace raster_detail {
 
 struct ClipVertex {
-    glm::dvec3 image;  // (x·w, y·w, w)
-    glm::dvec3 world;
+    glm::dvec3 image;     // (x·w, y·w, w)
+    glm::dvec3 world;     // the world point
+    glm::dvec3 relative;  // the same relative to the view origin
 };
 
 // Sutherland–Hodgman against the single plane w ≥ wMin; at most 4 vertices out.
@@ -60,7 +61,8 @@ inline int ClipNear(const std::array<ClipVertex, 3>& in, double wMin, ClipVertex
         if (aIn) out[n++] = a;
         if (aIn != bIn) {
             const double t = (wMin - a.image.z) / (b.image.z - a.image.z);
-            out[n++] = {a.image + t * (b.image - a.image), a.world + t * (b.world - a.world)};
+            out[n++] = {a.image + t * (b.image - a.image), a.world + t * (b.world - a.world),
+                        a.relative + t * (b.relative - a.relative)};
         }
     }
     return n;
@@ -88,11 +90,18 @@ inline bool OwnsTies(const glm::dvec2& a, const glm::dvec2& b) {
 }  // namespace raster_detail
 
 // Rasterizes `mesh` through `view` into `buffer` (which must be sized and initialised: depth
-// +inf, triangle -1). DepthFn(const glm::dvec3& wsPoint) → double is the depth key (smaller is
-// nearer). wMin > 0 is the clip distance in the units of w. Parallel over bands of rows.
+// +inf, triangle -1). `view` maps homogeneous points relative to wsViewOrigin, x - wsViewOrigin,
+// and DepthFn(const glm::dvec3& relative) → double gives the depth key (smaller is nearer) of
+// the point under a pixel centre so relative; the buffer keeps the world point, interpolated from
+// the world vertices (so a point of a plane y = 0 has y = 0 exactly). With the eye as the view
+// origin a scene far from the world's origin keeps its digits in the image position and the
+// depth: no large translation cancels, and their rounding is relative to the distance from the
+// eye, not from the origin. wMin > 0 is the clip distance in the units of w. Parallel over bands
+// of rows.
 template <class DepthFn>
 void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, double wMin,
-                      const DepthFn& depthOf, RasterBuffer* buffer) {
+                      const DepthFn& depthOf, RasterBuffer* buffer,
+                      const glm::dvec3& wsViewOrigin = glm::dvec3(0.0)) {
     using namespace raster_detail;
     const Resolution res = buffer->resolution;
     constexpr int kBandRows = 16;
@@ -102,7 +111,7 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
     struct Piece {
         std::array<glm::dvec2, 3> xy;
         std::array<double, 3> invW;
-        std::array<glm::dvec3, 3> world;
+        std::array<glm::dvec3, 3> world, relative;
         glm::dvec2 lo, hi;
         std::int32_t triangle;
     };
@@ -111,8 +120,9 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         std::array<ClipVertex, 3> v;
         for (int k = 0; k < 3; ++k) {
-            const glm::dvec3 ws(mesh.positions[mesh.triangles[t][k]]);
-            v[k] = {view * glm::dvec4(ws, 1.0), ws};
+            const glm::dvec3& ws = mesh.positions[mesh.triangles[t][k]];
+            const glm::dvec3 relative = ws - wsViewOrigin;
+            v[k] = {view * glm::dvec4(relative, 1.0), ws, relative};
         }
         ClipVertex clipped[4];
         const int n = ClipNear(v, wMin, clipped);
@@ -123,6 +133,7 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
                 p.invW[k] = 1.0 / c[k]->image.z;
                 p.xy[k] = glm::dvec2(c[k]->image) * p.invW[k];
                 p.world[k] = c[k]->world;
+                p.relative[k] = c[k]->relative;
             }
             // Orient counter-clockwise in the image (Edge > 0 inside); drop degenerate ones.
             double area = Edge(p.xy[0], p.xy[1], p.xy[2]);
@@ -130,6 +141,7 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
                 std::swap(p.xy[1], p.xy[2]);
                 std::swap(p.invW[1], p.invW[2]);
                 std::swap(p.world[1], p.world[2]);
+                std::swap(p.relative[1], p.relative[2]);
                 area = -area;
             }
             if (!(area > 0.0)) continue;
@@ -173,15 +185,16 @@ void RasterizeNearest(const TriangleMesh& mesh, const ImageFromWorld& view, doub
                     const double b0 = e[0] * p.invW[0], b1 = e[1] * p.invW[1],
                                  b2 = e[2] * p.invW[2];
                     const double sum = b0 + b1 + b2;
-                    const glm::dvec3 ws =
-                        (b0 * p.world[0] + b1 * p.world[1] + b2 * p.world[2]) / sum;
-                    const double key = depthOf(ws);
+                    const glm::dvec3 relative =
+                        (b0 * p.relative[0] + b1 * p.relative[1] + b2 * p.relative[2]) / sum;
+                    const double key = depthOf(relative);
                     const std::size_t at = static_cast<std::size_t>(y) * res.width + x;
                     if (key < buffer->depth[at] ||
                         (key == buffer->depth[at] && p.triangle < buffer->triangle[at])) {
                         buffer->depth[at] = key;
                         buffer->triangle[at] = p.triangle;
-                        buffer->wsPoint[at] = ws;
+                        buffer->wsPoint[at] =
+                            (b0 * p.world[0] + b1 * p.world[1] + b2 * p.world[2]) / sum;
                     }
                 }
             }

@@ -49,16 +49,15 @@ void ThrowOnEmbreeError(RTCDevice device, const char* what) {
     throw std::runtime_error(std::string("ray caster: ") + what + ": " + message);
 }
 
-void InitRay(RTCRay& ray, const glm::dvec3& wsOrigin, const glm::dvec3& wsDirection, double tNear,
-             double tFar) {
-    ray.org_x = static_cast<float>(wsOrigin.x);
-    ray.org_y = static_cast<float>(wsOrigin.y);
-    ray.org_z = static_cast<float>(wsOrigin.z);
-    ray.dir_x = static_cast<float>(wsDirection.x);
-    ray.dir_y = static_cast<float>(wsDirection.y);
-    ray.dir_z = static_cast<float>(wsDirection.z);
-    ray.tnear = static_cast<float>(tNear);
-    ray.tfar = static_cast<float>(tFar);
+void InitRay(RTCRay& ray, const ShadowRay& r) {
+    ray.org_x = r.unitOrigin.x;
+    ray.org_y = r.unitOrigin.y;
+    ray.org_z = r.unitOrigin.z;
+    ray.dir_x = r.direction.x;
+    ray.dir_y = r.direction.y;
+    ray.dir_z = r.direction.z;
+    ray.tnear = r.tNear;
+    ray.tfar = r.tFar;
     ray.time = 0.0f;
     ray.mask = std::numeric_limits<unsigned>::max();  // every geometry, whatever its mask
     ray.id = 0;
@@ -71,6 +70,7 @@ struct RayCaster::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     std::size_t triangleCount = 0;
+    UnitFrame frame;
 
     ~Impl() {
         if (scene != nullptr) rtcReleaseScene(scene);
@@ -89,7 +89,7 @@ RayCaster::RayCaster(const TriangleMesh& wsMesh) : impl_(std::make_unique<Impl>(
                 throw DomainError(Subject::kGeometry,
                                   "triangle " + std::to_string(t) + " references vertex " +
                                       std::to_string(v) + " of " + std::to_string(vertexCount));
-            if (const glm::vec3& p = wsMesh.positions[v];
+            if (const glm::dvec3& p = wsMesh.positions[v];
                 !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw DomainError(Subject::kGeometry, "vertex " + std::to_string(v) +
                                                           " of triangle " + std::to_string(t) +
@@ -132,8 +132,12 @@ RayCaster::RayCaster(const TriangleMesh& wsMesh) : impl_(std::make_unique<Impl>(
     ThrowOnEmbreeError(device, "allocating the geometry buffers");
     if (vertices == nullptr || indices == nullptr)
         throw std::runtime_error("ray caster: Embree returned no geometry buffer");
-    for (std::size_t v = 0; v < vertexCount; ++v)
-        for (int k = 0; k < 3; ++k) vertices[3 * v + k] = wsMesh.positions[v][k];
+    impl_->frame = UnitFrameOf(wsMesh.ComputeBounds());
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+        // Unreferenced vertices may lie anywhere (even be non-finite): Embree never reads them.
+        const glm::vec3 unitPoint(impl_->frame.ToUnit(wsMesh.positions[v]));
+        for (int k = 0; k < 3; ++k) vertices[3 * v + k] = unitPoint[k];
+    }
     for (std::size_t t = 0; t < wsMesh.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) indices[3 * t + k] = wsMesh.triangles[t][k];
 
@@ -152,12 +156,21 @@ RayCaster& RayCaster::operator=(RayCaster&&) noexcept = default;
 
 std::size_t RayCaster::TriangleCount() const { return impl_->triangleCount; }
 
+const UnitFrame& RayCaster::Frame() const { return impl_->frame; }
+
+ShadowRay RayCaster::ToShadowRay(const glm::dvec3& wsOrigin, const glm::dvec3& wsDirection,
+                                 double tNear, double tFar) const {
+    const UnitFrame& frame = impl_->frame;
+    return {glm::vec3(frame.ToUnit(wsOrigin)), glm::vec3(wsDirection),
+            static_cast<float>(tNear / frame.wsScale), static_cast<float>(tFar / frame.wsScale)};
+}
+
 bool RayCaster::Occluded(const glm::dvec3& wsOrigin, const glm::dvec3& wsDirection, double tNear,
                          double tFar) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray;
-    InitRay(ray, wsOrigin, wsDirection, tNear, tFar);
+    InitRay(ray, ToShadowRay(wsOrigin, wsDirection, tNear, tFar));
     rtcOccluded1(impl_->scene, &context, &ray);
     ThrowOnEmbreeError(impl_->device, "tracing a shadow ray");
     // rtcOccluded1 sets tfar to -inf when it finds a hit.
@@ -170,14 +183,14 @@ std::optional<RayCaster::Hit> RayCaster::Intersect(const glm::dvec3& wsOrigin,
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rayHit;
-    InitRay(rayHit.ray, wsOrigin, wsDirection, tNear, tFar);
+    InitRay(rayHit.ray, ToShadowRay(wsOrigin, wsDirection, tNear, tFar));
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl_->scene, &context, &rayHit);
     ThrowOnEmbreeError(impl_->device, "tracing a ray");
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return Hit{static_cast<double>(rayHit.ray.tfar), rayHit.hit.primID};
+    return Hit{static_cast<double>(rayHit.ray.tfar) * impl_->frame.wsScale, rayHit.hit.primID};
 }
 
 void RayCaster::OccludedBatch(std::span<const ShadowRay> rays, std::span<std::uint8_t> occluded,
@@ -206,12 +219,12 @@ void RayCaster::OccludedBatch(std::span<const ShadowRay> rays, std::span<std::ui
                         // Lanes past the end repeat the last ray but are masked off.
                         const ShadowRay& r = rays[first + std::min(i, count - 1)];
                         valid[i] = i < count ? -1 : 0;
-                        packet.org_x[i] = r.wsOrigin.x;
-                        packet.org_y[i] = r.wsOrigin.y;
-                        packet.org_z[i] = r.wsOrigin.z;
-                        packet.dir_x[i] = r.wsDirection.x;
-                        packet.dir_y[i] = r.wsDirection.y;
-                        packet.dir_z[i] = r.wsDirection.z;
+                        packet.org_x[i] = r.unitOrigin.x;
+                        packet.org_y[i] = r.unitOrigin.y;
+                        packet.org_z[i] = r.unitOrigin.z;
+                        packet.dir_x[i] = r.direction.x;
+                        packet.dir_y[i] = r.direction.y;
+                        packet.dir_z[i] = r.direction.z;
                         packet.tnear[i] = r.tNear;
                         packet.tfar[i] = r.tFar;
                         packet.time[i] = 0.0f;

@@ -17,10 +17,11 @@
 
 namespace lexel::spatial {
 
-// Indexed triangles, world units. Positions are stored as float, as a renderer would; the passes
-// recompute every intersection in double from them.
+// Indexed triangles, world units, in double: a scene keeps its shape wherever it sits (a float
+// vertex 1e8 from the origin would be up to 4 units off). What works in float (Embree, the GPU)
+// takes the mesh into its UnitFrame first.
 struct TriangleMesh {
-    std::vector<glm::vec3> positions;
+    std::vector<glm::dvec3> positions;
     std::vector<glm::uvec3> triangles;
 
     void Append(const TriangleMesh& other);
@@ -28,6 +29,24 @@ struct TriangleMesh {
     // Unit geometric normal of triangle t, counter-clockwise winding; zero when degenerate.
     glm::dvec3 FaceNormal(std::size_t t) const;
 };
+
+// The similarity unit = (ws - wsOrigin) / wsScale that centres a scene on its bounds and scales
+// it to unit size, for the consumers that work in float (Embree's rays, the GPU's vertices and
+// G-buffer). In it a float coordinate of the scene is good to ~1e-7 of the scene's radius
+// whatever the scene's size and distance from the origin, so their results do not depend on
+// either. wsScale is a power of two: exact in float and double, so scaling loses nothing.
+struct UnitFrame {
+    glm::dvec3 wsOrigin{0.0};
+    double wsScale = 1.0;
+
+    glm::dvec3 ToUnit(const glm::dvec3& wsPoint) const { return (wsPoint - wsOrigin) / wsScale; }
+    glm::dvec3 ToWorld(const glm::dvec3& unitPoint) const { return wsOrigin + wsScale * unitPoint; }
+    glm::dmat4 WorldFromUnit() const;  // the same map as a 4×4 matrix
+};
+
+// The frame of `wsBounds`: origin at their centre, wsScale the least power of two ≥ their radius
+// (1 for empty or one-point bounds), so unit coordinates of the bounds lie in [-1, 1].
+UnitFrame UnitFrameOf(const Bounds& wsBounds);
 
 // `light_sweep` of a case: `count` lights uniformly at random on the upper hemisphere (y ≥
 // centre.y) of radius `radius` around the centre of the floor, as in report §3: point lights

@@ -155,5 +155,92 @@ TEST(Figures, LowresPlotIntoMissingDirectoryThrowsAndLeavesNothing) {
     EXPECT_FALSE(HasPartialFile(scratch.path));
 }
 
+// ---- image figures (issue 24: error and map images had no title, count or colour key) ----
+
+int Byte(float v) { return static_cast<int>(std::lround(255 * v)); }
+
+bool PixelIs(const spatial::Image& image, int x, int y, spatial::ImageColour c) {
+    return std::abs(Byte(image.at(x, y, 0)) - Byte(c.r)) <= 1 &&
+           std::abs(Byte(image.at(x, y, 1)) - Byte(c.g)) <= 1 &&
+           std::abs(Byte(image.at(x, y, 2)) - Byte(c.b)) <= 1;
+}
+
+// Pixels of colour c in rows [y0, y1).
+int CountColour(const spatial::Image& image, spatial::ImageColour c, int y0, int y1) {
+    int n = 0;
+    for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
+        for (int x = 0; x < image.width; ++x) n += PixelIs(image, x, y, c);
+    return n;
+}
+
+int InkRows(const spatial::Image& image, int y0, int y1) {
+    int rows = 0;
+    for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y) {
+        bool ink = false;
+        for (int x = 0; x < image.width && !ink; ++x) ink = Byte(image.at(x, y, 0)) < 128;
+        rows += ink;
+    }
+    return rows;
+}
+
+TEST(ImageFigure, ShowsThePictureScaledUnderItsTitleWithItsKeyAndScale) {
+    const ScratchDir scratch;
+    // A 4 × 3 picture: each pixel its own colour.
+    spatial::Image picture = spatial::MakeImage(4, 3, 3);
+    const auto colourAt = [](int x, int y) {
+        return spatial::ImageColour{0.2f * x + 0.1f, 0.3f * y + 0.05f, 0.5f};
+    };
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 4; ++x) {
+            picture.at(x, y, 0) = colourAt(x, y).r;
+            picture.at(x, y, 1) = colourAt(x, y).g;
+            picture.at(x, y, 2) = colourAt(x, y).b;
+        }
+    const spatial::ImageColour keyColour{0.9f, 0.3f, 0.7f};  // a colour the picture lacks
+    ImageFigure figure;
+    figure.title = "case · light 0 · optimal · errors";
+    figure.lines = {"22 of 11165 counted pixels misclassified"};
+    figure.key = {{"false shadow (12)", keyColour}};
+    figure.bar = ColourBar{"depth", {{1, 1, 0}, {0, 1, 1}}, 2.0, 10.0, false};
+    const ImageFigureLayout layout = LayOutImageFigure(picture, figure);
+    EXPECT_EQ(layout.scale, 8);  // 600 / 4 = 150, at most 8
+    EXPECT_EQ(layout.width, 720);
+    const fs::path path = scratch.path / "figure.png";
+    WriteImageFigure(path.string(), picture, figure);
+    EXPECT_FALSE(HasPartialFile(scratch.path));
+    const spatial::Image image = spatial::ReadImage(path.string());
+    ASSERT_EQ(image.width, layout.width);
+    ASSERT_EQ(image.height, layout.height);
+    // Every source pixel is an 8 × 8 block at its place.
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 4; ++x)
+            for (int d : {0, 7})
+                EXPECT_TRUE(PixelIs(image, layout.imageX + 8 * x + d, layout.imageY + 8 * y + d,
+                                    colourAt(x, y)))
+                    << x << ", " << y;
+    // Title and line above the picture: two lines of dark ink.
+    EXPECT_GE(InkRows(image, 0, layout.imageY), 20);
+    const int below = layout.imageY + 3 * layout.scale;
+    EXPECT_EQ(CountColour(image, keyColour, 0, below), 0);
+    EXPECT_GE(CountColour(image, keyColour, below, image.height), 12 * 12);  // the swatch
+    // The bar runs from yellow to cyan under the key.
+    EXPECT_GE(CountColour(image, {1, 1, 0}, below, image.height), 10);
+    EXPECT_GE(CountColour(image, {0, 1, 1}, below, image.height), 10);
+}
+
+TEST(ImageFigure, LargePicturesKeepTheirSizeAndLongTitlesWrap) {
+    const spatial::Image picture = spatial::MakeImage(900, 700, 3, 0.5f);
+    ImageFigure figure;
+    figure.title = std::string(400, 'x') + " " + std::string(10, 'y');
+    const ImageFigureLayout layout = LayOutImageFigure(picture, figure);
+    EXPECT_EQ(layout.scale, 1);
+    EXPECT_EQ(layout.width, 900 + 32);
+    ImageFigure shortTitle;
+    shortTitle.title = "x";
+    EXPECT_GT(layout.imageY, LayOutImageFigure(picture, shortTitle).imageY);  // two title lines
+    EXPECT_THROW(WriteImageFigure("/nonexistent/x.png", spatial::Image{}, figure),
+                 std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace lexel::cases

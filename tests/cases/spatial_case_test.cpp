@@ -305,10 +305,10 @@ TEST(SpatialCase, OutOfRangeScenesGiveTheRealReason) {
               "/lights/0/position: coordinate too large: |x| = 1e+300, must be at most 1e+15");
     EXPECT_EQ(replace("/light_sweep/radius", "1e300"),
               "/light_sweep/radius: must be in (0, 1e+15], got 1e+300");
-    // A scale so small that every float vertex of the sphere lands on its translate.
+    // A scale so small that the sphere's extent rounds to zero.
     EXPECT_EQ(replace("/geometry/2/transform/scale", "1e-300"),
               "/geometry/2/transform: the transformed geometry collapses to the point [-3, 0, 0] "
-              "(its float vertices coincide)");
+              "(its extent rounds to zero)");
 
     // far / near: the bound (1e5) is accepted, anything above it is refused without overflow.
     EXPECT_EQ(replace("/camera/far", "50000"), "no error");  // near 0.5
@@ -434,9 +434,9 @@ TEST(SpatialCase, ShippedWalkthroughIsTheReportScene) {
     const auto objects = spatial::FloorObjects(36, 1, nullptr);
     for (const spatial::Camera& pose : scene.cameraPath) {
         EXPECT_GE(pose.position.z, scene.cameraPath.front().position.z);
-        for (const glm::vec3& p : objects.positions)
-            if (p.y > 0.0f) {  // not the floor
-                EXPECT_GT(glm::distance(glm::dvec3(p), pose.position), 1.0);
+        for (const glm::dvec3& p : objects.positions)
+            if (p.y > 0.0) {  // not the floor
+                EXPECT_GT(glm::distance(p, pose.position), 1.0);
             }
     }
 }
@@ -456,11 +456,11 @@ TEST(SpatialCase, ShippedMeshesSitOnTheFloor) {
     EXPECT_NEAR(b.hi.y, 2.2739, 1e-4);  // Wuson, 1.5 times 1.51525 + 0.001
     // The models (every vertex after the floor's 4) rest on the floor: none below it, the lowest
     // within half a millimetre above.
-    float lowest = std::numeric_limits<float>::infinity();
+    double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 4; i < scene.geometry.positions.size(); ++i)
         lowest = std::min(lowest, scene.geometry.positions[i].y);
-    EXPECT_GE(lowest, 0.0f);
-    EXPECT_LE(lowest, 5e-4f);
+    EXPECT_GE(lowest, 0.0);
+    EXPECT_LE(lowest, 5e-4);
     EXPECT_GT(scene.lightSweep->radius, b.Radius());
 }
 

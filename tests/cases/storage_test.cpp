@@ -95,12 +95,22 @@ TEST(StorageRun, FiguresAreSevenPngFiles) {
         EXPECT_EQ(std::filesystem::path(f).extension(), ".png") << f;
         EXPECT_GT(std::filesystem::file_size(dir / f), 300u) << f;
     }
-    // Fig. 7: 4 pixels per grid cell, white outside the hemisphere, coloured at its centre.
+    // Fig. 7: a titled figure, the 9 × 9 grid scaled by 8, with its log scale (issue 24: the
+    // hemisphere images had no scale): the bar runs from the ramp's dark blue to its red.
     const spatial::Image hemisphere = spatial::ReadImage((dir / files[1]).string());
-    ASSERT_EQ(hemisphere.width, 36);
-    ASSERT_EQ(hemisphere.height, 36);
-    EXPECT_EQ(hemisphere.at(0, 0, 0) + hemisphere.at(0, 0, 1) + hemisphere.at(0, 0, 2), 3.0f);
-    EXPECT_LT(hemisphere.at(18, 18, 0) + hemisphere.at(18, 18, 1) + hemisphere.at(18, 18, 2), 2.9f);
+    EXPECT_EQ(hemisphere.width, 720);
+    EXPECT_GT(hemisphere.height, 9 * 8 + 100);
+    const auto count = [&](float r, float g, float b) {
+        int n = 0;
+        for (int y = 0; y < hemisphere.height; ++y)
+            for (int x = 0; x < hemisphere.width; ++x)
+                n += std::abs(hemisphere.at(x, y, 0) - r) < 2.5f / 255 &&
+                     std::abs(hemisphere.at(x, y, 1) - g) < 2.5f / 255 &&
+                     std::abs(hemisphere.at(x, y, 2) - b) < 2.5f / 255;
+        return n;
+    };
+    EXPECT_GE(count(0.1f, 0.1f, 0.5f), 10);    // the bar's low end (and maybe cells)
+    EXPECT_GE(count(0.8f, 0.05f, 0.05f), 10);  // its high end
     std::filesystem::remove_all(dir);
 }
 

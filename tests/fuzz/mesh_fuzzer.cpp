@@ -2,11 +2,11 @@
 // loader of a 3D case's `mesh` entries. The bytes are written to a file whose extension is the
 // format they look like, as a user would name it — "OFF" (or COFF, NOFF, ...) → .off, "solid" →
 // .stl, a zero byte (binary) → .stl, anything else → .obj — so the three formats the loader reads
-// (mesh_file_check.h: OBJ, OFF, STL), its checks and Assimp's importers for them are the ones
-// fuzzed (PLY is refused by its extension alone; the PLY seeds of earlier findings are read as
-// OBJ). A bad file must be refused with a DomainError of one line; any other exception, a crash,
-// a sanitizer report or a hang is a finding. Assimp is not instrumented: coverage guides only
-// through lexel's code.
+// through Assimp (mesh_file_check.h: OBJ, OFF, STL), its checks and Assimp's importers for them
+// are the ones fuzzed (PLY and glTF have their own targets, ply_fuzzer and gltf_fuzzer; the PLY
+// seeds of Assimp's earlier findings are read here as OBJ, and there as PLY). A bad file must be
+// refused with a DomainError of one line; any other exception, a crash, a sanitizer report or a
+// hang is a finding. Assimp is not instrumented: coverage guides only through lexel's code.
 #include <unistd.h>
 
 #include <cstddef>

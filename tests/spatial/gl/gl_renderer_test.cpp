@@ -107,7 +107,7 @@ TEST_F(GlTest, CameraPassSeesTheCpuTrianglesAndPoints) {
               << "; point error / scene radius mean " << sumError / covered << " max " << maxError
               << '\n';
     // Measured on llvmpipe: 3 coverage and 23 triangle differences (depth ties where objects
-    // touch the floor, shared edges), float point error mean 7e-8, max 4e-6 scene radii.
+    // touch the floor, shared edges), float point error mean 9e-8, max 3e-6 scene radii.
     EXPECT_LE(coverageDiffers, 5e-5 * covered);
     EXPECT_LE(triangleDiffers, 5e-4 * covered);
     EXPECT_LT(sumError / covered, 1e-6);

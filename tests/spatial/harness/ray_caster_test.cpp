@@ -161,71 +161,121 @@ glm::dvec3 Vertex(const TriangleMesh& mesh, unsigned t, int k) {
 // ---------------------------------------------------------------------------------------------
 // Against the reference.
 
-TEST(RayCaster, AgreesWithBruteForceOnRandomSoups) {
-    constexpr int kRaysPerSoup = 4000;
-    int undecidedRays = 0, hitRays = 0, missRays = 0;
-    for (std::uint64_t seed : {1ull, 2ull, 3ull}) {
-        const TriangleMesh mesh = RandomSoup(seed, 300);
-        const RayCaster caster(mesh);
-        ASSERT_EQ(caster.TriangleCount(), 300u);
-        const std::vector<Ray> rays = RandomRays(seed, mesh, kRaysPerSoup);
-        for (std::size_t i = 0; i < rays.size(); ++i) {
-            const Ray& r = rays[i];
-            SCOPED_TRACE(Describe(seed, i, r));
-            double closestHit = kInf, closestTolerance = 0.0;
-            bool anyUndecided = false;
-            std::vector<TriangleVerdict> verdicts(mesh.triangles.size());
-            for (unsigned t = 0; t < mesh.triangles.size(); ++t) {
-                verdicts[t] =
-                    Classify(r, Vertex(mesh, t, 0), Vertex(mesh, t, 1), Vertex(mesh, t, 2));
-                if (verdicts[t].verdict == Verdict::kHit && verdicts[t].t < closestHit) {
-                    closestHit = verdicts[t].t;
-                    closestTolerance = TTolerance(r, Vertex(mesh, t, 0), Vertex(mesh, t, 1),
-                                                  Vertex(mesh, t, 2), closestHit);
-                }
-                anyUndecided |= verdicts[t].verdict == Verdict::kUndecided;
-            }
-            const bool definiteHit = closestHit < kInf;
+// x → scale·x + offset, applied to a scene and its rays (t scales with the lengths).
+struct Similarity {
+    double scale = 1.0;
+    glm::dvec3 offset{0.0};
+};
 
-            const bool occluded = caster.Occluded(r.origin, r.direction, r.tNear, r.tFar);
-            const std::optional<RayCaster::Hit> hit =
-                caster.Intersect(r.origin, r.direction, r.tNear, r.tFar);
-            if (definiteHit) {
-                EXPECT_TRUE(occluded);
-                ASSERT_TRUE(hit.has_value());
-            }
-            if (!definiteHit && !anyUndecided) {
-                EXPECT_FALSE(occluded);
-                EXPECT_FALSE(hit.has_value());
-            }
-            undecidedRays += anyUndecided;
-            hitRays += definiteHit && !anyUndecided;
-            missRays += !definiteHit && !anyUndecided;
-            if (!hit) continue;
+TriangleMesh Mapped(const TriangleMesh& mesh, const Similarity& m) {
+    TriangleMesh out = mesh;
+    for (glm::dvec3& p : out.positions) p = m.scale * p + m.offset;
+    return out;
+}
 
-            // The reported triangle is one the reference does not rule out, at its t, and no
-            // farther than the reference's closest definite hit.
-            ASSERT_LT(hit->triangle, mesh.triangles.size());
-            const TriangleVerdict& v = verdicts[hit->triangle];
-            ASSERT_NE(v.verdict, Verdict::kMiss) << "Embree hit triangle " << hit->triangle;
-            if (!std::isnan(v.t)) {
-                const unsigned t = hit->triangle;
-                const double tol =
-                    TTolerance(r, Vertex(mesh, t, 0), Vertex(mesh, t, 1), Vertex(mesh, t, 2), v.t);
-                EXPECT_NEAR(hit->t, v.t, tol) << "triangle " << t;
+struct Agreement {
+    int undecided = 0, hits = 0, misses = 0;
+};
+
+// Every ray of `rays` classified by the double reference against `mesh`, and answered by a caster
+// of the mapped mesh for the mapped ray: the caster must agree wherever the reference decides.
+Agreement CheckAgainstBruteForce(std::uint64_t seed, const TriangleMesh& mesh,
+                                 const std::vector<Ray>& rays, const Similarity& m) {
+    const RayCaster caster(Mapped(mesh, m));
+    EXPECT_EQ(caster.TriangleCount(), mesh.triangles.size());
+    Agreement counts;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const Ray& r = rays[i];
+        SCOPED_TRACE(Describe(seed, i, r) + ", scale " + std::to_string(m.scale));
+        double closestHit = kInf, closestTolerance = 0.0;
+        bool anyUndecided = false;
+        std::vector<TriangleVerdict> verdicts(mesh.triangles.size());
+        for (unsigned t = 0; t < mesh.triangles.size(); ++t) {
+            verdicts[t] = Classify(r, Vertex(mesh, t, 0), Vertex(mesh, t, 1), Vertex(mesh, t, 2));
+            if (verdicts[t].verdict == Verdict::kHit && verdicts[t].t < closestHit) {
+                closestHit = verdicts[t].t;
+                closestTolerance = TTolerance(r, Vertex(mesh, t, 0), Vertex(mesh, t, 1),
+                                              Vertex(mesh, t, 2), closestHit);
             }
-            if (definiteHit) {
-                EXPECT_LE(hit->t, closestHit + closestTolerance);
-            }
+            anyUndecided |= verdicts[t].verdict == Verdict::kUndecided;
+        }
+        const bool definiteHit = closestHit < kInf;
+
+        const glm::dvec3 origin = m.scale * r.origin + m.offset;
+        const double tNear = m.scale * r.tNear, tFar = m.scale * r.tFar;
+        const bool occluded = caster.Occluded(origin, r.direction, tNear, tFar);
+        std::optional<RayCaster::Hit> hit = caster.Intersect(origin, r.direction, tNear, tFar);
+        if (hit) hit->t /= m.scale;
+        if (definiteHit) {
+            EXPECT_TRUE(occluded);
+            EXPECT_TRUE(hit.has_value());
+        }
+        if (!definiteHit && !anyUndecided) {
+            EXPECT_FALSE(occluded);
+            EXPECT_FALSE(hit.has_value());
+        }
+        counts.undecided += anyUndecided;
+        counts.hits += definiteHit && !anyUndecided;
+        counts.misses += !definiteHit && !anyUndecided;
+        if (!hit) continue;
+
+        // The reported triangle is one the reference does not rule out, at its t, and no
+        // farther than the reference's closest definite hit.
+        EXPECT_LT(hit->triangle, mesh.triangles.size());
+        if (hit->triangle >= mesh.triangles.size()) continue;
+        const TriangleVerdict& v = verdicts[hit->triangle];
+        EXPECT_NE(v.verdict, Verdict::kMiss) << "Embree hit triangle " << hit->triangle;
+        if (!std::isnan(v.t)) {
+            const unsigned t = hit->triangle;
+            const double tol =
+                TTolerance(r, Vertex(mesh, t, 0), Vertex(mesh, t, 1), Vertex(mesh, t, 2), v.t);
+            EXPECT_NEAR(hit->t, v.t, tol) << "triangle " << t;
+        }
+        if (definiteHit) {
+            EXPECT_LE(hit->t, closestHit + closestTolerance);
         }
     }
+    return counts;
+}
+
+TEST(RayCaster, AgreesWithBruteForceOnRandomSoups) {
+    constexpr int kRaysPerSoup = 4000;
+    Agreement all;
+    for (std::uint64_t seed : {1ull, 2ull, 3ull}) {
+        const TriangleMesh mesh = RandomSoup(seed, 300);
+        const Agreement a =
+            CheckAgainstBruteForce(seed, mesh, RandomRays(seed, mesh, kRaysPerSoup), {});
+        all.undecided += a.undecided;
+        all.hits += a.hits;
+        all.misses += a.misses;
+    }
     const int total = 3 * kRaysPerSoup;
-    std::printf("rays: %d, decided hits %d, decided misses %d, undecided %d\n", total, hitRays,
-                missRays, undecidedRays);
+    std::printf("rays: %d, decided hits %d, decided misses %d, undecided %d\n", total, all.hits,
+                all.misses, all.undecided);
     // The test means something only if most rays are decided and both outcomes occur often.
-    EXPECT_LT(undecidedRays, total / 50);
-    EXPECT_GT(hitRays, total / 4);
-    EXPECT_GT(missRays, total / 4);
+    EXPECT_LT(all.undecided, total / 50);
+    EXPECT_GT(all.hits, total / 4);
+    EXPECT_GT(all.misses, total / 4);
+}
+
+// The caster works in the mesh's unit frame (ray_caster.h), so the same soup and rays scaled by
+// 1e-12 … 1e12 or moved up to 1e8 soup radii from the origin get the reference's answers (with t
+// scaled back). In world floats, 1e7 from the origin the soup's 0.6-wide triangles were rounded
+// to 1-unit steps, and at 1e-20 Embree's cubic terms underflowed.
+TEST(RayCaster, AgreesWithBruteForceAtEveryScaleAndOffset) {
+    constexpr std::uint64_t kSeed = 4;
+    const TriangleMesh mesh = RandomSoup(kSeed, 300);
+    const std::vector<Ray> rays = RandomRays(kSeed, mesh, 2000);
+    const glm::dvec3 direction(1.0, -0.5, 0.25);
+    for (const Similarity& m :
+         {Similarity{1e-12, glm::dvec3(0.0)}, Similarity{1e-20, 1e-13 * direction},
+          Similarity{1e12, glm::dvec3(0.0)}, Similarity{1.0, 1e7 * direction},
+          Similarity{1e-6, 1e2 * direction}, Similarity{1e6, 1e14 * direction}}) {
+        const Agreement a = CheckAgainstBruteForce(kSeed, mesh, rays, m);
+        EXPECT_LT(a.undecided, 2000 / 50);
+        EXPECT_GT(a.hits, 2000 / 4);
+        EXPECT_GT(a.misses, 2000 / 4);
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -354,11 +404,10 @@ TEST(RayCaster, ShadowRayToALightJustBeforeABlockerIsLit) {
 // ---------------------------------------------------------------------------------------------
 // Batch, concurrency, determinism.
 
-std::vector<ShadowRay> ToShadowRays(const std::vector<Ray>& rays) {
+std::vector<ShadowRay> ToShadowRays(const RayCaster& caster, const std::vector<Ray>& rays) {
     std::vector<ShadowRay> out;
     for (const Ray& r : rays)
-        out.push_back({glm::vec3(r.origin), glm::vec3(r.direction), static_cast<float>(r.tNear),
-                       static_cast<float>(r.tFar)});
+        out.push_back(caster.ToShadowRay(r.origin, r.direction, r.tNear, r.tFar));
     return out;
 }
 
@@ -368,15 +417,14 @@ TEST(RayCaster, BatchMatchesSingleRayForEveryRay) {
     const RayCaster caster(mesh);
     // Not a multiple of the packet size, and more than one TBB chunk.
     const std::vector<Ray> rays = RandomRays(seed, mesh, 10'007);
-    const std::vector<ShadowRay> shadowRays = ToShadowRays(rays);
+    const std::vector<ShadowRay> shadowRays = ToShadowRays(caster, rays);
     std::vector<std::uint8_t> occluded(rays.size(), 7), incoherent(rays.size(), 7);
     caster.OccludedBatch(shadowRays, occluded);
     caster.OccludedBatch(shadowRays, incoherent, RayCaster::RayOrder::kIncoherent);
     int hits = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
-        const ShadowRay& s = shadowRays[i];
-        const bool single =
-            caster.Occluded(glm::dvec3(s.wsOrigin), glm::dvec3(s.wsDirection), s.tNear, s.tFar);
+        const Ray& r = rays[i];
+        const bool single = caster.Occluded(r.origin, r.direction, r.tNear, r.tFar);
         ASSERT_EQ(occluded[i], single ? 1 : 0) << Describe(seed, i, rays[i]);
         ASSERT_EQ(incoherent[i], single ? 1 : 0) << Describe(seed, i, rays[i]);
         hits += single;
