@@ -189,8 +189,8 @@ spatial::MeshFrame ReadMeshFrame(const nlohmann::json& document, const JsonField
 spatial::TriangleMesh MeshInSceneFrame(const JsonField& entry, const spatial::TriangleMesh& file,
                                        const spatial::MeshFrame& frame) {
     double largest = 0.0;
-    for (const glm::vec3& p : file.positions)
-        largest = std::max(largest, LargestMagnitude(glm::dvec3(p)) * frame.unitScale);
+    for (const glm::dvec3& p : file.positions)
+        largest = std::max(largest, LargestMagnitude(p) * frame.unitScale);
     const JsonField field = entry.Has("units") ? entry["units"] : entry["mesh"];
     if (!(largest <= kMaxCoordinate))
         field.Fail("the mesh in these units reaches |x| = " + FormatNumber(largest) +
