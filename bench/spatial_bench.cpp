@@ -360,8 +360,10 @@ void BM_ReadbackFromDepth(benchmark::State& state) {
     camera.resolution = {1280, 720};
     const CameraBuffer pass = w.backend->RenderCamera(camera, camera.resolution);
     const std::vector<float> depth(pass.windowDepth.begin(), pass.windowDepth.end());
-    const DepthBuffer buffer{camera.resolution, depth,
-                             camera.ClipFromView() * camera.ViewFromWorld(), DepthConvention{}};
+    const DepthBuffer buffer{.resolution = camera.resolution,
+                             .depth = depth,
+                             .clipFromWorld = camera.ClipFromView() * camera.ViewFromWorld(),
+                             .convention = {}};
     const bool downsample = state.range(0) == 1;
     for (auto _ : state) {
         const Readback r =

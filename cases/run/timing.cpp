@@ -3,6 +3,7 @@
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/frame_schedule.h"
 
 namespace lexel::cases {
 
@@ -45,11 +46,9 @@ std::vector<spatial::Light> TimingLightsOf(const spatial::Scene& scene, int coun
 }
 
 spatial::FrameOptions ScheduleOf(const TimingOptions& options, int frame) {
-    spatial::FrameOptions s;
-    s.optimal = options.optimal;
-    s.optimize = frame % options.updateEvery == 0;
-    s.standardMap = s.optimize && (frame / options.updateEvery) % options.standardEvery == 0;
-    return s;
+    const spatial::UpdatePolicy policy{.updateEvery = options.updateEvery,
+                                       .standardEvery = options.standardEvery};
+    return policy.At(frame, {.optimal = options.optimal});
 }
 
 TimingRun RunTiming(const spatial::Scene& scene, const TimingOptions& options) {

@@ -17,7 +17,7 @@ struct TimingOptions {
     BackendKind backend = BackendKind::kCpu;
     int lights = 4;  // the report's Table 3 has 4
     int frames = 8;  // timed frames per method, after one warm-up frame each
-    // The report's savings (§2.4, FrameOptions): optimal runs Algorithm 1 on frames k with
+    // The report's savings (§2.4, spatial::UpdatePolicy): optimal runs Algorithm 1 on frames k with
     // k mod updateEvery = 0, and of those every standardEvery-th takes step 1 from a fresh
     // standard map (the others from the light's previous map). 1, 1: everything every frame; the
     // report's: 3, 2.

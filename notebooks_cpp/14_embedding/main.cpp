@@ -90,8 +90,11 @@ int main(int argc, char** argv) {
     const Resolution res = renderer.resolution();
     const std::vector<float> depth = renderer.DepthBuffer();
     const Camera& camera = renderer.camera();
-    const Readback readback = MakeReadback(
-        DepthBuffer{res, depth, camera.ClipFromView() * camera.ViewFromWorld(), DepthConvention{}});
+    const Readback readback =
+        MakeReadback(DepthBuffer{.resolution = res,
+                                 .depth = depth,
+                                 .clipFromWorld = camera.ClipFromView() * camera.ViewFromWorld(),
+                                 .convention = {}});
 
     // 2. The light's frame over the scene's bounds, the standard map and the renderer's mask.
     const Bounds wsBounds = renderer.SceneBounds();

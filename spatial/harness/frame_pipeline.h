@@ -10,7 +10,9 @@
 // FrameOptions adds the report's two savings (§2.4): P updated only every few frames ("we only
 // update P every three frames"), and step 1 from the light's previous final map instead of a
 // fresh standard one ("every couple frames we generate standard shadow maps for step 1 instead
-// of using the previous frame's"). The default runs Algorithm 1 in full every frame.
+// of using the previous frame's"). The default runs Algorithm 1 in full every frame. Every
+// pipeline runs the one schedule of frame_schedule.h (UpdatePolicy says which frames update);
+// they differ only in how a pass runs.
 #pragma once
 
 #include <memory>
@@ -19,7 +21,6 @@
 #include <string_view>
 #include <vector>
 
-#include "lexel/spatial/baselines.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
 
@@ -74,17 +75,6 @@ class FramePipeline {
     // The light matrices the last frame rendered its final maps with, one per light.
     virtual const std::vector<LightMatrix>& Matrices() const = 0;
 };
-
-// Shared by the pipelines: the same light (type, position, direction); the baselines' context of
-// a frame (the visible points from `readback`, none when null).
-bool SameLight(const Light& a, const Light& b);
-BaselineContext FrameBaselineContext(const Scene& scene, const Camera& camera,
-                                     const LightSpace& lightSpace, const Bounds& wsBounds,
-                                     const Readback* readback);
-// FrameOptions::optimal's matrix for one light from its samples, timed into t->hull (the 2D
-// hull) and t->search (the rest). Throws std::invalid_argument for a method that is not one.
-LightMatrix TimedOptimizer(const std::string& method, BaselineContext context,
-                           const LightSamples& samples, FrameTimes* t);
 
 // The frame on any RenderBackend (the CPU reference: every pass TBB-parallel, wall times).
 std::unique_ptr<FramePipeline> MakeBackendFramePipeline(const RenderBackend& backend,

@@ -68,8 +68,14 @@ std::string Printable(std::string_view token) {
     return token.size() > 32 ? shown + "..." : shown;
 }
 
-// Printable(token) quoted.
-std::string Shown(std::string_view token) { return "'" + Printable(token) + "'"; }
+// Printable(token) quoted. Appended, not "'" + Printable(token): GCC 12 warns -Wrestrict falsely
+// on a literal prepended to a temporary string (GCC bug 105329).
+std::string Shown(std::string_view token) {
+    std::string shown = "'";
+    shown += Printable(token);
+    shown += '\'';
+    return shown;
+}
 
 bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 

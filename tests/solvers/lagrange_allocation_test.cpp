@@ -48,7 +48,9 @@ TEST(LagrangeAllocation, IntegerAllocationIsExchangeOptimal) {
             ASSERT_EQ(std::accumulate(alloc.begin(), alloc.end(), 0), lexels) << "trial " << trial;
             const double total = AllocationError(e, alloc, k);
             for (int j = 0; j < n; ++j) {
-                if (e[j] > 0) EXPECT_GE(alloc[j], 1);
+                if (e[j] > 0) {
+                    EXPECT_GE(alloc[j], 1);
+                }
                 for (int i = 0; i < n; ++i) {
                     if (i == j || alloc[j] <= (e[j] > 0 ? 1 : 0)) continue;
                     auto moved = alloc;

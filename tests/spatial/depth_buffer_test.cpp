@@ -155,17 +155,24 @@ TEST(DepthBuffer, AConventionThatContradictsItsProjectionIsRefused) {
         }
     }
     const std::vector<float> few(10, 0.5f);
-    EXPECT_THROW(CameraBufferFromDepth(DepthBuffer{pass.camera.resolution, few}),
+    EXPECT_THROW(CameraBufferFromDepth(DepthBuffer{
+                     .resolution = pass.camera.resolution, .depth = few, .convention = {}}),
                  std::invalid_argument);
     const std::vector<float> depth(pass.camera.resolution.Count(), 0.5f);
-    EXPECT_THROW(CameraBufferFromDepth(DepthBuffer{pass.camera.resolution, depth, glm::dmat4(0.0)}),
+    EXPECT_THROW(CameraBufferFromDepth(DepthBuffer{.resolution = pass.camera.resolution,
+                                                   .depth = depth,
+                                                   .clipFromWorld = glm::dmat4(0.0),
+                                                   .convention = {}}),
                  std::invalid_argument);
 }
 
 // The default convention with a Camera's matrices is Camera::ScreenFromWorld.
 TEST(DepthBuffer, DefaultConventionIsTheCamerasScreenFromWorld) {
     const Camera camera = FloorAndBox({16, 9}).camera;
-    const DepthBuffer buffer{camera.resolution, {}, camera.ClipFromView() * camera.ViewFromWorld()};
+    const DepthBuffer buffer{.resolution = camera.resolution,
+                             .depth = {},
+                             .clipFromWorld = camera.ClipFromView() * camera.ViewFromWorld(),
+                             .convention = {}};
     const glm::dmat4 a = ScreenFromWorld(buffer), b = camera.ScreenFromWorld(camera.resolution);
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -219,13 +226,18 @@ TEST(DepthBuffer, DownsamplingASmallBufferChangesNothing) {
     const glm::dmat4 clipFromWorld = pass.camera.ClipFromView() * pass.camera.ViewFromWorld();
     const Convention gl = Conventions(pass.camera)[0];
     const std::vector<float> depth = StoredDepth(pass.exact, clipFromWorld, gl);
-    const DepthImage same = DownsampleDepth(DepthBuffer{{40, 30}, depth, clipFromWorld});
+    const DepthImage same = DownsampleDepth(DepthBuffer{
+        .resolution = {40, 30}, .depth = depth, .clipFromWorld = clipFromWorld, .convention = {}});
     EXPECT_EQ(same.depth, depth);
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
             EXPECT_NEAR(same.clipFromWorld[c][r], clipFromWorld[c][r],
                         1e-12 * (1.0 + std::abs(clipFromWorld[c][r])));
-    EXPECT_THROW(DownsampleDepth(DepthBuffer{{40, 30}, depth, clipFromWorld}, 0),
+    EXPECT_THROW(DownsampleDepth(DepthBuffer{.resolution = {40, 30},
+                                             .depth = depth,
+                                             .clipFromWorld = clipFromWorld,
+                                             .convention = {}},
+                                 0),
                  std::invalid_argument);
 }
 
