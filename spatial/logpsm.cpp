@@ -15,21 +15,23 @@ using namespace baseline_detail;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // no pole
 // Below this |X∞| (light-space units of a unit axis) the warp's p4 is the normal axis: no
 // perspective warp, nothing to take the logarithm of.
 constexpr double kNoWarp = 1e-9;
 // The largest map side (OpenGL's common GL_MAX_TEXTURE_SIZE; the CPU has no limit but memory).
 constexpr int kMaxSide = 16384;
 
-// b∞: the second map coordinate of the points at ζ = ∞ (the header comment), if the warp has one.
-std::optional<double> PoleOf(const LightMatrix& warp, const glm::dvec3& normalAxis) {
+// b∞: the second map coordinate of the points at ζ = ∞ (the header comment); NaN where the warp
+// has none.
+double PoleOf(const LightMatrix& warp, const glm::dvec3& normalAxis) {
     glm::dvec3 atInfinity = warp.p4 - glm::dot(warp.p4, normalAxis) * normalAxis;
-    if (!(glm::length(atInfinity) > kNoWarp)) return std::nullopt;
+    if (!(glm::length(atInfinity) > kNoWarp)) return kNaN;
     if (glm::dot(warp.p4, atInfinity) < 0.0) atInfinity = -atInfinity;
     const glm::dvec3 h = warp.Homogeneous(atInfinity);
-    if (!(h.z > 0.0)) return std::nullopt;
+    if (!(h.z > 0.0)) return kNaN;
     const double pole = h.y / h.z;
-    return std::isfinite(pole) ? std::optional<double>(pole) : std::nullopt;
+    return std::isfinite(pole) ? pole : kNaN;
 }
 
 struct Extent {
@@ -41,9 +43,8 @@ struct Extent {
 };
 
 // The axis warp mapping values v (b_x, or ℓ through `log`) with centre c and half extent h onto
-// [0, side].
-AxisWarp FitAxis(double centre, double half, int side,
-                 std::optional<std::pair<double, double>> log) {
+// [0, side]; `log` (pole, sign) or null for an affine axis.
+AxisWarp FitAxis(double centre, double half, int side, const std::pair<double, double>* log) {
     const double scale = side / (2.0 * half), offset = 0.5 * side - scale * centre;
     if (!log) return AxisWarp::Affine(scale, offset);
     return AxisWarp::Logarithmic(log->first, log->second, scale, offset);
@@ -98,40 +99,42 @@ LogPsmMap LogPsmLightMap(const BaselineContext& context, BaselineDiagnostics* di
     const LightMatrix warp =
         LispsmRuleLightMatrix(context, {LispsmNearRule::Kind::kNearDepth}, diag);
     const std::vector<glm::dvec3> lsVisible = RelevantLight(context);
-    std::optional<double> pole;
-    if (diag->fallback.empty()) pole = PoleOf(warp, ChooseNormalAxis(context).p4);
+    // A plain double and flag rather than std::optional: GCC 12 reports the optional's payload as
+    // maybe uninitialized here (-Wmaybe-uninitialized, a false positive under -O3).
+    const double pole = diag->fallback.empty() ? PoleOf(warp, ChooseNormalAxis(context).p4) : kNaN;
+    bool hasPole = std::isfinite(pole);
     // Every visible point on one side of the pole (they are at finite ζ > 0; rounding aside).
     Extent bx, by;
     double side = 0.0;
     for (const glm::dvec3& X : lsVisible) {
         const glm::dvec2 b = warp.Map(X);
         bx.Add(b.x);
-        if (pole) side += b.y - *pole;
+        if (hasPole) side += b.y - pole;
     }
     const double sign = side >= 0.0 ? 1.0 : -1.0;
-    if (pole)
+    if (hasPole)
         for (const glm::dvec3& X : lsVisible)
-            if (!(sign * (warp.Map(X).y - *pole) > 0.0)) pole.reset();
+            if (!(sign * (warp.Map(X).y - pole) > 0.0)) hasPole = false;
     for (const glm::dvec3& X : lsVisible) {
         const double b = warp.Map(X).y;
-        by.Add(pole ? sign * std::log(sign * (b - *pole)) : b);
+        by.Add(hasPole ? sign * std::log(sign * (b - pole)) : b);
     }
-    if (!pole && diag->fallback.empty()) diag->fallback = "logpsm: no warp to take the log of";
-    const std::optional<std::pair<double, double>> log =
-        pole ? std::optional<std::pair<double, double>>({*pole, sign}) : std::nullopt;
+    if (!hasPole && diag->fallback.empty()) diag->fallback = "logpsm: no warp to take the log of";
+    const std::pair<double, double> poleAndSign(pole, sign);
+    const std::pair<double, double>* log = hasPole ? &poleAndSign : nullptr;
 
     // The aspect from the warp at one texel per axis, then the map.
     const double margin = context.margin;
     MapWarp unit = MapWarp::Linear(warp);
-    unit.x = FitAxis(bx.Centre(), bx.Half(margin), 1, std::nullopt);
+    unit.x = FitAxis(bx.Centre(), bx.Half(margin), 1, nullptr);
     unit.y = FitAxis(by.Centre(), by.Half(margin), 1, log);
     const glm::dvec2 aliasing = AxisAliasing(context, unit);
     LogPsmMap out;
-    out.logarithmic = pole.has_value();
+    out.logarithmic = hasPole;
     out.aliasingRatio = aliasing.y > 0.0 ? aliasing.x / aliasing.y : 1.0;
     out.resolution = SplitTexels(context.map, out.aliasingRatio);
     out.warp = MapWarp::Linear(warp);
-    out.warp.x = FitAxis(bx.Centre(), bx.Half(margin), out.resolution.width, std::nullopt);
+    out.warp.x = FitAxis(bx.Centre(), bx.Half(margin), out.resolution.width, nullptr);
     out.warp.y = FitAxis(by.Centre(), by.Half(margin), out.resolution.height, log);
     return out;
 }

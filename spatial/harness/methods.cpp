@@ -167,14 +167,20 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
         options.refine = name == "optimal-refined";
         const std::vector<OptimizerStart> starts = StandardStarts(context.baseline);
         MultiStartResult r = OptimizeFromStarts(*context.samples, starts, map, options);
-        return {r.result.matrix, std::move(r.result), std::move(r.winner), {}, std::nullopt};
+        return {r.result.matrix,
+                std::move(r.result),
+                std::move(r.winner),
+                {},
+                std::nullopt,
+                std::nullopt,
+                {}};
     }
     // The report's single start (optimal-report), or with the shear (optimal-shear).
     options.shear = name == "optimal-shear";
     const BaselineContext& b = context.baseline;
     const glm::dvec3 initialP4 = InitialLightAxis(*b.lightSpace, b.wsBounds, b.wsRelevant);
     OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4, map, options);
-    return {r.matrix, std::move(r), {}, {}, std::nullopt};
+    return {r.matrix, std::move(r), {}, {}, std::nullopt, std::nullopt, {}};
 }
 
 MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& context) {
@@ -205,7 +211,13 @@ MethodMatrix Virtual(std::string_view name, const MethodContext& context) {
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
     for (const NamedBaseline& b : kBaselines)
         if (b.name == name)
-            return {b.compute(context.baseline, nullptr), std::nullopt, {}, {}, std::nullopt};
+            return {b.compute(context.baseline, nullptr),
+                    std::nullopt,
+                    {},
+                    {},
+                    std::nullopt,
+                    std::nullopt,
+                    {}};
     if (name == "optimal" || name == "optimal-refined" || name == "optimal-report" ||
         name == "optimal-shear")
         return Optimal(name, context);
