@@ -292,6 +292,23 @@ std::vector<glm::vec4> GlRenderer::ReadNormals(CameraSlot slot) const {
     return out;
 }
 
+// The state both shadow passes share: the map's cleared depth as the target, depth in [0, 1]
+// with clamping (every point in front of the light is kept), no culling (casters of either
+// winding).
+void GlRenderer::BeginShadowPass(const MapTarget& t) {
+    BeginPass(PassKind::kShadow);
+    const GLfloat empty = 1.0f;
+    glClearNamedFramebufferfv(t.framebuffer, GL_DEPTH, 0, &empty);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
+    glViewport(0, 0, t.resolution.width, t.resolution.height);
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_CLAMP);
+    glDisable(GL_CULL_FACE);
+}
+
 void GlRenderer::RenderShadowMap(int map, const LightSpace& lightSpace, const LightMatrix& matrix,
                                  Resolution resolution) {
     MapTarget& t = EnsureMap(map, resolution);
@@ -307,17 +324,7 @@ void GlRenderer::RenderShadowMap(int map, const LightSpace& lightSpace, const Li
         ToFloat(ClipFromWorld(lightSpace, matrix, resolution, range, ClipDepth::kZeroToOne) *
                 frame_.WorldFromUnit());
 
-    BeginPass(PassKind::kShadow);
-    const GLfloat empty = 1.0f;
-    glClearNamedFramebufferfv(t.framebuffer, GL_DEPTH, 0, &empty);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
-    glViewport(0, 0, resolution.width, resolution.height);
-    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_DEPTH_CLAMP);
-    glDisable(GL_CULL_FACE);
+    BeginShadowPass(t);
     glUseProgram(shadowProgram_);
     glProgramUniformMatrix4fv(shadowProgram_, 0, 1, GL_FALSE, glm::value_ptr(clip));
     glProgramUniform1d(shadowProgram_, 4, 1.0 / t.depthScale);
@@ -413,17 +420,7 @@ void GlRenderer::RenderWarpedShadowMap(int map, const LightSpace& lightSpace, co
     Upload(&warpTriangleBuffer_, pieces.triangle.data(),
            pieces.triangle.size() * sizeof(std::int32_t));
     glVertexArrayVertexBuffer(warpVertexArray_, 0, warpVertexBuffer_, 0, sizeof(glm::vec3));
-    BeginPass(PassKind::kShadow);
-    const GLfloat empty = 1.0f;
-    glClearNamedFramebufferfv(t.framebuffer, GL_DEPTH, 0, &empty);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
-    glViewport(0, 0, resolution.width, resolution.height);
-    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_DEPTH_CLAMP);
-    glDisable(GL_CULL_FACE);
+    BeginShadowPass(t);
     const GLuint p = warpProgram_;
     glUseProgram(p);
     glProgramUniformMatrix4fv(p, 0, 1, GL_FALSE, glm::value_ptr(clip));

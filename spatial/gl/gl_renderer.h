@@ -129,6 +129,7 @@ class GlRenderer {
     CameraTarget& EnsureCamera(CameraSlot slot, Resolution resolution);
     MapTarget& EnsureMap(int map, Resolution resolution);
     void BeginPass(PassKind kind);
+    void BeginShadowPass(const MapTarget& target);
     void EndPass();
     void CollectTimes(bool wait);
     static void Release(CameraTarget& target);
