@@ -27,7 +27,7 @@ const std::vector<std::string>& FlatlandMethodNames() {
 }
 
 std::string_view FlatlandMethodDescription(std::string_view name) {
-    // One line per method of FlatlandMethodNames (README.md, "Flatland methods", says more).
+    // One line per method of FlatlandMethodNames (RESULTS.md, "Flatland methods", says more).
     static constexpr std::pair<std::string_view, std::string_view> kDescriptions[] = {
         {"optimal-l1", "exact L1 optimum: the roots of one quadratic in tan x"},
         {"optimal-l2", "exact L2 optimum: a quartic, solved by companion matrix"},

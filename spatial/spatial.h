@@ -7,7 +7,7 @@
 //      readback's shadow mask under it → MakeLightSamples (samples.h);
 //   3. OptimizeLightMatrix (optimizer.h) from the standard map's axis → LightMatrix →
 //      ClipFromWorld with LightDepthRange, the 4×4 to render the shadow map with.
-// README.md, "Use lexel in your renderer", has the whole of it, compiled by the test suite.
+// spatial/README.md, the embedding guide, has the whole of it, compiled by the test suite.
 #pragma once
 
 #include "lexel/spatial/baselines.h"

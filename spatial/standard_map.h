@@ -11,7 +11,7 @@
 // shadow mask, per readback pixel: kShadowed where the map holds a caster nearer to the light than
 // the pixel's point, kLit where it does not, kFacingAway where the surface faces away from the
 // light (n·l ≤ 0), kEmpty where the pixel sees nothing — the renderer's own shadow test on its
-// low-resolution camera pass (README "Use lexel in your renderer" and
+// low-resolution camera pass (spatial/README.md, the embedding guide, and
 // tests/spatial/standard_map_test.cpp do it on the CPU).
 #pragma once
 

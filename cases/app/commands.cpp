@@ -428,7 +428,7 @@ namespace {
 
 // The frustum `lexel storage` evaluates, as flags allow it (stated in --help): inside these
 // limits every figure is finite and the warp searches converge (each corner of the box measured,
-// README "Lloyd's storage factor"); outside, the frustum is a sliver or a plane, tan θ or the
+// RESULTS.md "Lloyd's storage factor"); outside, the frustum is a sliver or a plane, tan θ or the
 // aspect overflow the light-space axes, or f - n falls below the searches' steps.
 constexpr double kMinFovYDeg = 0.1, kMaxFovYDeg = 179.0;             // degrees
 constexpr double kMinAspect = 0.01, kMaxAspect = 100.0;              // width / height

@@ -273,7 +273,7 @@ int RunLexel(int argc, char** argv) {
         // The loaders refuse cases over the memory budget; this is a machine with less to give.
         return Failure(
             "out of memory: this machine could not give the case what it needs (see "
-            "the memory budget in README.md)",
+            "the memory budget in cases/README.md)",
             2);
     } catch (const std::exception& e) {
         return Failure(e.what(), 1);

@@ -1,7 +1,7 @@
 // 14 — Embedding lexel in a renderer: a light matrix from a depth buffer, public API only.
 //
-// What a renderer does each frame for one shadow-casting light (README, "Use lexel in your
-// renderer"; Chong & Gortler Algorithm 1 steps 1–5):
+// What a renderer does each frame for one shadow-casting light (spatial/README.md, "Use lexel in
+// your renderer"; Chong & Gortler Algorithm 1 steps 1–5):
 //   1. render the camera's depth buffer at low resolution (about 180², report §2.4) and read it
 //      back with the projection · view that made it and its depth convention: DepthBuffer,
 //      MakeReadback;

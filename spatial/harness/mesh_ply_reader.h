@@ -3,7 +3,7 @@
 // 5.2's PLY reader overflows its buffers on malformed files and CGAL 5.5's CGAL::IO::read_PLY
 // dereferences null on a property before any element or on integer coordinates, hangs on an
 // element of no properties and a huge count, and throws std::length_error on a negative list
-// length (README, "Bad input, limits and output files"), so neither reads lexel's input.
+// length (cases/README.md, "Bad input, limits and output files"), so neither reads lexel's input.
 #pragma once
 
 #include <string>

@@ -11,7 +11,7 @@ string(REPLACE "\"width\": 160, \"height\": 120" "\"width\": 4000, \"height\": 4
 file(WRITE "${WORK}/large_camera.json" "${text}")
 set(LEXEL_UNLIMITED "${LEXEL}")
 set(LEXEL /bin/sh)
-expect_run(2 "^$" "^lexel: error: out of memory: this machine could not give the case what it needs \\(see the memory budget in README.md\\)\n$"
+expect_run(2 "^$" "^lexel: error: out of memory: this machine could not give the case what it needs \\(see the memory budget in cases/README.md\\)\n$"
            -c "ulimit -v 1048576 && exec \"$0\" run \"$1\" --method focused --out \"$2\""
            "${LEXEL_UNLIMITED}" "${WORK}/large_camera.json" "${WORK}/out")
 if(EXISTS "${WORK}/out")

@@ -644,11 +644,11 @@ TEST_F(OutputSetTest, SignalWhileWritingRemovesTheStaging) {
     EXPECT_EQ(left, 0) << "of " << kRuns << " runs stopped while writing left their staging";
 }
 
-// A signal while Commit renames the files into an existing DIR (README: one "that comes during
-// the renames waits for them to finish, so a signal never leaves a mix"): the run replaces kFiles
-// old files and is stopped as soon as the first new one (in Commit's order: sorted) is in place.
-// Without the lock Commit holds, the signal thread removed the staging directory mid-rename and
-// the process ended with the first files new and the rest old.
+// A signal while Commit renames the files into an existing DIR (cases/README.md: one "that comes
+// during the renames waits for them to finish, so a signal never leaves a mix"): the run replaces
+// kFiles old files and is stopped as soon as the first new one (in Commit's order: sorted) is in
+// place. Without the lock Commit holds, the signal thread removed the staging directory mid-rename
+// and the process ended with the first files new and the rest old.
 TEST_F(OutputSetTest, SignalDuringTheRenamesLeavesNoMix) {
     constexpr int kFiles = 300;
     const fs::path outDir = base / "out";

@@ -1,6 +1,6 @@
-# README "Use lexel in your renderer" quotes tests/install/consumer/optimize_shadows.h, which
-# install_tests compiles and runs against the installed package: the README copy must be the
-# file's text between its two "// [readme]" lines, character for character. The README block is
+# spatial/README.md (the embedding guide) quotes tests/install/consumer/optimize_shadows.h, which
+# install_tests compiles and runs against the installed package: the guide's copy must be the
+# file's text between its two "// [readme]" lines, character for character. The quoted block is
 # the ```cpp fence after the line "<!-- snippet: tests/install/consumer/optimize_shadows.h -->".
 # Arguments: README, SNIPPET (the two files).
 file(READ "${README}" readme)
@@ -9,7 +9,7 @@ file(READ "${SNIPPET}" source)
 set(marker "<!-- snippet: tests/install/consumer/optimize_shadows.h -->\n```cpp\n")
 string(FIND "${readme}" "${marker}" start)
 if(start LESS 0)
-    message(FATAL_ERROR "README.md has no line '<!-- snippet: tests/install/consumer/optimize_shadows.h -->' followed by a ```cpp fence")
+    message(FATAL_ERROR "${README} has no line '<!-- snippet: tests/install/consumer/optimize_shadows.h -->' followed by a ```cpp fence")
 endif()
 string(LENGTH "${marker}" markerLength)
 math(EXPR start "${start} + ${markerLength}")
@@ -32,7 +32,7 @@ string(SUBSTRING "${source}" ${first} ${length} snippet)
 if(NOT quoted STREQUAL snippet)
     file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/readme_snippet.quoted" "${quoted}")
     file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/readme_snippet.source" "${snippet}")
-    message(FATAL_ERROR "README's snippet differs from ${SNIPPET}: compare "
+    message(FATAL_ERROR "The guide's snippet differs from ${SNIPPET}: compare "
                         "${CMAKE_CURRENT_BINARY_DIR}/readme_snippet.quoted and readme_snippet.source")
 endif()
-message(STATUS "README's snippet is ${SNIPPET} verbatim")
+message(STATUS "The guide's snippet is ${SNIPPET} verbatim")

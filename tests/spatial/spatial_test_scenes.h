@@ -20,7 +20,7 @@ TriangleMesh BoxMesh(const glm::dvec3& lo, const glm::dvec3& hi);
 LightSamples SamplesFromBoundsMap(const RenderBackend& renderer, const Readback& readback,
                                   const LightSpace& lightSpace, const Bounds& wsBounds,
                                   Resolution mapSize);
-// The embedding example's scene (README "Use lexel in your renderer", tests/install/consumer,
+// The embedding example's scene (spatial/README.md, tests/install/consumer,
 // notebook 14): the floor |x|, |z| ≤ 20 at y = 0 and the box [-1, 1] × [0, 2] × [-1, 1], seen
 // by a 160×120 camera at (0, 1.7, 12) looking at the origin (60° vertical field of view).
 struct FloorAndBox {

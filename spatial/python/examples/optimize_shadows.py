@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """lexel from Python: Algorithm 1 (Chong & Gortler, report §2.3) on a renderer's own buffers.
 
-README's toy renderer (tests/install/consumer/main.cpp) in numpy: a floor and a box traced
-exactly, a 1280x720 reversed-Z camera pass with Vulkan's conventions (clip depth [0, 1], NDC y
+The embedding guide's toy renderer (tests/install/consumer/main.cpp) in numpy: a floor and a box
+traced exactly, a 1280x720 reversed-Z camera pass with Vulkan's conventions (clip depth [0, 1], NDC y
 down, an infinite far plane), and per point light a real 512x512 shadow map rendered through the
 4x4 lexel gives it, with the renderer's own shadow test. Per light it prints the boundary samples
 and h (eq. 6) of the standard map and of the optimized one, then h of a few baselines and of

@@ -1,12 +1,12 @@
-// A renderer using the installed package: README's OptimizeShadows (optimize_shadows.h) on a toy
-// renderer that traces a floor and a box exactly. The toy does what an engine does: a 1280×720
-// camera pass into a reversed-Z depth buffer with Vulkan's conventions ([0, 1] clip depth, NDC y
-// down, infinite far plane), and per light a real shadow map rendered through the 4×4 lexel gives
-// it (one ray per texel centre, depth stored as float where it lies in [0, 1]) with its own
-// shadow test. Checks: the map-based mask agrees with exact shadow rays on 99% of the readback, h
-// does not grow, every visible point of the readback lands in the optimized map at a depth in
-// [0, 1], and 99% of the 1280×720 frame's do. Prints "N boundary samples; h a -> b" per light;
-// exits 0 when every check holds.
+// A renderer using the installed package: the embedding guide's OptimizeShadows
+// (optimize_shadows.h) on a toy renderer that traces a floor and a box exactly. The toy does what
+// an engine does: a 1280×720 camera pass into a reversed-Z depth buffer with Vulkan's conventions
+// ([0, 1] clip depth, NDC y down, infinite far plane), and per light a real shadow map rendered
+// through the 4×4 lexel gives it (one ray per texel centre, depth stored as float where it lies in
+// [0, 1]) with its own shadow test. Checks: the map-based mask agrees with exact shadow rays on 99%
+// of the readback, h does not grow, every visible point of the readback lands in the optimized map
+// at a depth in [0, 1], and 99% of the 1280×720 frame's do. Prints "N boundary samples; h a -> b"
+// per light; exits 0 when every check holds.
 #include <lexel/flatland.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// README "Use lexel in your renderer" quotes this file from the first marker line to the second
+// spatial/README.md (the embedding guide) quotes this file from the first marker line to the second
 // verbatim (tests/install/readme_snippet_test.cmake checks it); main.cpp calls it with a toy
 // renderer, built against the installed package by install_tests.
 #pragma once

@@ -2,7 +2,7 @@
 // and 9:16, each with a square readback and one of its own aspect ratio, on every shipped scene
 // (cases/spatial/*.json, at reduced resolutions so that llvmpipe runs the matrix in seconds) and
 // the CLI's small case, each with a point and a directional light. Each backend renders its own
-// frame, readback, maps and decisions; the bound on a count is README "The OpenGL backend"'s
+// frame, readback, maps and decisions; the bound on a count is RESULTS.md "The OpenGL backend"'s
 // max(5, 5e-4 × counted). Per camera shape and readback:
 //   - the readbacks: a pixel on a triangle edge may see the other triangle (at most 0.5% of the
 //     pixels differ in coverage or triangle); where both see the same triangle they hold the same

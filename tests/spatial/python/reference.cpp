@@ -1,10 +1,10 @@
-// The C++ side of the Python module's tests (test_lexel.py): README's toy renderer scene (a floor
-// and a box traced exactly, tests/install/consumer/main.cpp) run through the core's API, writing
-// its inputs and every result to DIR so that the tests run the module on the same inputs and
-// compare, bit for bit. Inputs: a 1280×720 reversed-Z depth buffer with Vulkan's conventions and
-// an infinite far plane (depth.f32), and per light the readback's shadow mask from exact shadow
-// rays (mask_<l>.u8). Results: reference.json, and the readback's per-pixel arrays (*.f64).
-// Usage: python_reference DIR
+// The C++ side of the Python module's tests (test_lexel.py): the embedding guide's toy renderer
+// scene (a floor and a box traced exactly, tests/install/consumer/main.cpp) run through the core's
+// API, writing its inputs and every result to DIR so that the tests run the module on the same
+// inputs and compare, bit for bit. Inputs: a 1280×720 reversed-Z depth buffer with Vulkan's
+// conventions and an infinite far plane (depth.f32), and per light the readback's shadow mask from
+// exact shadow rays (mask_<l>.u8). Results: reference.json, and the readback's per-pixel arrays
+// (*.f64). Usage: python_reference DIR
 #include <lexel/spatial.h>
 
 #include <cmath>

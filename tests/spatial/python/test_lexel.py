@@ -1,6 +1,6 @@
 """Tests of lexel's Python module (spatial/python), run by CTest with the interpreter CMake found.
 
-ReferenceTest runs the C++ core (python_reference, reference.cpp) on README's toy scene and the
+ReferenceTest runs the C++ core (python_reference, reference.cpp) on the embedding guide's toy scene and the
 module on the same inputs, and compares every result bit for bit: the same code on the same
 numbers gives the same doubles. ConventionsTest renders one floor in every depth convention and
 checks that each readback finds the same world points. ArraysTest checks the numpy conventions
@@ -40,7 +40,7 @@ def _assert_matrix(test, matrix, reference, msg=""):
 
 
 class _Reference:
-    """The C++ core's results on README's toy scene (python_reference), loaded once."""
+    """The C++ core's results on the embedding guide's toy scene (python_reference), loaded once."""
 
     loaded = None
 
