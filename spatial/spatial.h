@@ -26,7 +26,6 @@
 #include "lexel/spatial/readback.h"
 #include "lexel/spatial/samples.h"
 #include "lexel/spatial/standard_map.h"
-#include "lexel/spatial/storage_factor.h"
 #include "lexel/spatial/temporal.h"
 #include "lexel/spatial/tsm.h"
 #include "lexel/spatial/virtual_shadow_map.h"

@@ -1,7 +1,7 @@
 #include "lexel/cases/load/stored_fits.h"
 
 #include "lexel/cases/load/json_reader.h"
-#include "lexel/flatland/scene_family.h"
+#include "lexel/flatland/studies/scene_family.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {

@@ -12,7 +12,7 @@ namespace lexel::cases {
 
 struct StoredFit {
     std::string caseName;            // the family's name, a thesis case's file stem
-    std::vector<double> parameters;  // in the family's order (flatland/scene_family.h)
+    std::vector<double> parameters;  // in the family's order (flatland/studies/scene_family.h)
     double worstAngleDeg = NAN;      // max |angle error|, degrees
     double worstFootprint = NAN;     // max |relative footprint error|
 };

@@ -1,6 +1,6 @@
 // `lexel fit-thesis`: recovers the thesis's four flatland scenes from its published tables
-// (Chong 2003, ch. 4.1.3) by fitting each case's scene family (flatland/scene_family.h) with
-// flatland/scene_fit.h, starting from the committed fits (cases/flatland/fitted/).
+// (Chong 2003, ch. 4.1.3) by fitting each case's scene family (flatland/studies/scene_family.h)
+// with flatland/studies/scene_fit.h, starting from the committed fits (cases/flatland/fitted/).
 #pragma once
 
 #include <cstdint>
@@ -10,7 +10,7 @@
 
 #include "lexel/cases/load/published.h"
 #include "lexel/cases/load/stored_fits.h"
-#include "lexel/flatland/scene_fit.h"
+#include "lexel/flatland/studies/scene_fit.h"
 
 namespace lexel::cases {
 

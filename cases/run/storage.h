@@ -1,5 +1,5 @@
-// `lexel storage`: Lloyd et al. 2006's storage factor S̄ (spatial/storage_factor.h) for one view
-// frustum — the data of the paper's Figs. 5–7, 10, 12 and 13 — and, for a 3D case, every
+// `lexel storage`: Lloyd et al. 2006's storage factor S̄ (spatial/studies/storage_factor.h) for one
+// view frustum — the data of the paper's Figs. 5–7, 10, 12 and 13 — and, for a 3D case, every
 // method's measured storage factor (MethodOutcome::storageFactor) beside the analytic S̄ of its
 // scheme for the case's own camera and beside S̄_opt.
 #pragma once
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "lexel/spatial/harness/scene.h"
-#include "lexel/spatial/storage_factor.h"
+#include "lexel/spatial/studies/storage_factor.h"
 
 namespace lexel::cases {
 

@@ -1,6 +1,6 @@
 // Which scene stands for a thesis case (Chong 2003, ch. 4.1.3): the hand reconstruction
 // <dir>/<file>, or the scene `lexel fit-thesis` recovered from the published numbers,
-// <dir>/fitted/<file>, whichever matches the published table better (flatland/scene_fit.h).
+// <dir>/fitted/<file>, whichever matches the published table better (flatland/studies/scene_fit.h).
 #pragma once
 
 #include <filesystem>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "lexel/cases/load/published.h"
-#include "lexel/flatland/scene_fit.h"
+#include "lexel/flatland/studies/scene_fit.h"
 
 namespace lexel::cases {
 

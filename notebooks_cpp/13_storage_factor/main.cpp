@@ -13,7 +13,8 @@
 // least value (f/n − 1)/(2 tanθ) for η ∈ [0, 1]; unwarped costs f/n times that; nothing beats
 // S̄_opt.
 //
-// Public API: lexel::spatial (storage_factor.h). Figure: the program's own plot helper.
+// Public API: lexel::spatial_studies (spatial/studies/storage_factor.h, a study, not installed).
+// Figure: the program's own plot helper.
 //
 //   ./build/notebooks_cpp/notebook_13_storage_factor [OUT_DIR]    (default out/notebooks/)
 #include <algorithm>
@@ -21,7 +22,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "lexel/spatial.h"
+#include "lexel/spatial/studies/storage_factor.h"
 #include "notebook.h"
 #include "plot.h"
 

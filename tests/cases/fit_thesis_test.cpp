@@ -14,7 +14,7 @@
 #include "lexel/cases/report/tables_report.h"
 #include "lexel/cases/run/thesis_scene.h"
 #include "lexel/cases/run/thesis_tables.h"
-#include "lexel/flatland/scene_family.h"
+#include "lexel/flatland/studies/scene_family.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {

@@ -1,7 +1,8 @@
-// Scene families and the inverse fit (flatland/scene_family.h, flatland/scene_fit.h): the
-// families honor the constraints they claim, the comparison measures what `lexel tables`
-// measures, and the fit recovers a scene from the numbers lexel itself printed for it.
-#include "lexel/flatland/scene_fit.h"
+// Scene families and the inverse fit (flatland/studies/scene_family.h,
+// flatland/studies/scene_fit.h): the families honor the constraints they claim, the comparison
+// measures what `lexel tables` measures, and the fit recovers a scene from the numbers lexel itself
+// printed for it.
+#include "lexel/flatland/studies/scene_fit.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,7 @@
 #include "lexel/flatland/lexel_remap.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/flatland/sampling.h"
-#include "lexel/flatland/scene_family.h"
+#include "lexel/flatland/studies/scene_family.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::flatland {

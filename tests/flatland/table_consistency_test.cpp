@@ -1,7 +1,7 @@
-// PredictAverageFromRows (flatland/table_consistency.h): on lexel's own numbers the window holds
-// the true half sweep and the true average at a third angle; on the thesis's printed tables the
-// PSM row's average is predicted from the Normal and L1 rows.
-#include "lexel/flatland/table_consistency.h"
+// PredictAverageFromRows (flatland/studies/table_consistency.h): on lexel's own numbers the window
+// holds the true half sweep and the true average at a third angle; on the thesis's printed tables
+// the PSM row's average is predicted from the Normal and L1 rows.
+#include "lexel/flatland/studies/table_consistency.h"
 
 #include <gtest/gtest.h>
 

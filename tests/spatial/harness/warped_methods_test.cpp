@@ -13,7 +13,7 @@
 #include "lexel/spatial/cascades.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/logpsm.h"
-#include "lexel/spatial/storage_factor.h"
+#include "lexel/spatial/studies/storage_factor.h"
 #include "spatial/spatial_test_scenes.h"
 
 namespace lexel::spatial {

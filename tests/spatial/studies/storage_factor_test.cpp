@@ -2,7 +2,7 @@
 // Fig. 13 crossover) against the dense numeric evaluation (central differences of the fitted
 // map over a lattice of the frustum, relative 1e-6), the vertex rule of §4.4 against the same
 // evaluation for random light directions, and the values the paper prints for Fig. 12.
-#include "lexel/spatial/storage_factor.h"
+#include "lexel/spatial/studies/storage_factor.h"
 
 #include <gtest/gtest.h>
 

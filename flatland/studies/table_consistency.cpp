@@ -18,7 +18,7 @@
 // any other angle by (C1). A table whose third row's average falls outside the predicted range
 // is inconsistent with lexel's footprint (dp/dl with tight extents) under any geometry; one
 // inside is consistent with it. The conditions are necessary, not sufficient, for a scene.
-#include "lexel/flatland/table_consistency.h"
+#include "lexel/flatland/studies/table_consistency.h"
 
 #include <algorithm>
 #include <cmath>

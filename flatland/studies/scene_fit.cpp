@@ -13,7 +13,7 @@
 // Lawson's reweighting moves the least-squares optimum toward the smallest worst error; and a
 // compass search on the written scene's worst error, which needs no derivative, finishes across
 // the steps.
-#include "lexel/flatland/scene_fit.h"
+#include "lexel/flatland/studies/scene_fit.h"
 
 #include <ceres/ceres.h>
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "lexel/flatland/scene.h"
-#include "lexel/flatland/scene_family.h"
+#include "lexel/flatland/studies/scene_family.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::flatland {

@@ -1,76 +1,9 @@
-// Lloyd et al. 2006 (paper 001), §3–§5 and Appendices A–C: the storage factor. The extracted
-// text garbles several equations; everything below is re-derived here and tested numerically in
-// tests/spatial/storage_factor_test.cpp (closed forms against SampledMaxErrors over dense
-// samples of the frustum, relative 1e-6).
-//
-// Light overhead (§4.1, Fig. 3). Light space: y toward the light, z along the view vector,
-// x = y × z. A point of the frustum at eye depth z has light-space depth z and lateral extent
-// |x| ≤ z a tanθ (a = aspect, θ = half the vertical field of view). The warp is a perspective
-// frustum along z whose centre lies n' before the near plane; with z' = n' + z - n and
-// f' = n' + f - n the map is (eqs. 5–6, corrected: the printed s lacks the 2 and t's sign)
-//     s = x / (2 z' tanθ') + ½,  tanθ' = (f / f') a tanθ   (the far corners are the widest:
-//                                 f/f' ≥ n/n' ⟺ (f - n)(n' - n) ≥ 0, true for n' ≥ n),
-//     t = f'(z' - n') / (z' (f' - n'))  (= (f'+n')/(2(f'-n')) - f'n'/(z'(f'-n')) + ½).
-// Eqs. 3–4 with the image beam w_i = 2 z tanθ (eq. 2, res_i = 1):
-//     w_lx = dx/ds = 2 z' tanθ' = 2 a tanθ f z' / f',   m_x = w_lx / w_i = a f z' / (z f'),
-//     w_lz = dz/dt = z'² (f' - n') / (f' n'),           m_z = (f - n)/(2 tanθ) · z'² / (z n' f'),
-// which are eqs. 7–8 (a = 1 in the paper). Maxima (eqs. 9–10, printed for n = 1 only):
-// m_x ∝ 1 + (n' - n)/z decreases in z, so M_x = m_x(n) = a f n' / (n f'); m_z ∝ (z + n' - n)²/z is
-// convex in z, so M_z is the larger end value, m_z(n) = C n'/(n f') or m_z(f) = C f'/(f n')
-// (C = (f - n)/(2 tanθ)); they are equal where n'² f = n f'², i.e. n' √f = √n (n' + f - n),
-// n' = √n (f - n)/(√f - √n) = n + √(fn) = n'_LSPSM; m_z(f) is the larger for n ≤ n' ≤ n'_LSPSM.
-// Eq. 12: S̄ = M_x M_z / a = C (f n'/(n f')) · {f'/(f n'), n'/(n f')} = C/n · {1, f n'²/(n f'²)}.
-//
-// η (eq. 11, Appendix B). Write g(n') = M_z / C = {f'/(f n') for n' ≤ L, n'/(n f') for n' > L},
-// L = n'_LSPSM, α = f/n. Then g(n) = g(∞) = 1/n and g(L) = 1/√(fn). Appendix B sets
-// η = (g(L) - g(n'))/(g(∞) - g(L)) for n' > L and η = (g(n') - g(L))/(g(n) - g(L)) for n' ≤ L.
-// Solving (n = 1 by scale): for η ≤ 0, n'/(n' + α - 1) = (1 - η(√α - 1))/√α gives
-// n' = (1 - η(√α - 1))(√α + 1)/(1 + η) = ((1 + √α) - η(α - 1))/(1 + η); for η ≥ 0,
-// (n' + α - 1)/(α n') = (1 + η(√α - 1))/√α gives n' = (α - 1)/((√α - 1)(1 + η√α))
-// = (1 + √α)/(1 + η√α). (The printed eq. 11 reads √(α+1) for √α + 1 and lost the 1 + η√α.)
-// By construction M_z is linear in η on each half; the test checks it.
-//
-// Appendix C: t = ln(z/n)/ln(f/n) with the PSM-like s gives m_x = a, m_z = ln(f/n)/(2 tanθ)
-// everywhere, S̄_opt = ln(f/n)/(2 tanθ).
-//
-// General light (§4.4): the vertex rule. For a map of the form above in any light frame, at a
-// point p: w_i = 2 tanθ (p·v) is affine in p and positive in the frustum; w_lx = z'·A (A the
-// slope range) is affine in p; w_lz = z'² (f' - n')/(f' n') with z' affine in p. So
-// m_x = affine/affine is linear-fractional, hence quasi-linear (its sublevel sets are half-spaces)
-// and its maximum over a convex polytope is at a vertex; m_z = (affine)²/affine is a
-// quadratic-over-linear function, convex where the denominator is positive, and a convex
-// function's maximum over a polytope is at a vertex. The unwarped map (n' = ∞) has constant w_l
-// and m = const / (p·v), convex. This is Lloyd's "the maxima must lie at the vertices".
-//
-// Partitioning (§5.2–5.3). Partition i of k spans [n ρ^(i-1), n ρ^i], ρ = (f/n)^(1/k) (eqs.
-// 15–16); with the light overhead each partition's S̄ is eq. 12 with f/n = ρ, and the k maps add:
-//     ZP (n' = ∞, bracket f/n = ρ):   k ρ (ρ - 1)/(2 tanθ)      (eq. 17)
-//     ZP + W (n' ≤ n'_LSPSM):         k (ρ - 1)/(2 tanθ)        (eq. 18)
-// FP with the light overhead keeps only the top face, which projects onto the same trapezoid
-// with the same image beams, so FP + ZP + W = ZP + W (eq. 19). Light behind (light travelling
-// along v, Fig. 11): no warp (sinγ = 0, n' = ∞); the unwarped map of partition i covers
-// 2 f_i a tanθ × 2 f_i tanθ at the texel size of the narrowest image beam 2 n_i tanθ, so
-// S̄_i = ρ² (a cancels with the image's a pixels per row), and ZP = k ρ² (eq. 20).
-// FP + ZP + W from behind (eq. 21, generalized): the top face {up = d tanθ, |right| ≤ d a tanθ}
-// projects along v to light-space z = d tanθ, |x| ≤ a z, with w_i = 2 d tanθ = 2 z. A trapezoid
-// z ∈ [z_n, z_f], |x| ≤ c z with w_i = β z needs, by the derivation of eq. 12 with tanθ' ∝ c,
-// M_x M_z = 2c (z_f/z_n - 1)/β² for n' ≤ n'_LSPSM: here c = a, β = 2, so S̄ = (ρ - 1)/2 per piece;
-// the side faces (z = d a tanθ, |x| ≤ z/a, w_i = 2z/a: c = 1/a, β = 2/a) give a(ρ - 1)/2 / a, the
-// same. Four faces of k pieces plus the near face (an unwarped map of a face of constant image
-// beam, S̄ = 1): 2k(ρ - 1) + 1, independent of θ and a — the paper's 4 · eq. 18 at θ = 45° + 1.
-// Fig. 13's crossover: ZP with k = 4m, 4m ρ_z² = 4m α^(1/(2m)), against 2m(α^(1/m) - 1) + 1; with
-// u = α^(1/(2m)): 2m u² - 4m u - (2m - 1) = 0, u = 1 + √(2 - 1/(2m)), α* = u^(2m).
-//
-// Face partitioning (§5.1). The partition of a face is the set of frustum points whose light ray
-// crosses it. Along a light ray (direction -y) the eye depth p·v changes by -(v·y) per unit
-// length while w_l is constant (directional light, the map is a function of x, z only), so the
-// ray's largest error is where its image beam is narrowest: where it enters the frustum when
-// v·y < 0 (through a face with n·y > 0, a front face) and where it leaves when v·y > 0 (a back
-// face, n·y < 0); for v·y = 0 the error is constant along the ray and we take the front faces.
-// So each partition's maxima are on its face piece, at the piece's vertices (the vertex rule).
-// The far face (outward normal v) is never chosen: n·y = v·y has the wrong sign in both cases.
-// The near face has constant image beams; it gets one unwarped map.
-#include "lexel/spatial/storage_factor.h"
+// Lloyd et al. 2006's storage factor (storage_factor.h). The derivations of every formula here —
+// light overhead (eqs. 5–12), η (eq. 11, Appendix B), the log bound (Appendix C), the vertex rule
+// for a general light (§4.4), z- and face partitioning (§5) — are in storage_factor.md beside this
+// file; tests/spatial/studies/storage_factor_test.cpp checks them against dense samples of the
+// frustum (relative 1e-6).
+#include "lexel/spatial/studies/storage_factor.h"
 
 #include <algorithm>
 #include <array>

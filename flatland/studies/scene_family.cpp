@@ -1,4 +1,4 @@
-#include "lexel/flatland/scene_family.h"
+#include "lexel/flatland/studies/scene_family.h"
 
 #include <algorithm>
 #include <cmath>

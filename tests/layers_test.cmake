@@ -1,0 +1,24 @@
+# The core's sources include nothing above the core (CONTRIBUTING.md, "Layout"): no file of
+# solvers/, flatland/ or spatial/ outside their studies/, harness/, gl/ and python/ folders includes
+# a header of the studies, the test bench, the OpenGL backend or the case layer. (The root
+# CMakeLists.txt checks the core's links the same way when configuring.)
+# Arguments: ROOT, the source tree to check (the test of this script gives it a bad tree too).
+set(forbidden "#include \"lexel/(cases|spatial/harness|spatial/gl|spatial/studies|flatland/studies)/")
+file(GLOB core RELATIVE ${ROOT} ${ROOT}/solvers/*.h ${ROOT}/solvers/*.cpp ${ROOT}/flatland/*.h
+     ${ROOT}/flatland/*.cpp ${ROOT}/spatial/*.h ${ROOT}/spatial/*.cpp)
+if(NOT core)
+    message(FATAL_ERROR "layers: no core sources under ${ROOT}")
+endif()
+set(violations)
+foreach(file IN LISTS core)
+    file(STRINGS ${ROOT}/${file} lines REGEX "${forbidden}")
+    foreach(line IN LISTS lines)
+        list(APPEND violations "${file}: ${line}")
+    endforeach()
+endforeach()
+if(violations)
+    list(JOIN violations "\n  " text)
+    message(FATAL_ERROR "layers: core sources include headers above the core:\n  ${text}")
+endif()
+list(LENGTH core count)
+message(STATUS "layers: ${count} core sources include only the core")
