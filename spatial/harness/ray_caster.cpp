@@ -193,106 +193,102 @@ std::optional<RayCaster::Hit> RayCaster::Intersect(const glm::dvec3& wsOrigin,
     return Hit{static_cast<double>(rayHit.ray.tfar) * impl_->frame.wsScale, rayHit.hit.primID};
 }
 
-void RayCaster::IntersectBatch(std::span<const ShadowRay> rays, std::span<std::int32_t> triangle,
-                               RayOrder order) const {
-    if (rays.size() != triangle.size())
-        throw std::invalid_argument("ray caster: " + std::to_string(rays.size()) + " rays but " +
-                                    std::to_string(triangle.size()) + " result slots");
-    const std::size_t chunkCount = (rays.size() + kRaysPerChunk - 1) / kRaysPerChunk;
-    const RTCScene scene = impl_->scene;
-    const RTCDevice device = impl_->device;
+namespace {
+
+// Lanes [0, count) of `packet` from rays[first, first + count); lanes past the end repeat the last
+// ray but are masked off in `valid`.
+void FillPacket(RTCRay16& packet, int* valid, std::span<const ShadowRay> rays, std::size_t first,
+                std::size_t count) {
+    for (std::size_t i = 0; i < kPacketSize; ++i) {
+        const ShadowRay& r = rays[first + std::min(i, count - 1)];
+        valid[i] = i < count ? -1 : 0;
+        packet.org_x[i] = r.unitOrigin.x;
+        packet.org_y[i] = r.unitOrigin.y;
+        packet.org_z[i] = r.unitOrigin.z;
+        packet.dir_x[i] = r.direction.x;
+        packet.dir_y[i] = r.direction.y;
+        packet.dir_z[i] = r.direction.z;
+        packet.tnear[i] = r.tNear;
+        packet.tfar[i] = r.tFar;
+        packet.time[i] = 0.0f;
+        packet.mask[i] = std::numeric_limits<unsigned>::max();
+        packet.id[i] = static_cast<unsigned>(i);
+        packet.flags[i] = 0;
+    }
+}
+
+// Calls trace(context, first, count) for every packet of `rays` (at most kPacketSize rays from
+// `first`), in parallel over chunks of kRaysPerChunk rays, each chunk's packets in order on one
+// thread with one intersect context flagged for `order`.
+template <class Trace>
+void TracePackets(std::size_t rayCount, RayCaster::RayOrder order, const Trace& trace) {
+    const std::size_t chunkCount = (rayCount + kRaysPerChunk - 1) / kRaysPerChunk;
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, chunkCount),
         [&](const tbb::blocked_range<std::size_t>& chunks) {
             RTCIntersectContext context;
             rtcInitIntersectContext(&context);
-            context.flags = order == RayOrder::kCoherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                                         : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-            RTCRayHit16 packet;
-            alignas(64) int valid[kPacketSize];
+            context.flags = order == RayCaster::RayOrder::kCoherent
+                                ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
             for (std::size_t chunk = chunks.begin(); chunk != chunks.end(); ++chunk) {
                 const std::size_t chunkBegin = chunk * kRaysPerChunk;
-                const std::size_t chunkEnd = std::min(rays.size(), chunkBegin + kRaysPerChunk);
-                for (std::size_t first = chunkBegin; first < chunkEnd; first += kPacketSize) {
-                    const std::size_t count = std::min(kPacketSize, chunkEnd - first);
-                    for (std::size_t i = 0; i < kPacketSize; ++i) {
-                        // Lanes past the end repeat the last ray but are masked off.
-                        const ShadowRay& r = rays[first + std::min(i, count - 1)];
-                        valid[i] = i < count ? -1 : 0;
-                        packet.ray.org_x[i] = r.unitOrigin.x;
-                        packet.ray.org_y[i] = r.unitOrigin.y;
-                        packet.ray.org_z[i] = r.unitOrigin.z;
-                        packet.ray.dir_x[i] = r.direction.x;
-                        packet.ray.dir_y[i] = r.direction.y;
-                        packet.ray.dir_z[i] = r.direction.z;
-                        packet.ray.tnear[i] = r.tNear;
-                        packet.ray.tfar[i] = r.tFar;
-                        packet.ray.time[i] = 0.0f;
-                        packet.ray.mask[i] = std::numeric_limits<unsigned>::max();
-                        packet.ray.id[i] = static_cast<unsigned>(i);
-                        packet.ray.flags[i] = 0;
-                        packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-                        packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
-                        packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
-                    }
-                    rtcIntersect16(valid, scene, &context, &packet);
-                    ThrowOnEmbreeError(device, "tracing a packet of rays");
-                    for (std::size_t i = 0; i < count; ++i)
-                        triangle[first + i] = packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID
-                                                  ? -1
-                                                  : static_cast<std::int32_t>(packet.hit.primID[i]);
-                }
+                const std::size_t chunkEnd = std::min(rayCount, chunkBegin + kRaysPerChunk);
+                for (std::size_t first = chunkBegin; first < chunkEnd; first += kPacketSize)
+                    trace(context, first, std::min(kPacketSize, chunkEnd - first));
             }
         });
 }
 
-void RayCaster::OccludedBatch(std::span<const ShadowRay> rays, std::span<std::uint8_t> occluded,
-                              RayOrder order) const {
-    if (rays.size() != occluded.size())
-        throw std::invalid_argument("ray caster: " + std::to_string(rays.size()) + " rays but " +
-                                    std::to_string(occluded.size()) + " result slots");
-    const std::size_t chunkCount = (rays.size() + kRaysPerChunk - 1) / kRaysPerChunk;
+void CheckResultSlots(std::size_t rays, std::size_t slots) {
+    if (rays != slots)
+        throw std::invalid_argument("ray caster: " + std::to_string(rays) + " rays but " +
+                                    std::to_string(slots) + " result slots");
+}
+
+}  // namespace
+
+void RayCaster::IntersectBatch(std::span<const ShadowRay> rays, std::span<std::int32_t> triangle,
+                               RayOrder order) const {
+    CheckResultSlots(rays.size(), triangle.size());
     const RTCScene scene = impl_->scene;
     const RTCDevice device = impl_->device;
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, chunkCount),
-        [&](const tbb::blocked_range<std::size_t>& chunks) {
-            RTCIntersectContext context;
-            rtcInitIntersectContext(&context);
-            context.flags = order == RayOrder::kCoherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                                         : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-            RTCRay16 packet;
-            alignas(64) int valid[kPacketSize];
-            for (std::size_t chunk = chunks.begin(); chunk != chunks.end(); ++chunk) {
-                const std::size_t chunkBegin = chunk * kRaysPerChunk;
-                const std::size_t chunkEnd = std::min(rays.size(), chunkBegin + kRaysPerChunk);
-                for (std::size_t first = chunkBegin; first < chunkEnd; first += kPacketSize) {
-                    const std::size_t count = std::min(kPacketSize, chunkEnd - first);
-                    for (std::size_t i = 0; i < kPacketSize; ++i) {
-                        // Lanes past the end repeat the last ray but are masked off.
-                        const ShadowRay& r = rays[first + std::min(i, count - 1)];
-                        valid[i] = i < count ? -1 : 0;
-                        packet.org_x[i] = r.unitOrigin.x;
-                        packet.org_y[i] = r.unitOrigin.y;
-                        packet.org_z[i] = r.unitOrigin.z;
-                        packet.dir_x[i] = r.direction.x;
-                        packet.dir_y[i] = r.direction.y;
-                        packet.dir_z[i] = r.direction.z;
-                        packet.tnear[i] = r.tNear;
-                        packet.tfar[i] = r.tFar;
-                        packet.time[i] = 0.0f;
-                        packet.mask[i] = std::numeric_limits<unsigned>::max();
-                        packet.id[i] = static_cast<unsigned>(i);
-                        packet.flags[i] = 0;
-                    }
-                    rtcOccluded16(valid, scene, &context, &packet);
-                    ThrowOnEmbreeError(device, "tracing a packet of shadow rays");
-                    for (std::size_t i = 0; i < count; ++i)
-                        occluded[first + i] =
-                            packet.tfar[i] == -std::numeric_limits<float>::infinity() ? 1 : 0;
-                }
-            }
-        });
+    TracePackets(rays.size(), order,
+                 [&](RTCIntersectContext& context, std::size_t first, std::size_t count) {
+                     RTCRayHit16 packet;
+                     alignas(64) int valid[kPacketSize];
+                     FillPacket(packet.ray, valid, rays, first, count);
+                     for (std::size_t i = 0; i < kPacketSize; ++i) {
+                         packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+                         packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+                         packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+                     }
+                     rtcIntersect16(valid, scene, &context, &packet);
+                     ThrowOnEmbreeError(device, "tracing a packet of rays");
+                     for (std::size_t i = 0; i < count; ++i)
+                         triangle[first + i] =
+                             packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID
+                                 ? -1
+                                 : static_cast<std::int32_t>(packet.hit.primID[i]);
+                 });
+}
+
+void RayCaster::OccludedBatch(std::span<const ShadowRay> rays, std::span<std::uint8_t> occluded,
+                              RayOrder order) const {
+    CheckResultSlots(rays.size(), occluded.size());
+    const RTCScene scene = impl_->scene;
+    const RTCDevice device = impl_->device;
+    TracePackets(rays.size(), order,
+                 [&](RTCIntersectContext& context, std::size_t first, std::size_t count) {
+                     RTCRay16 packet;
+                     alignas(64) int valid[kPacketSize];
+                     FillPacket(packet, valid, rays, first, count);
+                     rtcOccluded16(valid, scene, &context, &packet);
+                     ThrowOnEmbreeError(device, "tracing a packet of shadow rays");
+                     for (std::size_t i = 0; i < count; ++i)
+                         occluded[first + i] =
+                             packet.tfar[i] == -std::numeric_limits<float>::infinity() ? 1 : 0;
+                 });
 }
 
 }  // namespace lexel::spatial

@@ -531,8 +531,12 @@ double ImageBeamWidth(const ViewFrustum& frustum, const glm::dvec3& esPoint) {
     return 2.0 * frustum.TanHalfFovY() * depth;
 }
 
-ErrorPair VertexMaxErrors(const ViewFrustum& frustum, const WarpedMap& map,
-                          std::span<const glm::dvec3> esVertices) {
+namespace {
+
+// The largest w_l / w_i over the vertices of either map kind (both have BeamWidths).
+template <class Map>
+ErrorPair MaxErrorsAtVertices(const ViewFrustum& frustum, const Map& map,
+                              std::span<const glm::dvec3> esVertices) {
     Require(!esVertices.empty(), "vertices", "none given");
     ErrorPair worst;
     for (const glm::dvec3& p : esVertices) {
@@ -542,6 +546,13 @@ ErrorPair VertexMaxErrors(const ViewFrustum& frustum, const WarpedMap& map,
         worst.z = std::max(worst.z, w.z / wi);
     }
     return worst;
+}
+
+}  // namespace
+
+ErrorPair VertexMaxErrors(const ViewFrustum& frustum, const WarpedMap& map,
+                          std::span<const glm::dvec3> esVertices) {
+    return MaxErrorsAtVertices(frustum, map, esVertices);
 }
 
 ErrorPair SampledMaxErrors(const ViewFrustum& frustum, const LightFrame& frame,
@@ -612,15 +623,7 @@ LogWarpedMap FitLogWarpedMap(const LightFrame& frame, std::span<const glm::dvec3
 
 ErrorPair LogVertexMaxErrors(const ViewFrustum& frustum, const LogWarpedMap& map,
                              std::span<const glm::dvec3> esVertices) {
-    Require(!esVertices.empty(), "vertices", "none given");
-    ErrorPair worst;
-    for (const glm::dvec3& p : esVertices) {
-        const ErrorPair w = map.BeamWidths(p);
-        const double wi = ImageBeamWidth(frustum, p);
-        worst.x = std::max(worst.x, w.x / wi);
-        worst.z = std::max(worst.z, w.z / wi);
-    }
-    return worst;
+    return MaxErrorsAtVertices(frustum, map, esVertices);
 }
 
 double LogPsmStorageFactor(const ViewFrustum& frustum, const glm::dvec3& esToLight) {

@@ -6,28 +6,21 @@
 // A bad file must be refused with a DomainError of one line; any other exception, a crash, a
 // sanitizer report or a hang is a finding. tinygltf is compiled into lexel's code, so its parsing
 // is instrumented too.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
 
 #include "fuzz_support.h"
-#include "lexel/solvers/errors.h"
-#include "lexel/spatial/harness/mesh_loader.h"
 
 namespace {
 
-// One directory per process (libFuzzer's -jobs run several), made on first use with buffer.bin.
+// One directory per process, made on first use with buffer.bin.
 const std::filesystem::path& WorkDir() {
     static const std::filesystem::path dir = [] {
-        const auto path = std::filesystem::temp_directory_path() /
-                          ("lexel_gltf_fuzz_" + std::to_string(::getpid()));
-        std::filesystem::create_directories(path);
+        const auto path = lexel::fuzz::MakeProcessDir("lexel_gltf_fuzz");
         const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
         const std::uint32_t indices[3] = {0, 1, 2};
         std::ofstream bin(path / "buffer.bin", std::ios::binary | std::ios::trunc);
@@ -42,16 +35,6 @@ const std::filesystem::path& WorkDir() {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-    const std::filesystem::path path = WorkDir() / "input.gltf";
-    {
-        std::ofstream out(path, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    }
-    try {
-        lexel::spatial::LoadMesh(path);
-    } catch (const lexel::DomainError& e) {
-        lexel::fuzz::CheckRefusalMessage(e);
-    }
-    std::filesystem::remove(path);
+    lexel::fuzz::LoadMeshBytes(bytes, WorkDir() / "input.gltf");
     return 0;
 }
