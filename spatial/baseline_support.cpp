@@ -13,8 +13,8 @@ namespace lexel::spatial::baseline_detail {
 
 glm::dvec4 WorldPlaneOfLightPlane(const LightSpace& lightSpace, const glm::dvec3& p4,
                                   double delta) {
-    // X(x) = L x + X(0) with L = LightFromWorldLinear, so p4·X(x) = (Lᵀp4)·x + p4·X(0).
-    const glm::dmat3 linear = lightSpace.LightFromWorldLinear();
+    // X(x) = L x + X(0) with L = LsFromWsLinear, so p4·X(x) = (Lᵀp4)·x + p4·X(0).
+    const glm::dmat3 linear = lightSpace.LsFromWsLinear();
     const glm::dvec3 n = glm::transpose(linear) * p4;
     return {n, glm::dot(p4, lightSpace.ToLight(glm::dvec3(0.0))) - delta};
 }

@@ -13,10 +13,10 @@
 namespace lexel::spatial {
 
 glm::dmat4 MapFromWorld(const LightSpace& lightSpace, const LightMatrix& matrix) {
-    // X = L x + X(0) (L = LightFromWorldLinear, whose columns are the light-space images of the
+    // X = L x + X(0) (L = LsFromWsLinear, whose columns are the light-space images of the
     // world axes), so row_i = (p_i·L[0], p_i·L[1], p_i·L[2], p_i·X(0)).
     const glm::dvec3 lsOrigin = lightSpace.ToLight(glm::dvec3(0.0));
-    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
     const glm::dmat3 rows = matrix.Rows();
     glm::dmat4 m(0.0);  // column-major: m[c][r]
     for (int c = 0; c < 4; ++c) {

@@ -47,7 +47,7 @@ std::optional<LightMatrix> FromScreenRows(const LightSpace& lightSpace,
         if (failure) *failure = why;
         return std::nullopt;
     };
-    const glm::dmat3 linear = lightSpace.LightFromWorldLinear();  // rows e1, e2, (e3 | 0)
+    const glm::dmat3 linear = lightSpace.LsFromWsLinear();  // rows e1, e2, (e3 | 0)
     const glm::dvec3 lsCenter = lightSpace.ToLight(wsCenter);
     glm::dvec3 rows[3];
     const int rowIndex[3] = {0, 1, 3};

@@ -57,7 +57,7 @@ glm::dvec3 LightSpace::ToLight(const glm::dvec3& wsPoint) const {
     return {glm::dot(e1_, v), glm::dot(e2_, v), s_};
 }
 
-glm::dmat3 LightSpace::LightFromWorldLinear() const {
+glm::dmat3 LightSpace::LsFromWsLinear() const {
     // glm is column-major: m[c][r]. Rows are e1, e2, e3 (or 0).
     glm::dmat3 m(0.0);
     const glm::dvec3 third = IsPoint() ? e3_ : glm::dvec3(0.0);

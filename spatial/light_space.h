@@ -1,5 +1,5 @@
 // Light space (Chong & Gortler, report §2.1): an orthonormal frame whose origin is the light, in
-// which the light matrix P acts. A world point x becomes X = lightFromWorld · [x; 1] (3-vector);
+// which the light matrix P acts. A world point x becomes X = lsFromWs · [x; 1] (3-vector);
 // the shadow-map coordinates are u^i = (p_i · X) / (p4 · X) for i = 1, 2 (report eq. 2, with the
 // zeros of Fig. 1: P sends the light to infinity, so only X's direction matters to u).
 //
@@ -44,7 +44,7 @@ class LightSpace {
     glm::dvec3 ToLight(const glm::dvec3& wsPoint) const;
     // ∂X/∂x: the 3×3 linear part (for a displacement of a world point; rows e1, e2, and e3 for a
     // point light, 0 for a directional one).
-    glm::dmat3 LightFromWorldLinear() const;
+    glm::dmat3 LsFromWsLinear() const;
     // Linear depth: |x - light| for a point light, d·(x - o) + s for a directional one (> 0 over
     // the scene bounds).
     double Depth(const glm::dvec3& wsPoint) const;

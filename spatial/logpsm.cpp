@@ -54,7 +54,7 @@ AxisWarp FitAxis(double centre, double half, int side, const std::pair<double, d
 // visible points: (A_x, A_z) of the header comment.
 glm::dvec2 AxisAliasing(const BaselineContext& context, const MapWarp& unit) {
     const LightSpace& ls = *context.lightSpace;
-    const glm::dmat3 lsFromWs = ls.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = ls.LsFromWsLinear();
     const double pixel = 2.0 * std::tan(glm::radians(context.camera.fovYDeg) / 2.0) /
                          context.camera.resolution.height;
     glm::dvec2 worst(0.0);

@@ -103,7 +103,7 @@ glm::dvec2 CameraAxisInPlane(const BaselineContext& context, const glm::dvec3& p
     glm::dvec3 b1, b2;
     PlaneBasis(p4, &b1, &b2);
     for (const glm::dvec3& ws : {forward, right}) {
-        const glm::dvec3 lsDir = ls.LightFromWorldLinear() * ws;
+        const glm::dvec3 lsDir = ls.LsFromWsLinear() * ws;
         const glm::dvec2 inPlane(glm::dot(b1, lsDir), glm::dot(b2, lsDir));
         if (glm::length(inPlane) > 1e-6 * glm::length(lsDir)) return glm::normalize(inPlane);
     }

@@ -9,7 +9,7 @@
 namespace lexel::spatial {
 
 // ∂u/∂x on the plane ⊥ the ray: the rows ∂u^i/∂X (LightMatrix::MapJacobian) times ∂X/∂x
-// (LightSpace::LightFromWorldLinear) applied to a unit basis (e1, e2) of that plane give the 2×2
+// (LightSpace::LsFromWsLinear) applied to a unit basis (e1, e2) of that plane give the 2×2
 // J_l in texels per world unit. The texel's beam cross-section is J_l⁻¹, whose largest singular
 // value is σ_max(J_l) / |det J_l| (σ_min σ_max = |det|), with σ_max² = (T + √(T² − 4 det²)) / 2,
 // T = ‖J_l‖_F²: no cancellation for the small singular value.
@@ -21,7 +21,7 @@ double PerspectiveAliasingOfRows(const Camera& camera, const LightSpace& lightSp
         std::abs(wsRay.x) < 0.5 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
     const glm::dvec3 wsE1 = glm::normalize(glm::cross(wsRay, helper));
     const glm::dvec3 wsE2 = glm::cross(wsRay, wsE1);
-    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
     const glm::dvec3 lsE1 = lsFromWs * wsE1, lsE2 = lsFromWs * wsE2;
     const double a = glm::dot(du1dX, lsE1), b = glm::dot(du1dX, lsE2);
     const double c = glm::dot(du2dX, lsE1), d = glm::dot(du2dX, lsE2);

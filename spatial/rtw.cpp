@@ -69,7 +69,7 @@ ImportanceMap RtwImportance(const Readback& readback, const Camera& camera,
     // frame's.
     const double sx = static_cast<double>(frame.width) / rb.width;
     const double sy = static_cast<double>(frame.height) / rb.height;
-    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
     for (std::size_t i = 0; i < buffer.triangle.size(); ++i) {
         if (!buffer.Covered(i)) continue;
         glm::dvec3 dx1 = planeDx1[i], dx2 = planeDx2[i];

@@ -46,7 +46,7 @@ LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& li
             throw std::invalid_argument(
                 "LightSamplesAtPixels: pixels must be ascending and inside the readback");
     LightSamples s;
-    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
     s.lsRelevant.reserve(readback.wsRelevant.size());
     for (const glm::dvec3& ws : readback.wsRelevant) s.lsRelevant.push_back(lightSpace.ToLight(ws));
     s.lsRelevantHull.reserve(readback.wsRelevantHull.size());

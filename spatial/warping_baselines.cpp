@@ -151,9 +151,9 @@ std::optional<LightMatrix> LispsmWarp(const BaselineContext& context, const Norm
         // scale of z_D would change γ: post-perspective angles are not invariant.)
         glm::dvec3 b1, b2;
         PlaneBasis(axis.p4, &b1, &b2);
-        const glm::dmat3 worldFromLight = glm::transpose(ls.LightFromWorldLinear());
-        const glm::dvec3 g1 = worldFromLight * b1, g2 = worldFromLight * b2;
-        const glm::dvec3 g3 = worldFromLight * axis.p4, wsLight = ls.light().position;
+        const glm::dmat3 wsFromLs = glm::transpose(ls.LsFromWsLinear());
+        const glm::dvec3 g1 = wsFromLs * b1, g2 = wsFromLs * b2;
+        const glm::dvec3 g3 = wsFromLs * axis.p4, wsLight = ls.light().position;
         for (const glm::dvec3& x : wsBody)
             if (!(glm::dot(g3, x - wsLight) > 0.0))
                 return fail("the body reaches the light's plane");
@@ -165,8 +165,8 @@ std::optional<LightMatrix> LispsmWarp(const BaselineContext& context, const Norm
                      glm::dvec4(0.0, 0.0, 0.0, -w0 * w0), glm::dvec4(g3, -glm::dot(g3, wsLight)));
     } else {
         // A rigid light view: distances (and so z_n, z_f, n_opt) stay in world units.
-        const glm::dmat3 worldFromLight = glm::transpose(ls.LightFromWorldLinear());
-        const glm::dvec3 e1 = worldFromLight[0], e2 = worldFromLight[1];  // ⊥ the light
+        const glm::dmat3 wsFromLs = glm::transpose(ls.LsFromWsLinear());
+        const glm::dvec3 e1 = wsFromLs[0], e2 = wsFromLs[1];  // ⊥ the light
         const glm::dvec3 l = ls.light().direction, o = context.wsBounds.Center();
         dFromWorld = FromRows(glm::dvec4(e1, -glm::dot(e1, o)), glm::dvec4(e2, -glm::dot(e2, o)),
                               glm::dvec4(l, -glm::dot(l, o)), glm::dvec4(0.0, 0.0, 0.0, 1.0));

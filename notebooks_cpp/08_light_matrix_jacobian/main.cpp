@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
                  h / h2048);
 
     // The figure: log ||J⁻¹||²_F at every reliable readback pixel; boundary samples in red.
-    const glm::dmat3 dXdW = lightSpace.LightFromWorldLinear();
+    const glm::dmat3 dXdW = lightSpace.LsFromWsLinear();
     std::vector<double> logBadness(res.Count(), NAN);
     for (std::size_t k = 0; k < res.Count(); ++k)
         if (readback.buffer.Covered(k) && readback.smooth[k])

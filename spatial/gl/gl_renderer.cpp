@@ -63,17 +63,17 @@ void SetLightUniforms(GLuint program, const LightSpace& lightSpace, const LightM
     glm::dvec3 rayBase, unused;
     lightSpace.Ray(glm::dvec3(0.0, 0.0, 1.0), &rayBase, &unused);  // directional: o - s e3
     const glm::dvec3 wsLight = point ? lightSpace.light().position : rayBase;
-    const glm::dmat3 lsFromWorld = lightSpace.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
     const glm::dvec3 lsOffset = lightSpace.ToLight(glm::dvec3(0.0));
     const glm::dmat3 mapFromLs = matrix.Rows();
     const glm::dmat3 lsFromMap = glm::inverse(mapFromLs);
-    const glm::dmat3 worldFromLs = glm::transpose(lsFromWorld);
+    const glm::dmat3 wsFromLs = glm::transpose(lsFromWs);
     glProgramUniform1i(program, 10, point ? 1 : 0);
-    glProgramUniformMatrix3dv(program, 11, 1, GL_FALSE, glm::value_ptr(lsFromWorld));
+    glProgramUniformMatrix3dv(program, 11, 1, GL_FALSE, glm::value_ptr(lsFromWs));
     glProgramUniform3dv(program, 12, 1, glm::value_ptr(lsOffset));
     glProgramUniformMatrix3dv(program, 13, 1, GL_FALSE, glm::value_ptr(mapFromLs));
     glProgramUniformMatrix3dv(program, 14, 1, GL_FALSE, glm::value_ptr(lsFromMap));
-    glProgramUniformMatrix3dv(program, 15, 1, GL_FALSE, glm::value_ptr(worldFromLs));
+    glProgramUniformMatrix3dv(program, 15, 1, GL_FALSE, glm::value_ptr(wsFromLs));
     glProgramUniform3dv(program, 16, 1, glm::value_ptr(wsLight));
     glProgramUniform3dv(program, 17, 1, glm::value_ptr(lightSpace.light().direction));
     glProgramUniform1d(program, 18, lsOffset.z);

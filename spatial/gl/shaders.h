@@ -41,19 +41,19 @@ void main() {
 )";
 
 // The light and its matrix in double (GLSL 4.00 fp64, core since OpenGL 4.0), shared by the
-// shadow and shading passes: X = lsFromWorld p + lsOffset, u = (mapFromLs X).xy / (mapFromLs X).z,
+// shadow and shading passes: X = lsFromWs p + lsOffset, u = (mapFromLs X).xy / (mapFromLs X).z,
 // and the light ray through the texel centre c: from wsLight (point) or from
-// wsLight + (lsThird / X.z) worldFromLs X (directional), along normalize(worldFromLs X) (point)
+// wsLight + (lsThird / X.z) wsFromLs X (directional), along normalize(wsFromLs X) (point)
 // or wsLightDirection (directional), X = lsFromMap (c, 1). In float the ray's direction carries
 // ~1e-7 relative error, which a grazing receiver turns into more than the 1e-5 bias. WorldPoint
 // takes a unit-frame float point back to world coordinates in double.
 #define LEXEL_LIGHT_UNIFORMS                                                                   \
     "layout(location = 10) uniform int pointLight;\n"                                          \
-    "layout(location = 11) uniform dmat3 lsFromWorld;\n"                                       \
+    "layout(location = 11) uniform dmat3 lsFromWs;\n"                                          \
     "layout(location = 12) uniform dvec3 lsOffset;\n"                                          \
     "layout(location = 13) uniform dmat3 mapFromLs;\n"                                         \
     "layout(location = 14) uniform dmat3 lsFromMap;\n"                                         \
-    "layout(location = 15) uniform dmat3 worldFromLs;\n"                                       \
+    "layout(location = 15) uniform dmat3 wsFromLs;\n"                                          \
     "layout(location = 16) uniform dvec3 wsLight;\n"                                           \
     "layout(location = 17) uniform dvec3 wsLightDirection;\n"                                  \
     "layout(location = 18) uniform double lsThird;\n"                                          \
@@ -67,9 +67,9 @@ void main() {
     "    dvec3 X = lsFromMap * dvec3(texelCentre, 1.0);\n"                                     \
     "    if (pointLight != 0) {\n"                                                             \
     "        origin = wsLight;\n"                                                              \
-    "        direction = normalize(worldFromLs * X);\n"                                        \
+    "        direction = normalize(wsFromLs * X);\n"                                           \
     "    } else {\n"                                                                           \
-    "        origin = wsLight + (lsThird / X.z) * (worldFromLs * X);\n"                        \
+    "        origin = wsLight + (lsThird / X.z) * (wsFromLs * X);\n"                           \
     "        direction = wsLightDirection;\n"                                                  \
     "    }\n"                                                                                  \
     "}\n"                                                                                      \
@@ -136,7 +136,7 @@ uint ShadeOf(ivec2 pixel) {
     dvec3 n = dvec3(texelFetch(normalImage, pixel, 0).xyz);
     dvec3 toLight = pointLight != 0 ? normalize(wsLight - p) : -wsLightDirection;
     if (!(dot(n, toLight) > 0.0)) return kFacingAway;
-    dvec3 X = lsFromWorld * p + lsOffset;
+    dvec3 X = lsFromWs * p + lsOffset;
     dvec3 h = mapFromLs * X;
     if (!(h.z > 1e-9 * length(X))) return kLit;
     dvec2 u = h.xy / h.z;

@@ -159,7 +159,7 @@ double NearestRankQuantile(std::vector<double>& values, double q) {
 Footprints MeasureFootprints(const Camera& camera, const LightSpace& lightSpace,
                              const CameraBuffer& frame, std::span<const glm::dvec3> dWdx1,
                              std::span<const glm::dvec3> dWdx2, const FrameShading& shading) {
-    const glm::dmat3 lsFromWs = lightSpace.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
     Footprints f;
     double sum = 0.0;
     std::int64_t measured = 0;

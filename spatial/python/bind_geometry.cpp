@@ -254,7 +254,7 @@ void BindLightSpace(py::module_& m) {
             "distance along the direction (plus a positive constant) for a directional one.")
         .def(
             "light_from_world_linear",
-            [](const LightSpace& s) { return FromMatrix3(s.LightFromWorldLinear()); },
+            [](const LightSpace& s) { return FromMatrix3(s.LsFromWsLinear()); },
             "dX/dx, (3, 3): rows e1, e2 and e3 (point light) or 0 (directional).");
 }
 

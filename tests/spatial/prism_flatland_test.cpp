@@ -92,7 +92,7 @@ Prism MakePrism(flatland::FlatScene flat) {
 // point of the readback as a relevant point.
 LightSamples CentralRowSamples(const Prism& prism) {
     const CameraBuffer& buf = prism.readback.buffer;
-    const glm::dmat3 lsFromWs = prism.lightSpace.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = prism.lightSpace.LsFromWsLinear();
     LightSamples s;
     for (const glm::dvec3& ws : prism.readback.wsRelevant)
         s.lsRelevant.push_back(prism.lightSpace.ToLight(ws));
@@ -129,7 +129,7 @@ flatland::LexelSamples FlatlandSamplesAt(const flatland::SamplingPass& pass,
 
 // World direction of a light-space axis: p·X = (Rᵀp)·(x − L) for a point light.
 glm::dvec3 WorldAxis(const LightSpace& lightSpace, const glm::dvec3& lsP) {
-    return glm::transpose(lightSpace.LightFromWorldLinear()) * lsP;
+    return glm::transpose(lightSpace.LsFromWsLinear()) * lsP;
 }
 
 double AngleDifferenceDeg(double a, double b) { return glm::degrees(flatland::WrapAngle(a - b)); }
@@ -162,7 +162,7 @@ TEST_P(PrismOverFlatland, JacobianInThePlaneIsTheFlatlandFootprint) {
             sLo = std::min(sLo, glm::dot(b, d) / glm::dot(a, d));
             sHi = std::max(sHi, glm::dot(b, d) / glm::dot(a, d));
         }
-        const glm::dmat3 lsFromWs = prism.lightSpace.LightFromWorldLinear();
+        const glm::dmat3 lsFromWs = prism.lightSpace.LsFromWsLinear();
         LightMatrix m;
         m.p4 = lsFromWs * a;
         m.p1 = lsFromWs * ((lexels / (sHi - sLo)) * (b - sLo * a));
@@ -212,7 +212,7 @@ TEST_P(PrismOverFlatland, EnergyIsTheFlatlandL2PlusASmallExtrusionTerm) {
     const flatland::LexelSamples flatSamples = FlatlandSamplesAt(pass, samples, lexels);
     const flatland::ValidInterval valid = flatland::ValidTInterval(flatSamples);
     const double expectedRatio = (lexels / map.width) * (lexels / map.width);
-    const glm::dmat3 lsFromWs = prism.lightSpace.LightFromWorldLinear();
+    const glm::dmat3 lsFromWs = prism.lightSpace.LsFromWsLinear();
     double worst = 0.0;
     for (int i = 1; i < 60; ++i) {
         const double xLo = std::atan(valid.lo), xHi = std::atan(valid.hi);
