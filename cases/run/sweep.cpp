@@ -57,7 +57,7 @@ int LightsInFlight(const spatial::Scene& scene, std::size_t methods) {
 }  // namespace
 
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
-                     const std::vector<Light>& lights, const std::function<void()>& onLightDone,
+                     const std::vector<Light>& lights, const SweepLightDone& onLightDone,
                      BackendKind backendKind) {
     const Stopwatch timer;
     const auto backend = MakeRenderBackend(backendKind, scene.geometry);
@@ -66,6 +66,8 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     r.caseName = scene.name;
     r.methods = methods;
     r.lights = lights;
+    r.indices.resize(lights.size());
+    for (std::size_t l = 0; l < lights.size(); ++l) r.indices[l] = l;
     r.cells.assign(lights.size(), std::vector<SweepCell>(methods.size()));
     r.receiverPixels.assign(lights.size(), 0);
     spatial::EvaluationOptions options;
@@ -107,7 +109,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                 }
             }
             r.receiverPixels[l] = outcome.receiverPixels;
-            if (onLightDone) onLightDone();
+            if (onLightDone) onLightDone(l, r.cells[l], r.receiverPixels[l]);
         });
     }
     r.seconds = timer.Ms() / 1000.0;
