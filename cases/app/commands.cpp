@@ -415,6 +415,64 @@ void SayResumed(const SweepDone& done, std::size_t lights, std::size_t studyLigh
     std::cerr << '\n';
 }
 
+// A share's evaluation: its lights and, with `withStudy`, the partitions study; each light
+// finished is appended to `journal` (when there is one) and those it holds are not evaluated.
+struct ShareRun {
+    SweepResult result;
+    StudyMisclassified study;
+};
+ShareRun RunShare(const fs::path& casePath, const spatial::Scene& scene,
+                  const std::vector<std::string>& methods,
+                  const std::vector<spatial::Light>& lights,
+                  const std::vector<std::size_t>& indices, bool withStudy, SweepJournal* journal,
+                  BackendKind backend) {
+    const SweepDone done = journal ? journal->Done() : SweepDone{};
+    ShareRun run;
+    run.result = WithCaseName(casePath, [&] {
+        Progress bar("sweep", indices.size() - done.lights.size(), "lights");
+        return RunSweepShare(
+            scene, methods, lights, indices, done,
+            [&](const SweepLightRecord& light) {
+                if (journal) journal->Append(JournalLightLine(light));
+                bar.Step();
+            },
+            backend);
+    });
+    if (!withStudy) return run;
+    run.study = WithCaseName(casePath, [&] {
+        const std::size_t studyLights =
+            CascadeStudyExtraCounts(scene.partitions.count).size() * indices.size();
+        Progress bar("partitions k = 1, 2, 4, 8", studyLights - done.study.size(), "lights");
+        return RunStudyShare(
+            scene, run.result, done,
+            [&](const StudyLightRecord& light) {
+                if (journal) journal->Append(JournalStudyLine(light));
+                bar.Step();
+            },
+            backend);
+    });
+    return run;
+}
+
+// The sweep's lights (--lights, --light-type) and the indices of shard's share of them.
+std::vector<spatial::Light> SweepLightsFor(const fs::path& casePath, const spatial::Scene& scene,
+                                           const SweepFlags& flags) {
+    std::optional<spatial::Light::Type> type;
+    if (!flags.lightType.empty())
+        type = flags.lightType == "point" ? spatial::Light::Type::kPoint
+                                          : spatial::Light::Type::kDirectional;
+    return WithCaseName(casePath, [&] { return SweepLightsOf(scene, flags.lights, type); });
+}
+
+std::vector<std::size_t> ShareOf(std::size_t lights, SweepShard shard) {
+    std::vector<std::size_t> indices = ShardLights(lights, shard);
+    if (indices.empty())
+        throw InputError("--shard " + ShardText(shard) + ": the sweep has " +
+                         std::to_string(lights) + " lights, so this shard has none (give " +
+                         "at most " + std::to_string(lights) + " shards)");
+    return indices;
+}
+
 }  // namespace
 
 int SweepCommand(const SweepFlags& flags) {
@@ -428,64 +486,33 @@ int SweepCommand(const SweepFlags& flags) {
     NoteCpuOnlyMethods(methods, backend);
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
-    std::optional<spatial::Light::Type> type;
-    if (!flags.lightType.empty())
-        type = flags.lightType == "point" ? spatial::Light::Type::kPoint
-                                          : spatial::Light::Type::kDirectional;
-    const std::vector<spatial::Light> lights =
-        WithCaseName(casePath, [&] { return SweepLightsOf(scene, flags.lights, type); });
-    const std::vector<std::size_t> indices = ShardLights(lights.size(), shard);
-    if (indices.empty())
-        throw InputError("--shard " + ShardText(shard) + ": the sweep has " +
-                         std::to_string(lights.size()) + " lights, so this shard has none (give " +
-                         "at most " + std::to_string(lights.size()) + " shards)");
+    const std::vector<spatial::Light> lights = SweepLightsFor(casePath, scene, flags);
+    const std::vector<std::size_t> indices = ShareOf(lights.size(), shard);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
     if (!flags.outDir.empty()) out.emplace(flags.outDir, SweepOutputPlan(casePath, scene.name));
     const SweepIdentity identity{scene.name,        Fnv1a64Hex(FileBytes(casePath)), methods,
                                  flags.backend,     scene.partitions.count,          lights.size(),
                                  LightsHash(lights)};
+    // With --out: the cascade-count study, and the journal of the finished lights.
     const bool withStudy = out && !CascadeStudyMethods(methods).empty();
     const std::vector<int> studyCounts =
         withStudy ? CascadeStudyExtraCounts(scene.partitions.count) : std::vector<int>{};
     std::optional<SweepJournal> journal;
     if (out) journal.emplace(SweepJournal::PathFor(flags.outDir), identity, shard, flags.resume);
-    const SweepDone done = journal ? journal->Done() : SweepDone{};
     if (flags.resume)
-        SayResumed(done, indices.size(), studyCounts.size() * indices.size(), *journal);
-    const SweepResult r = WithCaseName(casePath, [&] {
-        Progress bar("sweep", indices.size() - done.lights.size(), "lights");
-        return RunSweepShare(
-            scene, methods, lights, indices, done,
-            [&](const SweepLightRecord& light) {
-                if (journal) journal->Append(JournalLightLine(light));
-                bar.Step();
-            },
-            backend);
-    });
-    // With --out, the cascade-count study and the first light's cascades are computed before
-    // anything is written.
-    StudyMisclassified studyCells;
+        SayResumed(journal->Done(), indices.size(), studyCounts.size() * indices.size(), *journal);
+    const ShareRun run = RunShare(casePath, scene, methods, lights, indices, withStudy,
+                                  journal ? &*journal : nullptr, backend);
+    const SweepResult& r = run.result;
     std::optional<CascadeCountStudy> study;
-    if (withStudy) {
-        studyCells = WithCaseName(casePath, [&] {
-            Progress bar("partitions k = 1, 2, 4, 8",
-                         studyCounts.size() * r.lights.size() - done.study.size(), "lights");
-            return RunStudyShare(
-                scene, r, done,
-                [&](const StudyLightRecord& light) {
-                    if (journal) journal->Append(JournalStudyLine(light));
-                    bar.Step();
-                },
-                backend);
-        });
-        study = CascadeStudyOf(r, scene.partitions.count, studyCells);
-    }
+    if (withStudy) study = CascadeStudyOf(r, scene.partitions.count, run.study);
     PrintSweep(r, report, flags.format,
                "sweep: " + Fixed(r.seconds, 1) + " s for " + std::to_string(r.lights.size()) +
                    " lights" + (shard.count > 1 ? " (shard " + ShardText(shard) + ")" : ""));
     if (!out) return 0;
+    // The first light's cascades (light 0's shard's) are drawn before anything is published.
     const auto stageImages = [&] {
-        if (r.indices.front() != 0) return std::vector<SpatialImageFile>{};  // light 0's shard's
+        if (r.indices.front() != 0) return std::vector<SpatialImageFile>{};
         return WithCaseName(casePath, [&] {
             return out->Writing(
                 [&] { return WriteFirstLightCascades(out->StagingDir(), scene, r, backend); });
@@ -493,7 +520,7 @@ int SweepCommand(const SweepFlags& flags) {
     };
     const std::string written =
         StageSweepFiles(*out, r, report, study ? &*study : nullptr,
-                        RecordOf(identity, shard, r, studyCounts, studyCells, {}), stageImages);
+                        RecordOf(identity, shard, r, studyCounts, run.study, {}), stageImages);
     out->Commit();
     std::cerr << "lexel: wrote " << written << " to " << flags.outDir << '\n';
     return 0;

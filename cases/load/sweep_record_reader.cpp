@@ -203,15 +203,18 @@ SweepRecord ParseRecord(const nlohmann::json& doc) {
 
 }  // namespace
 
-SweepRecord ReadSweepRecord(const fs::path& dir) {
-    const fs::path path = dir / "sweep-record.json";
-    const std::string shown = path.string();
-    const nlohmann::json doc = ParseJsonText(ReadAll(path, shown), shown);
+SweepRecord ParseSweepRecord(const std::string& text, const std::string& source) {
+    const nlohmann::json doc = ParseJsonText(text, source);
     try {
         return ParseRecord(doc);
     } catch (const InputError& e) {
-        throw InputError(shown + ": " + e.what());
+        throw InputError(source + ": " + e.what());
     }
+}
+
+SweepRecord ReadSweepRecord(const fs::path& dir) {
+    const fs::path path = dir / "sweep-record.json";
+    return ParseSweepRecord(ReadAll(path, path.string()), path.string());
 }
 
 JournalHeader ParseJournalHeader(const std::string& line, const std::string& source) {

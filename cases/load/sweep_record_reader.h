@@ -17,6 +17,8 @@ inline constexpr std::size_t kMaxSweepRecordBytes = std::size_t{1} << 30;
 // Reads `<dir>/sweep-record.json`. Throws InputError naming the file (a missing one: "...: not
 // found (is <dir> the --out directory of a lexel sweep?)").
 SweepRecord ReadSweepRecord(const std::filesystem::path& dir);
+// The same from the record's text; `source` names it in errors.
+SweepRecord ParseSweepRecord(const std::string& text, const std::string& source);
 
 // A journal's first line: the identity and shard of the run that wrote it.
 struct JournalHeader {

@@ -76,11 +76,11 @@ if(retimed STREQUAL csv OR NOT difference STREQUAL "")
 endif()
 
 # ---- Merge refuses what is not one sweep, with one line and nothing written ----
-expect_run(0 "" "" ${sweep} --shard 1/3 --methods focused --out "${WORK}/other")
+expect_run(0 "" "" sweep "${case}" --lights 6 --methods focused --shard 1/3 --out "${WORK}/other")
 foreach(refusal
         "light 0 is in both [^\n]*shard0 and [^\n]*shard0 \\(overlapping shards\\)|${WORK}/shard0;${WORK}/shard0;${WORK}/shard1;${WORK}/shard2"
         "lights 2 and 5 of 6 are in none of the shards given \\(missing shards\\?\\)|${WORK}/shard0;${WORK}/shard1"
-        "[^\n]*other is not a shard of the sweep of [^\n]*shard0: they differ in methods \\('optimal,sdsm' vs 'optimal,sdsm,focused'\\)|${WORK}/shard0;${WORK}/other;${WORK}/shard2"
+        "[^\n]*other is not a shard of the sweep of [^\n]*shard0: they differ in methods \\('optimal,sdsm' vs 'focused'\\)|${WORK}/shard0;${WORK}/other;${WORK}/shard2"
         "[^\n]*/sweep-record.json: not found \\(is [^\n]* the --out directory of a lexel sweep\\?\\)|${WORK}")
     string(REPLACE "|" ";" parts "${refusal}")
     list(GET parts 0 message)
@@ -101,6 +101,17 @@ expect_run(2 "^$" "^lexel: error: --shard 6/7: the sweep has 6 lights, so this s
 expect_run(2 "^$" "^lexel: error: --resume: [^\n]*give --out\n$" ${sweep} --resume)
 if(EXISTS "${WORK}/refused" OR EXISTS "${WORK}/.refused.lexel-sweep-journal")
     message(FATAL_ERROR "a refused sweep wrote ${WORK}/refused or its journal")
+endif()
+
+# A second sweep into a directory whose journal another run holds is refused.
+find_program(FLOCK flock)
+if(FLOCK)
+    execute_process(COMMAND "${FLOCK}" "${WORK}/.locked.lexel-sweep-journal" "${LEXEL}" ${sweep} --out "${WORK}/locked"
+                    RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_QUIET)
+    if(NOT code EQUAL 2 OR NOT err MATCHES "^lexel: error: --out: another lexel sweep into this directory is running \\(it holds the resume journal [^\n]*locked\\.lexel-sweep-journal\\)\n$"
+       OR EXISTS "${WORK}/locked")
+        message(FATAL_ERROR "a sweep into a directory whose journal is locked: exit ${code}: ${err}")
+    endif()
 endif()
 
 # ---- --resume after a SIGKILL ----
