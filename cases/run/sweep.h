@@ -60,10 +60,13 @@ using SweepLightDone = std::function<void(std::size_t light, const std::vector<S
 // times aside). Calls `onLightDone` after each. Throws InputError naming the camera or the light
 // for input the evaluation cannot serve, BackendUnavailable when `backend` cannot be made. With
 // the GL backend the lights still run in parallel; their GPU passes take turns on the one context.
+// `indices`: each light's index in the whole sweep (r.indices, and the light an error names);
+// empty: 0, 1, ...
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
                      const std::vector<spatial::Light>& lights,
                      const SweepLightDone& onLightDone = {},
-                     BackendKind backend = BackendKind::kCpu);
+                     BackendKind backend = BackendKind::kCpu,
+                     const std::vector<std::size_t>& indices = {});
 
 // "point (x, y, z)" or "directional (x, y, z)", 4 significant digits.
 std::string LightLabel(const spatial::Light& light);

@@ -99,7 +99,7 @@ SweepResult RunSweepShare(const spatial::Scene& scene, const std::vector<std::st
         [&](std::size_t l, const std::vector<SweepCell>& cells, std::int64_t receiverPixels) {
             if (onLightDone) onLightDone({todo[l], todoLights[l], receiverPixels, cells});
         },
-        backend);
+        backend, todo);
     SweepResult r;
     r.caseName = scene.name;
     r.methods = methods;
@@ -127,11 +127,12 @@ StudyMisclassified RunStudyShare(const spatial::Scene& scene, const SweepResult&
     const std::vector<std::string> methods = CascadeStudyMethods(share.methods);
     StudyMisclassified study;
     for (int k : CascadeStudyExtraCounts(scene.partitions.count)) {
-        std::vector<std::size_t> todo;  // positions in the share
+        std::vector<std::size_t> todo, todoIndices;  // positions in the share, in the sweep
         std::vector<Light> todoLights;
         for (std::size_t l = 0; l < share.lights.size(); ++l)
             if (!done.study.count({k, share.indices[l]})) {
                 todo.push_back(l);
+                todoIndices.push_back(share.indices[l]);
                 todoLights.push_back(share.lights[l]);
             }
         spatial::Scene atK = scene;
@@ -144,7 +145,7 @@ StudyMisclassified RunStudyShare(const spatial::Scene& scene, const SweepResult&
                 for (const SweepCell& c : cells) counts.push_back(c.misclassified);
                 if (onLightDone) onLightDone({k, share.indices[todo[l]], counts});
             },
-            backend);
+            backend, todoIndices);
         for (std::size_t l = 0; l < share.lights.size(); ++l)
             if (const auto it = done.study.find({k, share.indices[l]}); it != done.study.end())
                 perLight[l] = it->second.misclassified;
