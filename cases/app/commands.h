@@ -40,8 +40,19 @@ struct SweepFlags {
     std::string outDir;
     int cascades = 0;             // partitions of the partitioned methods; 0: the case's
     std::string backend = "cpu";  // cpu | gl
+    std::string shard = "0/1";    // K/N: the lights i with i mod N = K
+    bool resume = false;          // continue from the journal of a killed run into outDir
 };
 int SweepCommand(const SweepFlags& flags);
+
+// `lexel merge DIR... --out DIR`: the shards' records (sweep-record.json) joined into the files
+// of one whole sweep, the same bit for bit as an unsharded run's but for the times.
+struct MergeFlags {
+    std::vector<std::string> dirs;
+    std::string outDir;
+    std::string format = "table";  // table | markdown | csv | json
+};
+int MergeCommand(const MergeFlags& flags);
 
 struct TimingFlags {
     std::string casePath;

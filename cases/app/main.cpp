@@ -3,7 +3,9 @@
 //             [--out DIR] [--no-map-truth] [--cascades K]   flatland and 3D cases alike
 //   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--methods NAME...]
 //             [--cascades K] [--format table|markdown|csv|json]
-//             [--out DIR]          the 3D report's Table 1, the fair and equal-texel tables
+//             [--out DIR] [--shard K/N] [--resume]
+//                                  the 3D report's Table 1, the fair and equal-texel tables
+//   lexel merge DIR... --out DIR [--format ...]   sweep shards joined into one whole sweep
 //   lexel timing CASE.json [--backend cpu|gl] [--lights N] [--frames F] [--format table|json|csv]
 //             [--update-every U] [--standard-every S] [--optimizer optimal-report|optimal|...]
 //                                                   the 3D report's Tables 2–3
@@ -117,6 +119,29 @@ int RunLexel(int argc, char** argv) {
     std::string sweepBackend = "cpu";
     sweep->add_option("--backend", sweepBackend, "The renderer (gl: OpenGL 4.5 via EGL)")
         ->check(CLI::IsMember({"cpu", "gl"}));
+    std::string sweepShard = "0/1";
+    sweep->add_option("--shard", sweepShard,
+                      "K/N: evaluate only the lights i with i mod N = K (K = 0 ... N-1), for a "
+                      "job array; join the shards' --out directories with lexel merge");
+    bool sweepResume = false;
+    sweep->add_flag("--resume", sweepResume,
+                    "Continue a killed sweep into --out DIR from the lights it finished (its "
+                    "journal beside DIR: .DIR.lexel-sweep-journal)");
+
+    auto* merge = app.add_subcommand(
+        "merge", "3D: join the --out directories of sweep shards into one whole sweep's files");
+    lexel::cases::MergeFlags mergeFlags;
+    merge->add_option("dirs", mergeFlags.dirs, "The shards' --out directories (any order)")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    merge->add_option("--out", mergeFlags.outDir, "Write the whole sweep's files here")
+        ->required()
+        ->check(NonEmpty("a directory"));
+    merge->add_option("--format", mergeFlags.format, "Output format")
+        ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
+    merge->footer(
+        "The merged files are those of one unsharded run, bit for bit, but for the times: each "
+        "light keeps its shard's ms, and the sweep's seconds are the sum of the shards'.");
 
     auto* timing = app.add_subcommand(
         "timing", "3D: time focused and optimal frames pass by pass (report Tables 2-3)");
@@ -257,7 +282,9 @@ int RunLexel(int argc, char** argv) {
                                       format, runOut, !noMapTruth, runCascades, runBackend});
         if (*sweep)
             return cases::SweepCommand({sweepCase, sweepLights, sweepLightType, sweepMethods,
-                                        sweepFormat, sweepOut, sweepCascades, sweepBackend});
+                                        sweepFormat, sweepOut, sweepCascades, sweepBackend,
+                                        sweepShard, sweepResume});
+        if (*merge) return cases::MergeCommand(mergeFlags);
         if (*timing) return cases::TimingCommand(timingFlags);
         if (*storage) return cases::StorageCommand(storageFlags);
         if (*meshInfo) return cases::MeshInfoCommand(meshInfoFile, meshInfoCase);

@@ -599,7 +599,8 @@ std::string SweepLightsCsv(const SweepResult& r) {
     for (std::size_t l = 0; l < r.lights.size(); ++l) {
         const Light& light = r.lights[l];
         const glm::dvec3 v = light.type == Light::Type::kPoint ? light.position : light.direction;
-        perLight << l << ',' << (light.type == Light::Type::kPoint ? "point" : "directional") << ','
+        perLight << (l < r.indices.size() ? r.indices[l] : l) << ','
+                 << (light.type == Light::Type::kPoint ? "point" : "directional") << ','
                  << CsvNumber(v.x) << ',' << CsvNumber(v.y) << ',' << CsvNumber(v.z) << ','
                  << r.receiverPixels[l];
         for (std::size_t m = 0; m < r.methods.size(); ++m) {

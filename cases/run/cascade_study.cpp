@@ -1,6 +1,7 @@
 #include "lexel/cases/run/cascade_study.h"
 
 #include <algorithm>
+#include <iterator>
 
 namespace lexel::cases {
 
@@ -29,34 +30,62 @@ std::vector<std::string> CascadeStudyMethods(const std::vector<std::string>& met
     return out;
 }
 
-CascadeCountStudy RunCascadeCountStudy(const spatial::Scene& scene, const SweepResult& sweep,
-                                       const std::function<void()>& onLightDone,
-                                       BackendKind backend) {
+std::vector<int> CascadeStudyCounts(int sweepCount) {
+    std::vector<int> counts(std::begin(kCounts), std::end(kCounts));
+    if (std::find(counts.begin(), counts.end(), sweepCount) == counts.end()) {
+        counts.push_back(sweepCount);
+        std::sort(counts.begin(), counts.end());
+    }
+    return counts;
+}
+
+std::vector<int> CascadeStudyExtraCounts(int sweepCount) {
+    std::vector<int> counts = CascadeStudyCounts(sweepCount);
+    counts.erase(std::find(counts.begin(), counts.end(), sweepCount));
+    return counts;
+}
+
+CascadeCountStudy CascadeStudyOf(const SweepResult& sweep, int sweepCount,
+                                 const StudyMisclassified& extra) {
     CascadeCountStudy study;
     study.methods = CascadeStudyMethods(sweep.methods);
-    study.counts.assign(std::begin(kCounts), std::end(kCounts));
-    if (std::find(study.counts.begin(), study.counts.end(), scene.partitions.count) ==
-        study.counts.end()) {
-        study.counts.push_back(scene.partitions.count);
-        std::sort(study.counts.begin(), study.counts.end());
-    }
+    study.counts = CascadeStudyCounts(sweepCount);
     if (const auto optimal = IndexOf(sweep.methods, "optimal"))
         study.optimalMean = MeanMisclassified(sweep, *optimal);
     study.meanMisclassified.assign(study.methods.size(), {});
+    std::size_t next = 0;  // the next of `extra`
     for (int k : study.counts) {
-        const SweepResult* r = &sweep;
-        SweepResult extra;
-        if (k != scene.partitions.count) {
-            spatial::Scene atK = scene;
-            atK.partitions.count = k;
-            extra = RunSweep(atK, study.methods, sweep.lights, onLightDone, backend);
-            r = &extra;
-        }
-        for (std::size_t m = 0; m < study.methods.size(); ++m)
+        for (std::size_t m = 0; m < study.methods.size(); ++m) {
+            if (k == sweepCount) {
+                study.meanMisclassified[m].push_back(
+                    MeanMisclassified(sweep, *IndexOf(sweep.methods, study.methods[m])));
+                continue;
+            }
+            double sum = 0.0;
+            for (const auto& light : extra.at(next)) sum += static_cast<double>(light.at(m));
             study.meanMisclassified[m].push_back(
-                MeanMisclassified(*r, *IndexOf(r->methods, study.methods[m])));
+                extra[next].empty() ? 0.0 : sum / static_cast<double>(extra[next].size()));
+        }
+        if (k != sweepCount) ++next;
     }
     return study;
+}
+
+CascadeCountStudy RunCascadeCountStudy(const spatial::Scene& scene, const SweepResult& sweep,
+                                       const SweepLightDone& onLightDone, BackendKind backend) {
+    const std::vector<std::string> methods = CascadeStudyMethods(sweep.methods);
+    StudyMisclassified extra;
+    for (int k : CascadeStudyExtraCounts(scene.partitions.count)) {
+        spatial::Scene atK = scene;
+        atK.partitions.count = k;
+        const SweepResult r = RunSweep(atK, methods, sweep.lights, onLightDone, backend);
+        auto& perLight = extra.emplace_back();
+        for (const auto& cells : r.cells) {
+            perLight.emplace_back();
+            for (const SweepCell& c : cells) perLight.back().push_back(c.misclassified);
+        }
+    }
+    return CascadeStudyOf(sweep, scene.partitions.count, extra);
 }
 
 }  // namespace lexel::cases

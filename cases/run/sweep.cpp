@@ -57,8 +57,8 @@ int LightsInFlight(const spatial::Scene& scene, std::size_t methods) {
 }  // namespace
 
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
-                     const std::vector<Light>& lights, const std::function<void()>& onLightDone,
-                     BackendKind backendKind) {
+                     const std::vector<Light>& lights, const SweepLightDone& onLightDone,
+                     BackendKind backendKind, const std::vector<std::size_t>& indices) {
     const Stopwatch timer;
     const auto backend = MakeRenderBackend(backendKind, scene.geometry);
     const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
@@ -66,6 +66,11 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     r.caseName = scene.name;
     r.methods = methods;
     r.lights = lights;
+    r.indices = indices;
+    if (r.indices.size() != lights.size()) {
+        r.indices.resize(lights.size());
+        for (std::size_t l = 0; l < lights.size(); ++l) r.indices[l] = l;
+    }
     r.cells.assign(lights.size(), std::vector<SweepCell>(methods.size()));
     r.receiverPixels.assign(lights.size(), 0);
     spatial::EvaluationOptions options;
@@ -81,7 +86,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                 outcome = evaluator->Evaluate(lights[l], options);
             } catch (const DomainError& e) {
                 const std::string light =
-                    "light " + std::to_string(l) + " " + LightLabel(lights[l]);
+                    "light " + std::to_string(r.indices[l]) + " " + LightLabel(lights[l]);
                 throw InputError(SpatialErrorField(e, light) + ": " + e.what());
             }
             for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -107,7 +112,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                 }
             }
             r.receiverPixels[l] = outcome.receiverPixels;
-            if (onLightDone) onLightDone();
+            if (onLightDone) onLightDone(l, r.cells[l], r.receiverPixels[l]);
         });
     }
     r.seconds = timer.Ms() / 1000.0;

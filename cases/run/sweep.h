@@ -37,6 +37,9 @@ struct SweepResult {
     std::string caseName;
     std::vector<std::string> methods;
     std::vector<spatial::Light> lights;
+    // Each light's index in the whole sweep (SweepLightsOf's order): 0, 1, ... for a whole sweep;
+    // a shard's share (sweep_share.h) holds the lights i with i mod N = K.
+    std::vector<std::size_t> indices;
     std::vector<std::vector<SweepCell>> cells;  // [light][method]
     std::vector<std::int64_t> receiverPixels;   // per light
     double seconds = 0.0;                       // wall time of the whole sweep
@@ -47,14 +50,23 @@ struct SweepResult {
 std::vector<spatial::Light> SweepLightsOf(const spatial::Scene& scene, int lights,
                                           std::optional<spatial::Light::Type> type = {});
 
-// Evaluates every light, in parallel over lights, deterministically for the case's seed; calls
-// `onLightDone` (from any thread) after each. Throws InputError naming the camera or the light
+// Called (from any thread, possibly at once from several) when light `light` (an index into the
+// lights given) is evaluated, with its cells per method and its receiver pixels.
+using SweepLightDone = std::function<void(std::size_t light, const std::vector<SweepCell>& cells,
+                                          std::int64_t receiverPixels)>;
+
+// Evaluates every light, in parallel over lights, deterministically for the case's seed: a
+// light's numbers depend on that light alone (not on the others given, their number or order;
+// times aside). Calls `onLightDone` after each. Throws InputError naming the camera or the light
 // for input the evaluation cannot serve, BackendUnavailable when `backend` cannot be made. With
 // the GL backend the lights still run in parallel; their GPU passes take turns on the one context.
+// `indices`: each light's index in the whole sweep (r.indices, and the light an error names);
+// empty: 0, 1, ...
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
                      const std::vector<spatial::Light>& lights,
-                     const std::function<void()>& onLightDone = {},
-                     BackendKind backend = BackendKind::kCpu);
+                     const SweepLightDone& onLightDone = {},
+                     BackendKind backend = BackendKind::kCpu,
+                     const std::vector<std::size_t>& indices = {});
 
 // "point (x, y, z)" or "directional (x, y, z)", 4 significant digits.
 std::string LightLabel(const spatial::Light& light);

@@ -495,7 +495,7 @@ expect_run(0 "spatial_small, 2[ \n]+directional lights" "^$"
 
 # --out writes four files; --methods restricts the columns; the count defaults to the case's.
 expect_run(0 "^Table 1 as published [^\n]*spatial_small, 4 point lights; in[ \n]+parentheses: % more than focused"
-           "^lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv to [^\n]*\n$"
+           "^lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv, sweep-record.json to [^\n]*\n$"
            sweep "${small}" --methods focused --methods normal --out "${WORK}/sweep")
 check_html_links("${WORK}/sweep/index.html")
 file(READ "${WORK}/sweep/index.html" page)
@@ -533,7 +533,7 @@ expect_run(0 "\"method\": \"psm\"" "^$" sweep "${small}" --lights 2 --method psm
 # Partitioned methods: the equal-texel table; --out adds the cascade-count study (k = 1, 2, 4, 8)
 # as CSV and a plot, and the first light's images with one map per cascade.
 expect_run(0 "\nEqual texels [^\n]*\n  spatial_small, 3 point lights; ref = optimal\n[^\n]*\n[^\n]*\nmethod +maps +misclassified +than ref[^\n]*\n-+\noptimal +1 [^\n]*\nsdsm +2 [^\n]*\nsdsm-optimal +2 "
-           "^lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv, cascades.csv, cascades.png and 8 images of the first light to [^\n]*\n$"
+           "^lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv, sweep-record.json, cascades.csv, cascades.png and 8 images of the first light to [^\n]*\n$"
            sweep "${small}" --lights 3 --methods optimal --methods sdsm --methods sdsm-optimal
            --cascades 2 --out "${WORK}/cascades")
 foreach(file cascades.csv cascades.png spatial_small_light0_sdsm_map1.png)

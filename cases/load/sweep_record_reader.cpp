@@ -1,0 +1,257 @@
+#include "lexel/cases/load/sweep_record_reader.h"
+
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+#include "lexel/cases/load/json_reader.h"
+#include "lexel/cases/report/sweep_record.h"
+#include "lexel/solvers/errors.h"
+
+namespace lexel::cases {
+
+namespace fs = std::filesystem;
+using spatial::Light;
+
+namespace {
+
+constexpr long long kMaxCount = std::numeric_limits<long long>::max();
+
+// A double of the record: a number, or "inf", "-inf", "nan".
+double RecordNumber(const JsonField& field, const nlohmann::json& value) {
+    if (value.is_string()) {
+        const std::string text = field.String();
+        if (text == "inf") return std::numeric_limits<double>::infinity();
+        if (text == "-inf") return -std::numeric_limits<double>::infinity();
+        if (text == "nan") return std::numeric_limits<double>::quiet_NaN();
+        field.Fail("must be a number, \"inf\", \"-inf\" or \"nan\", got \"" + text + "\"");
+    }
+    return field.Number();
+}
+
+std::vector<std::string> Strings(const JsonField& field) {
+    std::vector<std::string> out;
+    for (const JsonField& item : field.Array()) out.push_back(item.String());
+    return out;
+}
+
+SweepShard ParseShardText(const JsonField& field) {
+    const std::string text = field.String();
+    const std::size_t slash = text.find('/');
+    try {
+        if (slash != std::string::npos) {
+            std::size_t used = 0;
+            const unsigned long k = std::stoul(text.substr(0, slash), &used);
+            const unsigned long n = std::stoul(text.substr(slash + 1));
+            if (used == slash && n >= 1 && k < n) return {k, n};
+        }
+    } catch (const std::exception&) {
+    }
+    field.Fail("must be \"K/N\" with 0 <= K < N, got \"" + text + "\"");
+}
+
+SweepIdentity ParseIdentity(const JsonField& f) {
+    f.ExpectObject(
+        {"case", "case_fnv1a64", "methods", "backend", "cascades", "lights", "lights_fnv1a64"});
+    SweepIdentity id;
+    id.caseName = f["case"].String();
+    id.caseHash = f["case_fnv1a64"].String();
+    id.methods = Strings(f["methods"]);
+    id.backend = f["backend"].String();
+    id.cascades = static_cast<int>(f["cascades"].Integer(0, 1 << 20));
+    id.lights = static_cast<std::size_t>(f["lights"].Integer(0, kMaxCount));
+    id.lightsHash = f["lights_fnv1a64"].String();
+    return id;
+}
+
+glm::dvec3 RecordVec3(const JsonField& f, const nlohmann::json& value) {
+    const std::vector<JsonField> items = f.Array(3);
+    if (items.size() != 3) f.Fail("must be 3 numbers, got " + std::to_string(items.size()));
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = RecordNumber(items[i], value.at(i));
+    return v;
+}
+
+SweepCell ParseCell(const JsonField& f, const nlohmann::json& value) {
+    const std::vector<JsonField> x = f.Array();
+    constexpr std::size_t kFields = std::size(kSweepCellFields);
+    if (x.size() != kFields)
+        f.Fail("must have " + std::to_string(kFields) + " fields, got " + std::to_string(x.size()));
+    SweepCell c;
+    c.misclassified = x[0].Integer(0, kMaxCount);
+    c.h = RecordNumber(x[1], value[1]);
+    c.hGrazing = RecordNumber(x[2], value[2]);
+    c.winner = x[3].String();
+    c.footprintMean = RecordNumber(x[4], value[4]);
+    c.footprintMax = RecordNumber(x[5], value[5]);
+    c.uncovered = x[6].Integer(0, kMaxCount);
+    c.cascades = static_cast<int>(x[7].Integer(0, 1 << 30));
+    c.emptyPartitions = static_cast<int>(x[8].Integer(0, 1 << 30));
+    c.storageFactor = RecordNumber(x[9], value[9]);
+    c.pagesRequested = x[10].Integer(-1, kMaxCount);
+    c.pagesResident = x[11].Integer(-1, kMaxCount);
+    c.pagesDropped = x[12].Integer(-1, kMaxCount);
+    c.lodBias = RecordNumber(x[13], value[13]);
+    return c;
+}
+
+// One light: its index, kind, coordinates, receiver pixels and `methods` cells with their times.
+SweepLightRecord ParseLight(const JsonField& f, const nlohmann::json& value, std::size_t methods,
+                            bool withStudy) {
+    if (withStudy)
+        f.ExpectObject(
+            {"index", "type", "position", "direction", "receiver_pixels", "cells", "ms", "study"});
+    else
+        f.ExpectObject(
+            {"index", "type", "position", "direction", "receiver_pixels", "cells", "ms"});
+    SweepLightRecord light;
+    light.index = static_cast<std::size_t>(f["index"].Integer(0, kMaxCount));
+    const std::string type = f["type"].String();
+    if (type != "point" && type != "directional")
+        f["type"].Fail("must be \"point\" or \"directional\", got \"" + type + "\"");
+    light.light.type = type == "point" ? Light::Type::kPoint : Light::Type::kDirectional;
+    light.light.position = RecordVec3(f["position"], value.at("position"));
+    light.light.direction = RecordVec3(f["direction"], value.at("direction"));
+    light.receiverPixels = f["receiver_pixels"].Integer(0, kMaxCount);
+    const std::vector<JsonField> cells = f["cells"].Array(), ms = f["ms"].Array();
+    if (cells.size() != methods || ms.size() != methods)
+        f["cells"].Fail("must have one cell and one time per method (" + std::to_string(methods) +
+                        "), got " + std::to_string(cells.size()) + " and " +
+                        std::to_string(ms.size()));
+    for (std::size_t m = 0; m < methods; ++m) {
+        light.cells.push_back(ParseCell(cells[m], value.at("cells").at(m)));
+        light.cells.back().ms = RecordNumber(ms[m], value.at("ms").at(m));
+    }
+    return light;
+}
+
+// The study's misclassified pixels per study method.
+std::vector<std::int64_t> StudyCounts(const JsonField& f, std::size_t studyMethods) {
+    const std::vector<JsonField> items = f.Array();
+    if (items.size() != studyMethods)
+        f.Fail("must have one count per study method (" + std::to_string(studyMethods) + "), got " +
+               std::to_string(items.size()));
+    std::vector<std::int64_t> counts;
+    for (const JsonField& item : items) counts.push_back(item.Integer(0, kMaxCount));
+    return counts;
+}
+
+SpatialImageFile ParseImage(const JsonField& f) {
+    f.ExpectObject({"file", "light", "method", "kind", "caption"});
+    SpatialImageFile image;
+    image.file = f["file"].String();
+    // A plain file name beside the record: merge copies it, and nothing outside the directory.
+    if (image.file.empty() || image.file.find('/') != std::string::npos || image.file == "." ||
+        image.file == ".." || !image.file.ends_with(".png"))
+        f["file"].Fail("must be a plain .png file name, got \"" + image.file + "\"");
+    image.light = static_cast<std::size_t>(f["light"].Integer(0, kMaxCount));
+    image.method = f["method"].String();
+    image.kind = f["kind"].String();
+    image.caption = f["caption"].String();
+    return image;
+}
+
+std::string ReadAll(const fs::path& path, const std::string& shown) {
+    std::error_code error;
+    if (!fs::is_regular_file(path, error))
+        throw InputError(shown + ": not found (is " + path.parent_path().string() +
+                         " the --out directory of a lexel sweep?)");
+    if (fs::file_size(path, error) > kMaxSweepRecordBytes)
+        throw InputError(shown + ": larger than " + std::to_string(kMaxSweepRecordBytes) +
+                         " bytes");
+    std::ifstream in(path, std::ios::binary);
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (!in.eof() && in.fail()) throw InputError(shown + ": cannot be read");
+    return text;
+}
+
+SweepRecord ParseRecord(const nlohmann::json& doc) {
+    const JsonField f(doc, "");
+    f.ExpectObject({"format", "identity", "shard", "seconds", "cell_fields", "study_counts",
+                    "first_light_images", "lights"});
+    if (f["format"].String() != kSweepRecordFormat)
+        f["format"].Fail("must be \"" + std::string(kSweepRecordFormat) + "\"");
+    SweepRecord r;
+    r.identity = ParseIdentity(f["identity"]);
+    r.shard = ParseShardText(f["shard"]);
+    r.seconds = f["seconds"].Number();
+    const std::vector<std::string> fields = Strings(f["cell_fields"]);
+    if (fields !=
+        std::vector<std::string>(std::begin(kSweepCellFields), std::end(kSweepCellFields)))
+        f["cell_fields"].Fail("are not this lexel's cell fields (a record of another version?)");
+    for (const JsonField& k : f["study_counts"].Array())
+        r.studyCounts.push_back(static_cast<int>(k.Integer(1, 1 << 20)));
+    for (const JsonField& image : f["first_light_images"].Array())
+        r.images.push_back(ParseImage(image));
+    const std::size_t studyMethods = CascadeStudyMethods(r.identity.methods).size();
+    r.study.assign(r.studyCounts.size(), {});
+    const std::vector<JsonField> lights = f["lights"].Array();
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        const nlohmann::json& value = doc.at("lights").at(l);
+        r.lights.push_back(ParseLight(lights[l], value, r.identity.methods.size(), true));
+        if (l > 0 && r.lights[l].index <= r.lights[l - 1].index)
+            lights[l]["index"].Fail("must increase from light to light");
+        const std::vector<JsonField> study = lights[l]["study"].Array();
+        if (study.size() != r.studyCounts.size())
+            lights[l]["study"].Fail("must have one entry per study count (" +
+                                    std::to_string(r.studyCounts.size()) + ")");
+        for (std::size_t c = 0; c < study.size(); ++c)
+            r.study[c].push_back(StudyCounts(study[c], studyMethods));
+    }
+    return r;
+}
+
+}  // namespace
+
+SweepRecord ParseSweepRecord(const std::string& text, const std::string& source) {
+    const nlohmann::json doc = ParseJsonText(text, source);
+    try {
+        return ParseRecord(doc);
+    } catch (const InputError& e) {
+        throw InputError(source + ": " + e.what());
+    }
+}
+
+SweepRecord ReadSweepRecord(const fs::path& dir) {
+    const fs::path path = dir / "sweep-record.json";
+    return ParseSweepRecord(ReadAll(path, path.string()), path.string());
+}
+
+JournalHeader ParseJournalHeader(const std::string& line, const std::string& source) {
+    const nlohmann::json doc = ParseJsonText(line, source);
+    try {
+        const JsonField f(doc, "");
+        f.ExpectObject({"format", "identity", "shard"});
+        if (f["format"].String() != kSweepJournalFormat)
+            f["format"].Fail("must be \"" + std::string(kSweepJournalFormat) + "\"");
+        return {ParseIdentity(f["identity"]), ParseShardText(f["shard"])};
+    } catch (const InputError& e) {
+        throw InputError(source + ": " + e.what());
+    }
+}
+
+void ParseJournalEntry(const std::string& line, const std::string& source, std::size_t methods,
+                       std::size_t studyMethods, SweepDone& done) {
+    const nlohmann::json doc = ParseJsonText(line, source);
+    try {
+        const JsonField f(doc, "");
+        if (f.Has("light")) {
+            f.ExpectObject({"light"});
+            SweepLightRecord light = ParseLight(f["light"], doc.at("light"), methods, false);
+            done.lights[light.index] = std::move(light);
+            return;
+        }
+        f.ExpectObject({"study"});
+        const JsonField s = f["study"];
+        s.ExpectObject({"k", "index", "misclassified"});
+        StudyLightRecord light;
+        light.count = static_cast<int>(s["k"].Integer(1, 1 << 20));
+        light.index = static_cast<std::size_t>(s["index"].Integer(0, kMaxCount));
+        light.misclassified = StudyCounts(s["misclassified"], studyMethods);
+        done.study[{light.count, light.index}] = std::move(light);
+    } catch (const InputError& e) {
+        throw InputError(source + ": " + e.what());
+    }
+}
+
+}  // namespace lexel::cases

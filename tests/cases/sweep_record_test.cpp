@@ -1,0 +1,190 @@
+// The sweep record and journal (issue 28): every cell survives writing and reading bit for bit,
+// a merge of shards' records is the whole sweep's record, and records that are not one sweep are
+// refused naming the light or the field.
+#include "lexel/cases/report/sweep_record.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#include "lexel/cases/load/sweep_record_reader.h"
+#include "lexel/cases/run/sweep_share.h"
+#include "lexel/solvers/errors.h"
+
+namespace lexel::cases {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Doubles that a careless writer loses: non-finite, negative zero, subnormal, 17 digits.
+SweepCell AwkwardCell(std::int64_t k) {
+    SweepCell c;
+    c.misclassified = 1000 + k;
+    c.h = k == 0 ? kInf : 0.1 + 0.2 * static_cast<double>(k);
+    c.ms = 1.0 / 3.0;
+    c.hGrazing = k == 1 ? -0.0 : std::numeric_limits<double>::denorm_min();
+    c.winner = k == 2 ? "lispsm-tight" : "";
+    c.footprintMean = std::numeric_limits<double>::quiet_NaN();
+    c.footprintMax = -kInf;
+    c.uncovered = 7 * k;
+    c.cascades = 4;
+    c.emptyPartitions = 1;
+    c.storageFactor = std::numeric_limits<double>::max();
+    c.pagesRequested = k == 2 ? 12 : -1;
+    c.pagesResident = k == 2 ? 10 : -1;
+    c.pagesDropped = k == 2 ? 2 : -1;
+    c.lodBias = 0.125;
+    return c;
+}
+
+// A whole sweep's record: `lights` lights of two methods, one study count.
+SweepRecord WholeRecord(std::size_t lights) {
+    SweepRecord r;
+    r.identity = {"demo", "0123456789abcdef", {"optimal", "sdsm"}, "cpu", 2, lights, ""};
+    std::vector<spatial::Light> all;
+    r.studyCounts = {1};
+    r.study.assign(1, {});
+    for (std::size_t i = 0; i < lights; ++i) {
+        SweepLightRecord light;
+        light.index = i;
+        light.light.type =
+            i % 2 ? spatial::Light::Type::kDirectional : spatial::Light::Type::kPoint;
+        light.light.position = {1.0 / 3.0 + static_cast<double>(i), 1e-300, -7.25};
+        light.light.direction = {0.1, -0.7, std::nextafter(0.2, 1.0)};
+        light.receiverPixels = 11165 + static_cast<std::int64_t>(i);
+        light.cells = {AwkwardCell(static_cast<std::int64_t>(i % 3)),
+                       AwkwardCell(static_cast<std::int64_t>((i + 1) % 3))};
+        all.push_back(light.light);
+        r.lights.push_back(light);
+        r.study[0].push_back({static_cast<std::int64_t>(40 + i)});
+    }
+    r.identity.lightsHash = LightsHash(all);
+    r.seconds = 1.5;
+    return r;
+}
+
+bool SameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
+           (std::isnan(a) && std::isnan(b));
+}
+
+TEST(SweepRecord, EveryCellReadsBackBitForBit) {
+    const SweepRecord written = WholeRecord(3);
+    const std::string text = SweepRecordText(written);
+    const SweepRecord read = ParseSweepRecord(text, "record");
+    ASSERT_EQ(read.lights.size(), 3u);
+    EXPECT_EQ(read.identity, written.identity);
+    for (std::size_t l = 0; l < 3; ++l)
+        for (std::size_t m = 0; m < 2; ++m) {
+            const SweepCell& a = written.lights[l].cells[m];
+            const SweepCell& b = read.lights[l].cells[m];
+            EXPECT_EQ(a.misclassified, b.misclassified);
+            for (const auto field :
+                 {&SweepCell::h, &SweepCell::ms, &SweepCell::hGrazing, &SweepCell::footprintMean,
+                  &SweepCell::footprintMax, &SweepCell::storageFactor, &SweepCell::lodBias})
+                EXPECT_TRUE(SameBits(a.*field, b.*field)) << l << ' ' << m;
+            EXPECT_EQ(a.winner, b.winner);
+            EXPECT_EQ(a.pagesRequested, b.pagesRequested);
+            EXPECT_EQ(a.pagesDropped, b.pagesDropped);
+        }
+    EXPECT_TRUE(SameBits(read.lights[1].light.position.y, 1e-300));
+    EXPECT_TRUE(SameBits(read.lights[0].light.direction.z, std::nextafter(0.2, 1.0)));
+    // -0.0 keeps its sign.
+    EXPECT_TRUE(std::signbit(read.lights[0].cells[1].hGrazing));
+    // Written again, the same text.
+    EXPECT_EQ(SweepRecordText(read), text);
+}
+
+TEST(SweepRecord, ShardsMergeIntoTheWholeRecord) {
+    const SweepRecord whole = WholeRecord(7);
+    std::vector<SweepRecord> shards;
+    for (std::size_t k : {2u, 0u, 1u}) {  // any order
+        SweepRecord shard = whole;
+        shard.shard = {k, 3};
+        shard.lights.clear();
+        shard.study[0].clear();
+        shard.seconds = 0.5;
+        for (std::size_t i : ShardLights(7, shard.shard)) {
+            shard.lights.push_back(whole.lights[i]);
+            shard.study[0].push_back(whole.study[0][i]);
+        }
+        // Through the text, as lexel merge reads them.
+        shards.push_back(ParseSweepRecord(SweepRecordText(shard), "shard"));
+    }
+    const MergedSweep merged = MergeRecords(shards, {"s2", "s0", "s1"});
+    EXPECT_EQ(SweepRecordText(merged.record), SweepRecordText(whole));
+    EXPECT_EQ(merged.result.indices, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6}));
+}
+
+TEST(SweepRecord, MergeNamesOverlappingAndMissingLights) {
+    const SweepRecord whole = WholeRecord(4);
+    SweepRecord first = whole, second = whole;
+    first.lights = {whole.lights[0], whole.lights[1]};
+    first.study[0] = {whole.study[0][0], whole.study[0][1]};
+    second.lights = {whole.lights[1]};
+    second.study[0] = {whole.study[0][1]};
+    try {
+        MergeRecords({first, second}, {"a", "b"});
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "merge: light 1 is in both a and b (overlapping shards)");
+    }
+    try {
+        MergeRecords({first}, {"a"});
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_STREQ(
+            e.what(),
+            "merge: lights 2 and 3 of 4 are in none of the shards given (missing shards?)");
+    }
+    SweepRecord other = whole;
+    other.identity.caseHash = "fedcba9876543210";
+    try {
+        MergeRecords({whole, other}, {"a", "b"});
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(),
+                     "merge: b is not a shard of the sweep of a: they differ in case file (FNV-1a "
+                     "64 of its bytes) ('0123456789abcdef' vs 'fedcba9876543210')");
+    }
+}
+
+TEST(SweepRecord, ADamagedRecordNamesTheField) {
+    std::string text = SweepRecordText(WholeRecord(2));
+    const std::size_t at = text.find("\"receiver_pixels\":11166");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 23, "\"receiver_pixels\":-4");
+    try {
+        ParseSweepRecord(text, "r.json");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("r.json: /lights/1/receiver_pixels: ", 0), 0u)
+            << e.what();
+    }
+}
+
+TEST(SweepJournal, LinesReadBackIntoTheFinishedLights) {
+    const SweepRecord whole = WholeRecord(2);
+    const JournalHeader header =
+        ParseJournalHeader(JournalHeaderLine(whole.identity, {1, 4}), "j:1");
+    EXPECT_EQ(header.identity, whole.identity);
+    EXPECT_EQ(header.shard, (SweepShard{1, 4}));
+    SweepDone done;
+    std::string line = JournalLightLine(whole.lights[1]);
+    line.pop_back();  // the '\n'
+    ParseJournalEntry(line, "j:2", 2, 1, done);
+    std::string study = JournalStudyLine({4, 1, {41}});
+    study.pop_back();
+    ParseJournalEntry(study, "j:3", 2, 1, done);
+    ASSERT_EQ(done.lights.count(1), 1u);
+    EXPECT_EQ(done.lights[1].receiverPixels, 11166);
+    EXPECT_EQ(done.lights[1].cells[1].h, whole.lights[1].cells[1].h);
+    EXPECT_EQ(done.lights[1].cells[1].winner, "lispsm-tight");
+    EXPECT_TRUE(std::isnan(done.lights[1].cells[0].footprintMean));
+    EXPECT_EQ(done.study.at({4, 1}).misclassified, std::vector<std::int64_t>{41});
+}
+
+}  // namespace
+}  // namespace lexel::cases
