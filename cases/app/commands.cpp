@@ -10,6 +10,7 @@
 
 #include "lexel/cases/app/output_guard.h"
 #include "lexel/cases/app/progress.h"
+#include "lexel/cases/load/case_methods.h"
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/cases/load/published.h"
@@ -114,6 +115,19 @@ std::vector<std::string> SpatialMethods(std::vector<std::string> methods) {
     return MethodsOf(std::move(methods), spatial::SpatialMethodNames(), "3D");
 }
 
+// The --method values for `lexel run` or `lexel sweep` (forSweep) on `scene`: also the case's own
+// methods, by default those for this command's lights (CheckCaseMethodLights checks the rest).
+std::vector<std::string> SpatialMethodsOfCase(std::vector<std::string> methods,
+                                              const spatial::Scene& scene, bool forSweep) {
+    std::vector<std::string> known = spatial::SpatialMethodNames();
+    if (methods.empty()) {
+        for (std::string& m : CaseMethodNames(scene, forSweep)) known.push_back(std::move(m));
+        return known;
+    }
+    for (const spatial::CaseMethod& m : scene.methods) known.push_back(m.name);
+    return MethodsOf(std::move(methods), known, "3D");
+}
+
 std::vector<std::string> FlatlandMethods(std::vector<std::string> methods) {
     return MethodsOf(std::move(methods), flatland::FlatlandMethodNames(), "flatland");
 }
@@ -173,7 +187,8 @@ int RunSpatial(const RunFlags& flags) {
     const fs::path casePath = flags.cases.front();
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     SpatialRunOptions options;
-    options.methods = SpatialMethods(flags.methods);
+    options.methods = SpatialMethodsOfCase(flags.methods, scene, false);
+    WithCaseName(casePath, [&] { CheckCaseMethodLights(scene, options.methods, false); });
     options.mapTruth = flags.mapTruth;
     options.keepBuffers = !flags.outDir.empty();
     options.backend = BackendOf(flags.backend);
@@ -357,7 +372,7 @@ std::string StageSweepFiles(OutputSet& out, const fs::path& casePath, const spat
 int SweepCommand(const SweepFlags& flags) {
     const fs::path casePath = flags.casePath;
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
-    const std::vector<std::string> methods = SpatialMethods(flags.methods);
+    const std::vector<std::string> methods = SpatialMethodsOfCase(flags.methods, scene, true);
     const BackendKind backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(methods, backend);
     const ReportTable1 report =
@@ -370,6 +385,7 @@ int SweepCommand(const SweepFlags& flags) {
                                           : spatial::Light::Type::kDirectional;
     const SweepResult r = WithCaseName(casePath, [&] {
         const std::vector<spatial::Light> lights = SweepLightsOf(scene, flags.lights, type);
+        CheckCaseMethodLights(scene, methods, true, lights);
         Progress bar("sweep", lights.size(), "lights");
         return RunSweep(
             scene, methods, lights, [&] { bar.Step(); }, backend);

@@ -47,7 +47,8 @@ struct SweepResult {
 std::vector<spatial::Light> SweepLightsOf(const spatial::Scene& scene, int lights,
                                           std::optional<spatial::Light::Type> type = {});
 
-// Evaluates every light, in parallel over lights, deterministically for the case's seed; calls
+// Evaluates every light, in parallel over lights (light l with the case's own methods' matrix l:
+// Scene::methods, checked with CheckCaseMethodLights), deterministically for the case's seed; calls
 // `onLightDone` (from any thread) after each. Throws InputError naming the camera or the light
 // for input the evaluation cannot serve, BackendUnavailable when `backend` cannot be made. With
 // the GL backend the lights still run in parallel; their GPU passes take turns on the one context.
