@@ -83,7 +83,8 @@ std::string MethodsHelp(bool flatland, bool spatial) {
         help += "Flatland methods (default: all):\n" +
                 MethodLines(flatland::FlatlandMethodNames(), &flatland::FlatlandMethodDescription);
     if (spatial)
-        help += std::string(flatland ? "\n" : "") + "3D methods (default: all):\n" +
+        help += std::string(flatland ? "\n" : "") +
+                "3D methods (default: all, and a case's own \"methods\", cases/README.md):\n" +
                 MethodLines(spatial::SpatialMethodNames(), &spatial::SpatialMethodDescription);
     return help;
 }
