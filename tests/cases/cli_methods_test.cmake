@@ -117,6 +117,8 @@ foreach(l 1 2)
         message(FATAL_ERROR "sweep light ${l}: focused-tight ${tight} (${tight1} before), mine ${mine}")
     endif()
 endforeach()
+# By default the sweep includes it, in the fair comparison's table.
+expect_run(0 "\nfair,all,mine,[0-9.]+," "" sweep "${WORK}/sweep_mine.json" --format csv)
 # The sweep's method is not lexel run's, and --lights beyond its rows is refused.
 expect_run(2 "^$" "/methods/0: 'mine' has one matrix per light of the light sweep \\(for lexel sweep\\), not per light of lexel run\n$"
            run "${WORK}/sweep_mine.json" --method mine)
