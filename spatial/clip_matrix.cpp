@@ -56,6 +56,18 @@ glm::dmat4 ClipFromWorld(const LightSpace& lightSpace, const LightMatrix& matrix
     return glm::transpose(glm::dmat4(rowX, rowY, rowZ, rowW));
 }
 
+std::optional<LightMatrix> LightMatrixFromClip(const LightSpace& lightSpace,
+                                               const glm::dmat4& clipFromWorld, Resolution map,
+                                               const glm::dvec3& wsCenter, std::string* failure) {
+    const glm::dvec4 rowX = glm::row(clipFromWorld, 0), rowY = glm::row(clipFromWorld, 1),
+                     rowW = glm::row(clipFromWorld, 3);
+    // ClipFromWorld's rowX = (2 / W) row1 - rowW, solved for row1 (and row2 alike).
+    const glm::dvec4 row1 = (0.5 * map.width) * (rowX + rowW);
+    const glm::dvec4 row2 = (0.5 * map.height) * (rowY + rowW);
+    const glm::dmat4 texelFromWorld = glm::transpose(glm::dmat4(row1, row2, glm::dvec4(0.0), rowW));
+    return FromScreenRows(lightSpace, texelFromWorld, wsCenter, failure);
+}
+
 double ClipDepthQuantity(const LightSpace& lightSpace, const LightMatrix& matrix,
                          const glm::dvec3& wsPoint) {
     const double w = glm::dot(matrix.p4, lightSpace.ToLight(wsPoint));

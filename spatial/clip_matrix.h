@@ -4,7 +4,9 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <optional>
 #include <span>
+#include <string>
 
 #include "lexel/spatial/camera.h"
 #include "lexel/spatial/light_matrix.h"
@@ -60,5 +62,16 @@ DepthRange LightDepthRange(const LightSpace& lightSpace, const LightMatrix& matr
 // are clipped (or clamped, with GL_DEPTH_CLAMP).
 glm::dmat4 ClipFromWorld(const LightSpace& lightSpace, const LightMatrix& matrix, Resolution map,
                          DepthRange range, ClipDepth convention);
+
+// The inverse of ClipFromWorld up to depth: the LightMatrix whose texels are those of a clip
+// matrix's x, y and w rows (u¹ = W (x_ndc + 1) / 2, u² = H (y_ndc + 1) / 2), in either depth
+// convention; the depth row is ignored (the harness fits every method's depth range alike). Its
+// rows must send the light to infinity (FromScreenRows, whose scaling it shares: |p4| = 1, p4·X > 0
+// at `wsCenter`); nullopt otherwise, with the reason in *failure when given. For every matrix P
+// and range, ClipFromWorld then LightMatrixFromClip gives P scaled to |p4| = 1, to rounding.
+std::optional<LightMatrix> LightMatrixFromClip(const LightSpace& lightSpace,
+                                               const glm::dmat4& clipFromWorld, Resolution map,
+                                               const glm::dvec3& wsCenter,
+                                               std::string* failure = nullptr);
 
 }  // namespace lexel::spatial

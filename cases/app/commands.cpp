@@ -13,6 +13,7 @@
 
 #include "lexel/cases/app/output_guard.h"
 #include "lexel/cases/app/progress.h"
+#include "lexel/cases/load/case_methods.h"
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/cases/load/published.h"
@@ -89,7 +90,8 @@ std::string MethodsHelp(bool flatland, bool spatial) {
         help += "Flatland methods (default: all):\n" +
                 MethodLines(flatland::FlatlandMethodNames(), &flatland::FlatlandMethodDescription);
     if (spatial)
-        help += std::string(flatland ? "\n" : "") + "3D methods (default: all):\n" +
+        help += std::string(flatland ? "\n" : "") +
+                "3D methods (default: all, and a case's own \"methods\", cases/README.md):\n" +
                 MethodLines(spatial::SpatialMethodNames(), &spatial::SpatialMethodDescription);
     return help;
 }
@@ -119,6 +121,19 @@ std::vector<std::string> MethodsOf(std::vector<std::string> methods,
 
 std::vector<std::string> SpatialMethods(std::vector<std::string> methods) {
     return MethodsOf(std::move(methods), spatial::SpatialMethodNames(), "3D");
+}
+
+// The --method values for `lexel run` or `lexel sweep` (forSweep) on `scene`: also the case's own
+// methods, by default those for this command's lights (CheckCaseMethodLights checks the rest).
+std::vector<std::string> SpatialMethodsOfCase(std::vector<std::string> methods,
+                                              const spatial::Scene& scene, bool forSweep) {
+    std::vector<std::string> known = spatial::SpatialMethodNames();
+    if (methods.empty()) {
+        for (std::string& m : CaseMethodNames(scene, forSweep)) known.push_back(std::move(m));
+        return known;
+    }
+    for (const spatial::CaseMethod& m : scene.methods) known.push_back(m.name);
+    return MethodsOf(std::move(methods), known, "3D");
 }
 
 std::vector<std::string> FlatlandMethods(std::vector<std::string> methods) {
@@ -180,7 +195,8 @@ int RunSpatial(const RunFlags& flags) {
     const fs::path casePath = flags.cases.front();
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
     SpatialRunOptions options;
-    options.methods = SpatialMethods(flags.methods);
+    options.methods = SpatialMethodsOfCase(flags.methods, scene, false);
+    WithCaseName(casePath, [&] { CheckCaseMethodLights(scene, options.methods, false); });
     options.mapTruth = flags.mapTruth;
     options.keepBuffers = !flags.outDir.empty();
     options.backend = BackendOf(flags.backend);
@@ -481,12 +497,13 @@ int SweepCommand(const SweepFlags& flags) {
         throw InputError("--resume: continues a sweep into its --out directory; give --out");
     const fs::path casePath = flags.casePath;
     const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
-    const std::vector<std::string> methods = SpatialMethods(flags.methods);
+    const std::vector<std::string> methods = SpatialMethodsOfCase(flags.methods, scene, true);
     const BackendKind backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(methods, backend);
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     const std::vector<spatial::Light> lights = SweepLightsFor(casePath, scene, flags);
+    WithCaseName(casePath, [&] { CheckCaseMethodLights(scene, methods, true, lights); });
     const std::vector<std::size_t> indices = ShareOf(lights.size(), shard);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
     if (!flags.outDir.empty()) out.emplace(flags.outDir, SweepOutputPlan(casePath, scene.name));

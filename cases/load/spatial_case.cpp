@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "lexel/cases/load/case_methods.h"
 #include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/json_reader.h"
@@ -367,7 +368,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     const JsonField root(document, "");
     root.ExpectObject({"camera"},
                       {"name", "description", "lights", "shadow_map", "readback", "geometry",
-                       "generator", "light_sweep", "camera_path", "cascades"});
+                       "generator", "light_sweep", "camera_path", "cascades", "methods"});
     spatial::Scene scene;
     scene.name = CaseNameOf(root, fallbackName);
     if (root.Has("description")) root["description"].String();
@@ -404,6 +405,9 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     } else if (!scene.lightSweep) {
         throw InputError("/lights: required key is missing (give lights, light_sweep or both)");
     }
+
+    std::vector<CaseMethodEntry> methods;  // checked against the lights once the geometry is read
+    if (root.Has("methods")) methods = ReadCaseMethods(root["methods"], scene, baseDir);
 
     if (root.Has("shadow_map")) scene.shadowMap = ReadResolution(root["shadow_map"]);
     if (root.Has("readback")) scene.readback = ReadResolution(root["readback"]);
@@ -507,6 +511,8 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
             "/light_sweep/radius: must be larger than the geometry's bounding radius " +
             FormatNumber(wsBounds.Radius()) + " (the sweep is centred on the bounds), got " +
             FormatNumber(scene.lightSweep->radius));
+    CheckCaseMethodMatrices(methods, scene, wsBounds);
+    for (CaseMethodEntry& entry : methods) scene.methods.push_back(std::move(entry.method));
     return scene;
 }
 

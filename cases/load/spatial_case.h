@@ -1,6 +1,7 @@
 // Loading and validating 3D case files (schema: cases/README.md, "3D cases"): the scene of
 // Chong & Gortler's experiments (report §3) — camera, lights or a light sweep, resolutions, and
-// geometry from primitives, model files and the floor-objects generator.
+// geometry from primitives, model files and the floor-objects generator, and the case's own methods
+// (one clip matrix per light: case_methods.h).
 #pragma once
 
 #include <filesystem>

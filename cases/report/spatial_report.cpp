@@ -9,6 +9,7 @@
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/harness/images.h"
+#include "lexel/spatial/harness/warped_methods.h"
 
 namespace lexel::cases {
 
@@ -154,6 +155,25 @@ std::string SpatialRunText(const spatial::Scene&, const SpatialRun& run) {
     return text.str();
 }
 
+namespace {
+
+// A 4×4 as 4 rows of 4 numbers (row-major), each printed so that it reads back to the same double.
+nlohmann::json RowMajor(const glm::dmat4& m) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
+    return rows;
+}
+
+// What a method's clip_from_world is: its one map's ("single"), its first cascade's ("cascades":
+// each cascade has its own), the base of its warp ("warped") or its coarsest page's ("virtual").
+const char* MapKind(const spatial::MethodOutcome& m) {
+    if (m.pages) return "virtual";
+    if (!m.cascades.empty()) return "cascades";
+    return spatial::IsWarpedMethod(m.method) ? "warped" : "single";
+}
+
+}  // namespace
+
 nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run) {
     nlohmann::json doc;
     doc["case"] = scene.name;
@@ -181,14 +201,23 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                                      {"h", FiniteOrNull(m.h)},
                                      {"ms", m.ms}};
             if (!m.hAfterIteration.empty()) method["h_after_iteration"] = m.hAfterIteration;
+            const spatial::Resolution map =
+                m.pages ? spatial::Resolution{m.pages->pageTexels, m.pages->pageTexels}
+                        : scene.shadowMap;
+            method["map_kind"] = MapKind(m);
+            method["clip_from_world"] =
+                RowMajor(run.evaluator->ClipFromWorldOf(o.light, m.matrix, map));
             for (const spatial::CascadeOutcome& c : m.cascades)
-                method["cascades"].push_back({{"z_near", c.cascade.zNear},
-                                              {"z_far", FiniteOrNull(c.cascade.zFar)},
-                                              {"width", c.cascade.map.width},
-                                              {"height", c.cascade.map.height},
-                                              {"visible_points", c.cascade.visiblePoints},
-                                              {"pixels", c.pixels},
-                                              {"h", FiniteOrNull(c.h)}});
+                method["cascades"].push_back(
+                    {{"clip_from_world", RowMajor(run.evaluator->ClipFromWorldOf(
+                                             o.light, c.cascade.matrix, c.cascade.map))},
+                     {"z_near", c.cascade.zNear},
+                     {"z_far", FiniteOrNull(c.cascade.zFar)},
+                     {"width", c.cascade.map.width},
+                     {"height", c.cascade.map.height},
+                     {"visible_points", c.cascade.visiblePoints},
+                     {"pixels", c.pixels},
+                     {"h", FiniteOrNull(c.h)}});
             if (m.pages)
                 method["pages"] = {
                     {"page_texels", m.pages->pageTexels}, {"pool_pages", m.pages->poolPages},

@@ -1,12 +1,26 @@
 #include "lexel/cases/run/spatial_run.h"
 
+#include <algorithm>
+
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/methods.h"
 
 namespace lexel::cases {
 
+std::vector<std::string> CameraPathMethods(const spatial::Scene& scene,
+                                           const std::vector<std::string>& methods) {
+    std::vector<std::string> kept;
+    for (const std::string& m : methods)
+        if (std::none_of(scene.methods.begin(), scene.methods.end(),
+                         [&](const spatial::CaseMethod& c) { return c.name == m; }))
+            kept.push_back(m);
+    return kept;
+}
+
 std::size_t SpatialRunSteps(const spatial::Scene& scene, const SpatialRunOptions& options) {
-    return scene.lights.size() * options.methods.size() + CameraPathSteps(scene, options.methods);
+    return scene.lights.size() * options.methods.size() +
+           CameraPathSteps(scene, CameraPathMethods(scene, options.methods));
 }
 
 SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& options) {
@@ -25,6 +39,7 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
     for (std::size_t l = 0; l < scene.lights.size(); ++l)
         CheckLightFacesPixels(*run.evaluator, scene.lights[l], LightField(l));
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+        evalOptions.given = spatial::GivenMatricesOf(scene.methods, options.methods, false, l);
         try {
             run.outcomes.push_back(run.evaluator->Evaluate(scene.lights[l], evalOptions));
         } catch (const DomainError& e) {
@@ -32,7 +47,8 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
         }
     }
     if (!scene.cameraPath.empty()) {
-        run.cameraPath = RunCameraPathStudy(scene, *run.backend, options.methods, options.onStep);
+        run.cameraPath = RunCameraPathStudy(
+            scene, *run.backend, CameraPathMethods(scene, options.methods), options.onStep);
     }
     return run;
 }

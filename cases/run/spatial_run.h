@@ -25,6 +25,11 @@ struct SpatialRunOptions {
     std::function<void()> onStep;
 };
 
+// The methods of the camera-path study: `methods` without the case's own (their matrices are for
+// the case's camera, not for the path's poses).
+std::vector<std::string> CameraPathMethods(const spatial::Scene& scene,
+                                           const std::vector<std::string>& methods);
+
 // The steps of RunSpatialCase: one per fixed light and method, and the camera-path study's
 // (CameraPathSteps) when the case has a camera_path.
 std::size_t SpatialRunSteps(const spatial::Scene& scene, const SpatialRunOptions& options);

@@ -14,6 +14,7 @@
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/generator.h"
 #include "lexel/spatial/harness/memory_estimate.h"
+#include "lexel/spatial/harness/methods.h"
 
 namespace lexel::cases {
 
@@ -82,8 +83,12 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
         const std::size_t last = std::min(lights.size(), first + batch);
         tbb::parallel_for(first, last, [&](std::size_t l) {
             spatial::LightOutcome outcome;
+            // The case's matrices for light l: its matrix of the whole sweep's light r.indices[l].
+            spatial::EvaluationOptions lightOptions = options;
+            lightOptions.given =
+                spatial::GivenMatricesOf(scene.methods, methods, true, r.indices[l]);
             try {
-                outcome = evaluator->Evaluate(lights[l], options);
+                outcome = evaluator->Evaluate(lights[l], lightOptions);
             } catch (const DomainError& e) {
                 const std::string light =
                     "light " + std::to_string(r.indices[l]) + " " + LightLabel(lights[l]);

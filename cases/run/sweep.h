@@ -57,7 +57,9 @@ using SweepLightDone = std::function<void(std::size_t light, const std::vector<S
 
 // Evaluates every light, in parallel over lights, deterministically for the case's seed: a
 // light's numbers depend on that light alone (not on the others given, their number or order;
-// times aside). Calls `onLightDone` after each. Throws InputError naming the camera or the light
+// times aside); light l of the whole sweep uses the case's own methods' matrix l
+// (Scene::methods, checked with CheckCaseMethodLights). Calls `onLightDone` after each. Throws
+// InputError naming the camera or the light
 // for input the evaluation cannot serve, BackendUnavailable when `backend` cannot be made. With
 // the GL backend the lights still run in parallel; their GPU passes take turns on the one context.
 // `indices`: each light's index in the whole sweep (r.indices, and the light an error names);

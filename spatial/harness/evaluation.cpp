@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
 
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
+#include "lexel/spatial/clip_matrix.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/page_shading.h"
 #include "lexel/spatial/harness/ray_cast_map.h"
@@ -205,6 +207,25 @@ std::vector<Shade> Evaluator::ShadeFrame(const Light& light, const LightMatrix& 
                                 backend_.RenderShadowMap(lightSpace, matrix, scene_.shadowMap));
 }
 
+glm::dmat4 Evaluator::ClipFromWorldOf(const Light& light, const LightMatrix& matrix,
+                                      Resolution map) const {
+    const LightSpace lightSpace(light, bounds_);
+    DepthRange range;
+    try {
+        range = LightDepthRange(lightSpace, matrix, map, bounds_, readback_.wsRelevant);
+    } catch (const std::invalid_argument&) {
+        double nearest = std::numeric_limits<double>::infinity(), farthest = 0.0;
+        for (const glm::dvec3& wsCorner : bounds_.Corners()) {
+            const double d = lightSpace.IsPoint() ? lightSpace.DistanceToLight(wsCorner)
+                                                  : lightSpace.Depth(wsCorner);
+            nearest = std::min(nearest, d);
+            farthest = std::max(farthest, d);
+        }
+        range = {lightSpace.IsPoint() ? 0.5 * nearest : nearest, farthest + (farthest - nearest)};
+    }
+    return ClipFromWorld(lightSpace, matrix, map, range, ClipDepth::kMinusOneToOne);
+}
+
 std::int64_t Evaluator::CountedPixels(const Light& light) const {
     const LightSpace lightSpace(light, bounds_);
     std::int64_t counted = 0;
@@ -229,6 +250,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     const LightSpace lightSpace(light, bounds_);
 
     MethodContext context;
+    context.given = options.given;
     context.partitions = scene_.partitions;
     context.baseline = MakeBaselineContext(scene_, lightSpace, bounds_, readback_.wsRelevant,
                                            readback_.wsRelevantHull);

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "lexel/spatial/cascades.h"
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
@@ -57,10 +58,12 @@ inline constexpr double kRayOffset = 1e-5;
 inline constexpr double kGrazingCos = 0.2;
 
 struct EvaluationOptions {
-    std::vector<std::string> methods;  // names from SpatialMethodNames()
-    bool mapTruth = false;             // also render the report's focused truth map
-    int truthMapSize = 4000;           // its resolution (square)
-    bool keepBuffers = false;          // keep shades and maps (for images)
+    std::vector<std::string> methods;  // names from SpatialMethodNames() or of `given`
+    // The case's own methods' clip matrices for the light evaluated (methods.h, GivenMatrix).
+    std::vector<GivenMatrix> given;
+    bool mapTruth = false;     // also render the report's focused truth map
+    int truthMapSize = 4000;   // its resolution (square)
+    bool keepBuffers = false;  // keep shades and maps (for images)
     // Called after each method is measured, with its name (a progress bar); may be empty.
     std::function<void(std::string_view method)> onMethodDone;
 };
@@ -146,6 +149,12 @@ class Evaluator {
 
     // Misclassified counted pixels of any matrix for `light` (renders its map, traces the truth).
     std::int64_t Misclassified(const Light& light, const LightMatrix& matrix) const;
+    // The 4×4 a rasterizer takes for `matrix` on a map of `map` texels (ClipFromWorld, OpenGL's
+    // depth in [-1, 1]), its depth range fitted to this scene (LightDepthRange over the scene's
+    // bounds and the readback's visible points; where a visible point is behind the map's plane,
+    // the range of the light's distances to the bounds' corners instead). What `lexel run` prints
+    // as a method's clip_from_world; LightMatrixFromClip takes it back to `matrix`.
+    glm::dmat4 ClipFromWorldOf(const Light& light, const LightMatrix& matrix, Resolution map) const;
     // The frame's shades through one matrix, at the scene's shadow-map resolution.
     std::vector<Shade> ShadeFrame(const Light& light, const LightMatrix& matrix) const;
 

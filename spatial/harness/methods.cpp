@@ -1,8 +1,11 @@
 #include "lexel/spatial/harness/methods.h"
 
 #include <algorithm>
+#include <deque>
+#include <mutex>
 #include <stdexcept>
 
+#include "lexel/spatial/clip_matrix.h"
 #include "lexel/spatial/harness/warped_methods.h"
 #include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/tsm.h"
@@ -50,7 +53,29 @@ std::vector<std::string> VirtualMethodNames() { return {"vsm", "vsm-dynamic"}; }
 
 bool IsVirtualMethod(std::string_view name) { return name == "vsm" || name == "vsm-dynamic"; }
 
-std::vector<std::string> SpatialMethodNames() {
+namespace {
+
+// The registered methods (RegisterMethod): a deque, so that a pointer to one stays valid while
+// more are added.
+struct Registry {
+    std::mutex mutex;
+    std::deque<MethodRegistration> methods;
+};
+
+Registry& TheRegistry() {
+    static Registry registry;
+    return registry;
+}
+
+const MethodRegistration* FindRegistered(std::string_view name) {
+    Registry& registry = TheRegistry();
+    const std::lock_guard lock(registry.mutex);
+    for (const MethodRegistration& m : registry.methods)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+std::vector<std::string> BuiltInMethodNames() {
     std::vector<std::string> names = FairMethodNames();
     for (const std::string& m : ReportMethodNames())
         if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
@@ -60,6 +85,61 @@ std::vector<std::string> SpatialMethodNames() {
     for (const std::string& m : TsmMethodNames()) names.push_back(m);
     for (const std::string& m : VirtualMethodNames()) names.push_back(m);
     return names;
+}
+
+}  // namespace
+
+std::vector<std::string> RegisteredMethodNames() {
+    Registry& registry = TheRegistry();
+    const std::lock_guard lock(registry.mutex);
+    std::vector<std::string> names;
+    for (const MethodRegistration& m : registry.methods) names.push_back(m.name);
+    return names;
+}
+
+std::vector<std::string> SpatialMethodNames() {
+    std::vector<std::string> names = BuiltInMethodNames();
+    for (std::string& m : RegisteredMethodNames()) names.push_back(std::move(m));
+    return names;
+}
+
+std::vector<GivenMatrix> GivenMatricesOf(std::span<const CaseMethod> caseMethods,
+                                         std::span<const std::string> methods, bool forSweep,
+                                         std::size_t light) {
+    std::vector<GivenMatrix> given;
+    for (const CaseMethod& m : caseMethods)
+        if (m.forSweep == forSweep && light < m.clipFromWorld.size() &&
+            std::find(methods.begin(), methods.end(), m.name) != methods.end())
+            given.push_back({m.name, m.clipFromWorld[light]});
+    return given;
+}
+
+bool IsValidMethodName(std::string_view name) {
+    if (name.empty() || name.size() > 64 || name.front() == '-') return false;
+    return std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_' || c == '.' || c == '+' || c == '-';
+    });
+}
+
+bool RegisterMethod(MethodRegistration method) {
+    if (!IsValidMethodName(method.name))
+        throw std::invalid_argument("RegisterMethod: '" + method.name +
+                                    "' is not a method name (1 to 64 of A-Z a-z 0-9 _ . + -)");
+    if (method.description.empty() || !method.compute)
+        throw std::invalid_argument("RegisterMethod: '" + method.name +
+                                    "' needs a description and a compute function");
+    const std::vector<std::string> builtIn = BuiltInMethodNames();
+    Registry& registry = TheRegistry();
+    const std::lock_guard lock(registry.mutex);
+    const bool taken =
+        std::find(builtIn.begin(), builtIn.end(), method.name) != builtIn.end() ||
+        std::any_of(registry.methods.begin(), registry.methods.end(),
+                    [&](const MethodRegistration& m) { return m.name == method.name; });
+    if (taken)
+        throw std::invalid_argument("RegisterMethod: '" + method.name + "' is already a method");
+    registry.methods.push_back(std::move(method));
+    return true;
 }
 
 namespace {
@@ -104,6 +184,7 @@ constexpr MethodDescription kDescriptions[] = {
 std::string_view SpatialMethodDescription(std::string_view name) {
     for (const MethodDescription& d : kDescriptions)
         if (d.name == name) return d.description;
+    if (const MethodRegistration* m = FindRegistered(name)) return m->description;
     return {};
 }
 
@@ -206,9 +287,23 @@ MethodMatrix Virtual(std::string_view name, const MethodContext& context) {
     return m;
 }
 
+MethodMatrix Given(const GivenMatrix& given, const MethodContext& context) {
+    const BaselineContext& b = context.baseline;
+    std::string failure;
+    const std::optional<LightMatrix> matrix = LightMatrixFromClip(
+        *b.lightSpace, given.clipFromWorld, b.map, b.wsBounds.Center(), &failure);
+    if (!matrix)
+        throw std::invalid_argument("method '" + given.name + "': its clip_from_world " + failure);
+    MethodMatrix m;
+    m.matrix = *matrix;
+    return m;
+}
+
 }  // namespace
 
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context) {
+    for (const GivenMatrix& g : context.given)
+        if (g.name == name) return Given(g, context);
     for (const NamedBaseline& b : kBaselines)
         if (b.name == name)
             return {b.compute(context.baseline, nullptr),
@@ -225,6 +320,7 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
         if (p.name == name) return Partitioned(p, context);
     if (IsVirtualMethod(name)) return Virtual(name, context);
     if (IsWarpedMethod(name)) return WarpedLightMatrix(name, context);
+    if (const MethodRegistration* m = FindRegistered(name)) return m->compute(context);
     throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 

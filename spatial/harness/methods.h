@@ -15,8 +15,15 @@
 // Virtual shadow maps (virtual_shadow_map.h): `vsm` and `vsm-dynamic`, pages at equal texels.
 // The warped methods (warped_methods.h) return one map with a nonlinear parameterization: `rtw`,
 // `rtw-lagrange`, `logpsm`.
+//
+// Two more kinds extend the list without editing this file: methods registered in C++
+// (RegisterMethod, CONTRIBUTING.md "Add a method in one file"), after the built-in ones in
+// SpatialMethodNames, and a case's own methods, one clip matrix per light (GivenMatrix: the case
+// loader reads them, cases/README.md "Methods of a case"), which only their case knows.
 #pragma once
 
+#include <functional>
+#include <glm/glm.hpp>
 #include <optional>
 #include <span>
 #include <string>
@@ -39,6 +46,13 @@ BaselineContext MakeBaselineContext(const Scene& scene, const LightSpace& lightS
                                     const Bounds& wsBounds, std::span<const glm::dvec3> wsRelevant,
                                     std::span<const glm::dvec3> wsRelevantHull = {});
 
+// A case's own method for the light being evaluated: its name and the light's clip matrix
+// (OpenGL clip space, the form ClipFromWorld returns; its depth row is ignored).
+struct GivenMatrix {
+    std::string name;
+    glm::dmat4 clipFromWorld{1.0};
+};
+
 struct MethodContext {
     BaselineContext baseline;               // its samples are set: plane-optimal uses them
     const LightSamples* samples = nullptr;  // boundary samples and relevant points (light space)
@@ -46,10 +60,20 @@ struct MethodContext {
     const Readback* readback =
         nullptr;       // the readback (vsm*'s page requests, rtw's importance map)
     Resolution frame;  // the final frame's size (rtw's sampling rates)
+    // The case's own methods for this light (looked up by name before the registry); may be empty.
+    std::span<const GivenMatrix> given;
 };
 
+// The matrices for light `light` (an index into the fixed lights, or into the sweep's lights when
+// forSweep) of the scene's own methods (Scene::methods) that are among `methods` and for those
+// lights; none when forSweep differs from theirs.
+std::vector<GivenMatrix> GivenMatricesOf(std::span<const CaseMethod> caseMethods,
+                                         std::span<const std::string> methods, bool forSweep,
+                                         std::size_t light);
+
 // Every method: the fair comparison's first (optimal its reference), then the report's, then
-// optimal-shear, then the warped ones, then the partitioned ones.
+// optimal-shear, then the warped ones, then the partitioned ones, then tsm and the virtual ones,
+// then the registered ones (RegisterMethod) in the order they were registered.
 std::vector<std::string> SpatialMethodNames();
 // The report's Table 1 as published (reference: optimal-report).
 std::vector<std::string> ReportMethodNames();
@@ -90,7 +114,29 @@ struct MethodMatrix {
     Resolution resolution;
 };
 // std::invalid_argument for an unknown name, an optimal* or partitioned method without samples,
-// or a vsm* method without the readback.
+// a vsm* method without the readback, or a given matrix (context.given) that does not project
+// from the light (LightMatrixFromClip, clip_matrix.h).
 MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& context);
+
+// Whether `name` can name a method: 1 to 64 characters of [A-Za-z0-9_.+-], not starting with '-'
+// (it appears in CSV columns, image file names and --method values).
+bool IsValidMethodName(std::string_view name);
+
+// A method added from outside the built-in list (CONTRIBUTING.md, "Add a method in one file"):
+// `compute` returns its light matrix (MethodMatrix::matrix) or its cascades (::cascades, with
+// `matrix` the first one's) from the context of one light, as the built-in methods do.
+struct MethodRegistration {
+    std::string name;         // IsValidMethodName, not yet known to IsSpatialMethod
+    std::string description;  // one line for `lexel --help`
+    std::function<MethodMatrix(const MethodContext&)> compute;
+};
+// Adds the method to SpatialMethodNames (after every earlier one), IsSpatialMethod,
+// SpatialMethodDescription and ComputeLightMatrix; the built-in methods and their order are
+// unchanged. Thread-safe; a method cannot be removed. Returns true (for `static const bool r =
+// RegisterMethod(...)` at namespace scope). Throws std::invalid_argument for an invalid or taken
+// name, an empty description or no compute function.
+bool RegisterMethod(MethodRegistration method);
+// The registered methods' names, in registration order.
+std::vector<std::string> RegisteredMethodNames();
 
 }  // namespace lexel::spatial

@@ -58,6 +58,15 @@ struct LightSweep {
     Light::Type type = Light::Type::kPoint;
 };
 
+// A method the case supplies (its `methods`, cases/README.md): one clip matrix (OpenGL clip space,
+// as ClipFromWorld returns) per light, for the case's fixed lights (`lexel run`) or for the lights
+// of its light sweep (`lexel sweep`, in sweep order).
+struct CaseMethod {
+    std::string name;
+    bool forSweep = false;
+    std::vector<glm::dmat4> clipFromWorld;  // [light]
+};
+
 struct Scene {
     std::string name;
     Camera camera;
@@ -69,8 +78,9 @@ struct Scene {
     // primitive or by the floor_objects generator; plane-optimal needs it.
     std::optional<glm::dvec4> floorPlane;
     std::optional<LightSweep> lightSweep;
-    std::vector<Camera> cameraPath;  // optional sequence of poses (temporal hysteresis)
-    PartitionOptions partitions;     // the partitioned methods' k, λ and texel allocation
+    std::vector<Camera> cameraPath;   // optional sequence of poses (temporal hysteresis)
+    PartitionOptions partitions;      // the partitioned methods' k, λ and texel allocation
+    std::vector<CaseMethod> methods;  // the case's own methods
 };
 
 }  // namespace lexel::spatial

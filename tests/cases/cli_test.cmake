@@ -80,9 +80,9 @@ file(WRITE "${WORK}/badhtml/index.html" "${head}<img src=\"there.png\">${tail}")
 check_html_links("${WORK}/badhtml/index.html" ALL_IMAGES)
 
 # --help lists every method with one line (issue 24).
-expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n.*\n  vsm-dynamic +[^\n]+\n+$"
+expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all, and a case's own \"methods\", cases/README\\.md\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n.*\n  vsm-dynamic +[^\n]+\n+$"
            "^$" run --help)
-expect_run(0 "\n3D methods \\(default: all\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  vsm +virtual shadow map[^\n]*\n  vsm-dynamic +[^\n]+\n+$"
+expect_run(0 "\n3D methods \\(default: all, and a case's own \"methods\", cases/README\\.md\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  vsm +virtual shadow map[^\n]*\n  vsm-dynamic +[^\n]+\n+$"
            "^$" sweep --help)
 
 # Bad input: one line naming the field and the reason, exit 2, no output files.

@@ -170,7 +170,7 @@ TEST(SpatialCase, BadFieldsAreNamed) {
     EXPECT_EQ(ErrorForText("[]"), "/: must be an object, got an array");
     EXPECT_EQ(add("/colour", "1"),
               "/colour: unknown key (allowed here: camera, name, description, lights, shadow_map, "
-              "readback, geometry, generator, light_sweep, camera_path, cascades)");
+              "readback, geometry, generator, light_sweep, camera_path, cascades, methods)");
     EXPECT_EQ(
         add("/camera/zoom", "2"),
         "/camera/zoom: unknown key (allowed here: position, target, fov_y_deg, width, height, "

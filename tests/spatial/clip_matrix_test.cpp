@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -281,6 +283,68 @@ TEST(LightDepthRange, RefusesNoReceivers) {
     const Bounds wsBounds = SceneBounds();
     const LightSpace ls(Light{Light::Type::kPoint, {30.0, 40.0, 20.0}, {}}, wsBounds);
     EXPECT_THROW(LightDepthRange(ls, LightMatrix{}, {64, 64}, wsBounds, {}), std::invalid_argument);
+}
+
+// A matrix's |p4| = 1 form with p4 · X > 0 at the bounds' centre (what FromScreenRows returns).
+LightMatrix Normalized(const LightMatrix& m, const LightSpace& ls, const Bounds& wsBounds) {
+    double norm = glm::length(m.p4);
+    if (glm::dot(m.p4, ls.ToLight(wsBounds.Center())) < 0.0) norm = -norm;
+    return {m.p1 / norm, m.p2 / norm, m.p4 / norm};
+}
+
+TEST(LightMatrixFromClip, InvertsClipFromWorldInBothConventions) {
+    const Bounds wsBounds = SceneBounds();
+    const Light point{Light::Type::kPoint, {30.0, 40.0, 20.0}, {}};
+    const Light sun{Light::Type::kDirectional, {}, glm::normalize(glm::dvec3(-0.3, -1.0, 0.2))};
+    const Resolution map{512, 256};
+    for (const Light& light : {point, sun})
+        for (double tilt : {0.0, 0.2})
+            for (ClipDepth convention : {ClipDepth::kMinusOneToOne, ClipDepth::kZeroToOne}) {
+                const LightSpace ls(light, wsBounds);
+                // Scaled by 3 (not |p4| = 1) and with a depth range of any kind: both drop out.
+                LightMatrix m = SomeMatrix(ls, wsBounds, tilt);
+                m = {3.0 * m.p1, 3.0 * m.p2, 3.0 * m.p4};
+                const glm::dmat4 clip = ClipFromWorld(ls, m, map, {2.0, 90.0}, convention);
+                std::string failure;
+                const std::optional<LightMatrix> back =
+                    LightMatrixFromClip(ls, clip, map, wsBounds.Center(), &failure);
+                ASSERT_TRUE(back) << failure;
+                const LightMatrix expected = Normalized(m, ls, wsBounds);
+                for (int i = 0; i < 3; ++i) {
+                    EXPECT_NEAR(back->p1[i], expected.p1[i], 1e-12 * glm::length(expected.p1));
+                    EXPECT_NEAR(back->p2[i], expected.p2[i], 1e-12 * glm::length(expected.p2));
+                    EXPECT_NEAR(back->p4[i], expected.p4[i], 1e-15);
+                }
+                // And back again: the clip matrix's x, y, w rows to rounding.
+                const glm::dmat4 again = ClipFromWorld(ls, *back, map, {2.0, 90.0}, convention);
+                const double scale = clip[3][3] / again[3][3];  // |p4| 3 became 1
+                for (int c = 0; c < 4; ++c)
+                    for (int r : {0, 1, 3})
+                        EXPECT_NEAR(scale * again[c][r], clip[c][r], 1e-12 * glm::length(clip[c]))
+                            << "row " << r << " column " << c;
+            }
+}
+
+TEST(LightMatrixFromClip, RefusesAMatrixThatDoesNotProjectFromTheLight) {
+    const Bounds wsBounds = SceneBounds();
+    const Light point{Light::Type::kPoint, {30.0, 40.0, 20.0}, {}};
+    const Light sun{Light::Type::kDirectional, {}, glm::normalize(glm::dvec3(-0.3, -1.0, 0.2))};
+    for (const Light& light : {point, sun}) {
+        const LightSpace ls(light, wsBounds);
+        std::string failure;
+        // The identity: clip x, y, w are world x, y and 1, none of which vanish at the light.
+        EXPECT_FALSE(
+            LightMatrixFromClip(ls, glm::dmat4(1.0), {64, 64}, wsBounds.Center(), &failure));
+        EXPECT_NE(failure.find("does not send the"), std::string::npos) << failure;
+        // A matrix for another light of the same kind is refused too.
+        const Light other = light.type == Light::Type::kPoint
+                                ? Light{Light::Type::kPoint, {-30.0, 40.0, 20.0}, {}}
+                                : Light{Light::Type::kDirectional, {}, {0.0, -1.0, 0.0}};
+        const LightSpace otherSpace(other, wsBounds);
+        const glm::dmat4 clip = ClipFromWorld(otherSpace, SomeMatrix(otherSpace, wsBounds, 0.1),
+                                              {64, 64}, {1.0, 90.0}, ClipDepth::kMinusOneToOne);
+        EXPECT_FALSE(LightMatrixFromClip(ls, clip, {64, 64}, wsBounds.Center()));
+    }
 }
 
 }  // namespace
