@@ -117,6 +117,25 @@ foreach(l 1 2)
         message(FATAL_ERROR "sweep light ${l}: focused-tight ${tight} (${tight1} before), mine ${mine}")
     endif()
 endforeach()
+# A shard takes each light's matrix by its index in the whole sweep: shard 1/2 holds light 1 only,
+# whose `mine` is the CSV's second row and matches focused-tight there as in the whole sweep.
+expect_run(0 "" "" sweep "${WORK}/sweep_mine.json" --method focused-tight --method mine
+           --shard 1/2 --out "${WORK}/sweep3")
+file(STRINGS "${WORK}/sweep3/lights.csv" rows3)
+list(LENGTH rows3 rowCount3)
+list(GET rows3 1 row3)
+list(GET rows2 2 row2)
+string(REPLACE "," ";" cells3 "${row3}")
+string(REPLACE "," ";" cells2 "${row2}")
+list(GET cells3 0 light3)
+list(GET cells3 6 tight3)
+list(GET cells3 9 mine3)
+list(GET cells2 6 tight2)
+if(NOT rowCount3 EQUAL 2 OR NOT light3 STREQUAL "1" OR NOT mine3 STREQUAL tight3
+   OR NOT tight3 STREQUAL tight2)
+    message(FATAL_ERROR "shard 1/2: ${rowCount3} rows, light ${light3}: focused-tight ${tight3} "
+                        "(${tight2} unsharded), mine ${mine3}")
+endif()
 # By default the sweep includes it, in the fair comparison's table.
 expect_run(0 "\nfair,all,mine,[0-9.]+," "" sweep "${WORK}/sweep_mine.json" --format csv)
 # The sweep's method is not lexel run's, and --lights beyond its rows is refused.
