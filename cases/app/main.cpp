@@ -25,8 +25,12 @@
 // "lexel: error: ...".
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <new>
+#include <string>
+#include <vector>
 
 #include "lexel/cases/app/commands.h"
 #include "lexel/cases/report/output.h"
@@ -57,213 +61,267 @@ CLI::Validator NonEmpty(const std::string& what) {
         "", "NonEmpty");
 }
 
-int RunLexel(int argc, char** argv) {
-    CLI::App app{"lexel: choose the light projection that minimizes shadow-map aliasing"};
-    app.set_version_flag("--version", std::string("lexel ") + LEXEL_VERSION);
-    app.require_subcommand(1);
+// One registration function per subcommand: it adds the subcommand and its flags to `app`, bound
+// to a flags struct it owns, and returns the command to run when the subcommand is chosen.
+using Command = std::function<int()>;
+namespace cases = lexel::cases;
 
+CLI::Option* AddBackend(CLI::App* sub, std::string& backend, const std::string& what) {
+    return sub->add_option("--backend", backend, what)->check(CLI::IsMember({"cpu", "gl"}));
+}
+
+Command RegisterRun(CLI::App& app) {
     auto* run =
         app.add_subcommand("run", "Run methods on case files and report their footprint metrics");
-    std::vector<std::string> casePaths, methods;
-    std::string metric = "l1", format = "table", runOut;
-    run->add_option("cases", casePaths, "Case files (JSON)")->required()->check(CLI::ExistingFile);
-    run->add_option("--method", methods, "Methods to run (default: all; listed below)");
-    run->footer(lexel::cases::MethodsHelp(true, true));
-    run->add_option("--metric", metric, "Metric the sweep minimizes")
-        ->check(CLI::IsMember({"l1", "l2", "linf"}));
-    run->add_option("--format", format, "Output format")
-        ->check(CLI::IsMember({"table", "json", "csv"}));
-    run->add_option("--out", runOut,
-                    "Also write <case>.json/.csv/.md (and for 3D cases the images) here")
-        ->check(NonEmpty("a directory"));
-    int runCascades = 0;
-    run->add_option("--cascades", runCascades,
-                    "3D: partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
-        ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
-    std::string runBackend = "cpu";
-    run->add_option("--backend", runBackend, "3D cases: the renderer (gl: OpenGL 4.5 via EGL)")
-        ->check(CLI::IsMember({"cpu", "gl"}));
-    bool noMapTruth = false;
-    run->add_flag("--no-map-truth", noMapTruth,
-                  "3D cases: skip the report's focused 4000² truth map (rays are the truth)");
-
-    auto* sweep = app.add_subcommand(
-        "sweep", "3D: evaluate every method over the case's light sweep (report Table 1)");
-    std::string sweepCase, sweepFormat = "table", sweepOut, sweepLightType;
-    std::vector<std::string> sweepMethods;
-    int sweepLights = 0;
-    sweep->add_option("case", sweepCase, "3D case file (JSON) with a light_sweep")
+    auto flags = std::make_shared<cases::RunFlags>();
+    auto noMapTruth = std::make_shared<bool>(false);
+    run->add_option("cases", flags->cases, "Case files (JSON)")
         ->required()
         ->check(CLI::ExistingFile);
-    sweep->add_option("--lights", sweepLights, "Number of hemisphere lights (default: the case's)")
+    run->add_option("--method", flags->methods, "Methods to run (default: all; listed below)");
+    run->footer(cases::MethodsHelp(true, true));
+    run->add_option("--metric", flags->metric, "Metric the sweep minimizes")
+        ->check(CLI::IsMember({"l1", "l2", "linf"}));
+    run->add_option("--format", flags->format, "Output format")
+        ->check(CLI::IsMember({"table", "json", "csv"}));
+    run->add_option("--out", flags->outDir,
+                    "Also write <case>.json/.csv/.md (and for 3D cases the images) here")
+        ->check(NonEmpty("a directory"));
+    run->add_option("--cascades", flags->cascades,
+                    "3D: partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
+        ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
+    AddBackend(run, flags->backend, "3D cases: the renderer (gl: OpenGL 4.5 via EGL)");
+    run->add_flag("--no-map-truth", *noMapTruth,
+                  "3D cases: skip the report's focused 4000² truth map (rays are the truth)");
+    return [run, flags, noMapTruth] {
+        flags->metricGiven = run->count("--metric") > 0;
+        flags->mapTruth = !*noMapTruth;
+        return cases::RunCommand(*flags);
+    };
+}
+
+Command RegisterSweep(CLI::App& app) {
+    auto* sweep = app.add_subcommand(
+        "sweep", "3D: evaluate every method over the case's light sweep (report Table 1)");
+    auto flags = std::make_shared<cases::SweepFlags>();
+    sweep->add_option("case", flags->casePath, "3D case file (JSON) with a light_sweep")
+        ->required()
+        ->check(CLI::ExistingFile);
+    sweep
+        ->add_option("--lights", flags->lights, "Number of hemisphere lights (default: the case's)")
         ->check(CLI::Range(1, 100000));
     sweep
-        ->add_option("--light-type", sweepLightType,
+        ->add_option("--light-type", flags->lightType,
                      "Sweep point or directional lights (default: the case's light_sweep type)")
         ->check(CLI::IsMember({"point", "directional"}));
-    sweep->add_option("--methods,--method", sweepMethods,
+    sweep->add_option("--methods,--method", flags->methods,
                       "Methods to run (default: all; listed below)");
-    sweep->footer(lexel::cases::MethodsHelp(false, true));
-    sweep->add_option("--format", sweepFormat, "Output format")
+    sweep->footer(cases::MethodsHelp(false, true));
+    sweep->add_option("--format", flags->format, "Output format")
         ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
     sweep
-        ->add_option("--out", sweepOut,
+        ->add_option("--out", flags->outDir,
                      "Also write table1.md/.csv, sweep.json, lights.csv here (and with partitioned "
                      "methods the k = 1, 2, 4, 8 study and the first light's cascades)")
         ->check(NonEmpty("a directory"));
-    int sweepCascades = 0;
     sweep
-        ->add_option("--cascades", sweepCascades,
+        ->add_option("--cascades", flags->cascades,
                      "Partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
         ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
-    std::string sweepBackend = "cpu";
-    sweep->add_option("--backend", sweepBackend, "The renderer (gl: OpenGL 4.5 via EGL)")
-        ->check(CLI::IsMember({"cpu", "gl"}));
-    std::string sweepShard = "0/1";
-    sweep->add_option("--shard", sweepShard,
+    AddBackend(sweep, flags->backend, "The renderer (gl: OpenGL 4.5 via EGL)");
+    sweep->add_option("--shard", flags->shard,
                       "K/N: evaluate only the lights i with i mod N = K (K = 0 ... N-1), for a "
                       "job array; join the shards' --out directories with lexel merge");
-    bool sweepResume = false;
-    sweep->add_flag("--resume", sweepResume,
+    sweep->add_flag("--resume", flags->resume,
                     "Continue a killed sweep into --out DIR from the lights it finished (its "
                     "journal beside DIR: .DIR.lexel-sweep-journal)");
+    return [flags] { return cases::SweepCommand(*flags); };
+}
 
+Command RegisterMerge(CLI::App& app) {
     auto* merge = app.add_subcommand(
         "merge", "3D: join the --out directories of sweep shards into one whole sweep's files");
-    lexel::cases::MergeFlags mergeFlags;
-    merge->add_option("dirs", mergeFlags.dirs, "The shards' --out directories (any order)")
+    auto flags = std::make_shared<cases::MergeFlags>();
+    merge->add_option("dirs", flags->dirs, "The shards' --out directories (any order)")
         ->required()
         ->check(CLI::ExistingDirectory);
-    merge->add_option("--out", mergeFlags.outDir, "Write the whole sweep's files here")
+    merge->add_option("--out", flags->outDir, "Write the whole sweep's files here")
         ->required()
         ->check(NonEmpty("a directory"));
-    merge->add_option("--format", mergeFlags.format, "Output format")
+    merge->add_option("--format", flags->format, "Output format")
         ->check(CLI::IsMember({"table", "markdown", "csv", "json"}));
     merge->footer(
         "The merged files are those of one unsharded run, bit for bit, but for the times: each "
         "light keeps its shard's ms, and the sweep's seconds are the sum of the shards'.");
+    return [flags] { return cases::MergeCommand(*flags); };
+}
 
+Command RegisterTiming(CLI::App& app) {
     auto* timing = app.add_subcommand(
         "timing", "3D: time focused and optimal frames pass by pass (report Tables 2-3)");
-    lexel::cases::TimingFlags timingFlags;
-    timing->add_option("case", timingFlags.casePath, "3D case file (JSON)")
+    auto flags = std::make_shared<cases::TimingFlags>();
+    timing->add_option("case", flags->casePath, "3D case file (JSON)")
         ->required()
         ->check(CLI::ExistingFile);
-    timing->add_option("--backend", timingFlags.backend, "The renderer (gl: OpenGL 4.5 via EGL)")
-        ->check(CLI::IsMember({"cpu", "gl"}));
-    timing->add_option("--lights", timingFlags.lights, "Lights per frame (default 4, as Table 3)")
+    AddBackend(timing, flags->backend, "The renderer (gl: OpenGL 4.5 via EGL)");
+    timing->add_option("--lights", flags->lights, "Lights per frame (default 4, as Table 3)")
         ->check(CLI::Range(1, 64));
     timing
-        ->add_option("--frames", timingFlags.frames,
+        ->add_option("--frames", flags->frames,
                      "Timed frames per method, walking the camera_path (default 8)")
         ->check(CLI::Range(1, 10000));
     timing
-        ->add_option("--update-every", timingFlags.updateEvery,
+        ->add_option("--update-every", flags->updateEvery,
                      "Optimal: run Algorithm 1 every U frames, keep P between (report: 3)")
         ->check(CLI::Range(1, 1000));
     timing
-        ->add_option("--standard-every", timingFlags.standardEvery,
+        ->add_option("--standard-every", flags->standardEvery,
                      "Optimal: step 1 from a standard map every S updates, else from the "
                      "previous map (report: 2)")
         ->check(CLI::Range(1, 1000));
     timing
         ->add_option(
-            "--optimizer", timingFlags.optimizer,
+            "--optimizer", flags->optimizer,
             "The optimal frames' method (default optimal-report: Algorithm 1 as published)")
         ->check(CLI::IsMember({"optimal-report", "optimal", "optimal-refined", "optimal-shear"}));
-    timing->add_option("--format", timingFlags.format, "Output format")
+    timing->add_option("--format", flags->format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
+    return [flags] { return cases::TimingCommand(*flags); };
+}
 
+Command RegisterStorage(CLI::App& app) {
     auto* storage = app.add_subcommand(
         "storage",
         "Lloyd et al. 2006's storage factor: the data and figures of Figs. 5-7, 10, 12, 13");
-    lexel::cases::StorageFlags storageFlags;
-    storage
-        ->add_option("--fov-y", storageFlags.fovYDeg,
-                     "Vertical field of view in degrees, 0.1 to 179")
+    auto flags = std::make_shared<cases::StorageFlags>();
+    storage->add_option("--fov-y", flags->fovYDeg, "Vertical field of view in degrees, 0.1 to 179")
         ->capture_default_str();
-    storage->add_option("--aspect", storageFlags.aspect, "Image width / height, 0.01 to 100")
+    storage->add_option("--aspect", flags->aspect, "Image width / height, 0.01 to 100")
         ->capture_default_str();
-    storage->add_option("--near", storageFlags.nearPlane, "Near plane n, 1e-6 to 1e9")
+    storage->add_option("--near", flags->nearPlane, "Near plane n, 1e-6 to 1e9")
         ->capture_default_str();
     storage
-        ->add_option("--far", storageFlags.farPlane,
+        ->add_option("--far", flags->farPlane,
                      "Far plane f, 1e-6 to 1e9, with f/n from 1 + 1e-6 to 1e6")
         ->capture_default_str();
     auto* storageCase =
         storage
-            ->add_option("--case", storageFlags.casePath,
+            ->add_option("--case", flags->casePath,
                          "3D case: every method's measured storage factor beside the analytic "
                          "one for the case's camera (instead of the figures)")
             ->check(CLI::ExistingFile);
     for (const char* flag : {"--fov-y", "--aspect", "--near", "--far"})
         storageCase->excludes(storage->get_option(flag));
-    storage->add_option("--method", storageFlags.methods,
+    storage->add_option("--method", flags->methods,
                         "With --case: methods (default: all; listed below)");
-    storage->footer(lexel::cases::MethodsHelp(false, true));
-    storage->add_option("--format", storageFlags.format, "Output format")
+    storage->footer(cases::MethodsHelp(false, true));
+    storage->add_option("--format", flags->format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
     storage
-        ->add_option("--out", storageFlags.outDir,
+        ->add_option("--out", flags->outDir,
                      "Also write storage.json, storage.csv and the figures (PNG) here")
         ->check(NonEmpty("a directory"));
+    return [flags] { return cases::StorageCommand(*flags); };
+}
 
+Command RegisterMeshInfo(CLI::App& app) {
     auto* meshInfo = app.add_subcommand(
         "mesh-info", "A mesh file's format, triangles and bounds, and its placement by a case");
-    std::string meshInfoFile, meshInfoCase;
-    meshInfo->add_option("file", meshInfoFile, "Mesh file (obj, off, stl, ply, gltf, glb)")
+    auto file = std::make_shared<std::string>(), casePath = std::make_shared<std::string>();
+    meshInfo->add_option("file", *file, "Mesh file (obj, off, stl, ply, gltf, glb)")
         ->required()
         ->check(NonEmpty("a mesh file"));
     meshInfo
-        ->add_option("--case", meshInfoCase,
+        ->add_option("--case", *casePath,
                      "3D case: also the bounds after each of its entries for the file (up axis, "
                      "units, transform)")
         ->check(CLI::ExistingFile);
+    return [file, casePath] { return cases::MeshInfoCommand(*file, *casePath); };
+}
 
-    auto* info = app.add_subcommand("info", "The version and the renderers available here");
+Command RegisterInfo(CLI::App& app) {
+    app.add_subcommand("info", "The version and the renderers available here");
+    return [] { return cases::InfoCommand(std::string("lexel ") + LEXEL_VERSION); };
+}
 
+Command RegisterTables(CLI::App& app) {
     auto* tables =
         app.add_subcommand("tables", "Reproduce the thesis tables (Chong 2003, ch. 4.1.3)");
-    std::string tablesOut = "out", casesDir;
-    tables->add_option("--out", tablesOut, "Directory for the Markdown, CSV and figures")
+    auto outDir = std::make_shared<std::string>("out"), casesDir = std::make_shared<std::string>();
+    tables->add_option("--out", *outDir, "Directory for the Markdown, CSV and figures")
         ->capture_default_str()
         ->check(NonEmpty("a directory"));
     tables
-        ->add_option("--cases", casesDir,
+        ->add_option("--cases", *casesDir,
                      "Directory holding the four thesis cases (default: the shipped ones); "
                      "fitted/<case>.json there replaces a case where it matches better")
         ->check(NonEmpty("a directory"));
+    return [outDir, casesDir] { return cases::TablesCommand(*outDir, *casesDir); };
+}
 
+Command RegisterLowres(CLI::App& app) {
     auto* lowres =
         app.add_subcommand("lowres", "Low-resolution decision study (thesis 4.1.1, Fig. 4.1)");
-    std::string lowresCase, lowresOut;
-    lowres->add_option("case", lowresCase, "Case file (JSON)")
-        ->required()
-        ->check(CLI::ExistingFile);
-    lowres->add_option("--out", lowresOut, "Also write the table as CSV/Markdown and a plot here")
+    auto casePath = std::make_shared<std::string>(), outDir = std::make_shared<std::string>();
+    lowres->add_option("case", *casePath, "Case file (JSON)")->required()->check(CLI::ExistingFile);
+    lowres->add_option("--out", *outDir, "Also write the table as CSV/Markdown and a plot here")
         ->check(NonEmpty("a directory"));
+    return [casePath, outDir] { return cases::LowresCommand(*casePath, *outDir); };
+}
 
+Command RegisterFitThesis(CLI::App& app) {
     auto* fitThesis = app.add_subcommand(
         "fit-thesis", "Fit the thesis's scenes to its published tables (Chong 2003, ch. 4.1.3)");
-    lexel::cases::FitThesisFlags fitFlags;
-    fitThesis->add_option("--case", fitFlags.caseName, "One case (file stem); default: all four")
+    auto flags = std::make_shared<cases::FitThesisFlags>();
+    fitThesis->add_option("--case", flags->caseName, "One case (file stem); default: all four")
         ->check(NonEmpty("a thesis case"));
-    fitThesis->add_option("--out", fitFlags.outDir, "Directory for the fitted case files")
+    fitThesis->add_option("--out", flags->outDir, "Directory for the fitted case files")
         ->capture_default_str()
         ->check(NonEmpty("a directory"));
-    fitThesis->add_option("--seed", fitFlags.options.seed, "Seed of the random starts")
+    fitThesis->add_option("--seed", flags->options.seed, "Seed of the random starts")
         ->capture_default_str();
-    fitThesis->add_option("--samples", fitFlags.options.samples, "Random starts screened per case")
+    fitThesis->add_option("--samples", flags->options.samples, "Random starts screened per case")
         ->capture_default_str()
         ->check(CLI::Range(0, 10000000));
     fitThesis
-        ->add_option("--starts", fitFlags.options.starts,
-                     "Least-squares runs from the best of them")
+        ->add_option("--starts", flags->options.starts, "Least-squares runs from the best of them")
         ->capture_default_str()
         ->check(CLI::Range(0, 100000));
-    fitThesis->add_flag("--explain", fitFlags.options.explain,
+    fitThesis->add_flag("--explain", flags->options.explain,
                         "For a table not met: refit with each published number left out");
+    return [flags] { return cases::FitThesisCommand(*flags); };
+}
 
+// Runs the chosen command, each failure one line: bad input (InputError, an untranslated
+// DomainError, too little memory) exit 2, anything else 1.
+int RunCommandSafely(const Command& command) {
+    try {
+        return command();
+    } catch (const lexel::InputError& e) {
+        return Failure(e.what(), 2);
+    } catch (
+        const lexel::DomainError& e) {  // a domain error no command translated: still bad input
+        return Failure(e.what(), 2);
+    } catch (const std::bad_alloc&) {
+        // The loaders refuse cases over the memory budget; this is a machine with less to give.
+        return Failure(
+            "out of memory: this machine could not give the case what it needs (see "
+            "the memory budget in cases/README.md)",
+            2);
+    } catch (const std::exception& e) {
+        return Failure(e.what(), 1);
+    }
+}
+
+int RunLexel(int argc, char** argv) {
+    CLI::App app{"lexel: choose the light projection that minimizes shadow-map aliasing"};
+    app.set_version_flag("--version", std::string("lexel ") + LEXEL_VERSION);
+    app.require_subcommand(1);
+    // In `lexel --help` order.
+    const std::vector<Command> commands = {
+        RegisterRun(app),     RegisterSweep(app),    RegisterMerge(app), RegisterTiming(app),
+        RegisterStorage(app), RegisterMeshInfo(app), RegisterInfo(app),  RegisterTables(app),
+        RegisterLowres(app),  RegisterFitThesis(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -275,36 +333,9 @@ int RunLexel(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return Failure(e.what(), 2);
     }
-    using namespace lexel;
-    try {
-        if (*run)
-            return cases::RunCommand({casePaths, methods, metric, run->count("--metric") > 0,
-                                      format, runOut, !noMapTruth, runCascades, runBackend});
-        if (*sweep)
-            return cases::SweepCommand({sweepCase, sweepLights, sweepLightType, sweepMethods,
-                                        sweepFormat, sweepOut, sweepCascades, sweepBackend,
-                                        sweepShard, sweepResume});
-        if (*merge) return cases::MergeCommand(mergeFlags);
-        if (*timing) return cases::TimingCommand(timingFlags);
-        if (*storage) return cases::StorageCommand(storageFlags);
-        if (*meshInfo) return cases::MeshInfoCommand(meshInfoFile, meshInfoCase);
-        if (*info) return cases::InfoCommand(std::string("lexel ") + LEXEL_VERSION);
-        if (*tables) return cases::TablesCommand(tablesOut, casesDir);
-        if (*lowres) return cases::LowresCommand(lowresCase, lowresOut);
-        if (*fitThesis) return cases::FitThesisCommand(fitFlags);
-    } catch (const InputError& e) {
-        return Failure(e.what(), 2);
-    } catch (const DomainError& e) {  // a domain error no command translated: still bad input
-        return Failure(e.what(), 2);
-    } catch (const std::bad_alloc&) {
-        // The loaders refuse cases over the memory budget; this is a machine with less to give.
-        return Failure(
-            "out of memory: this machine could not give the case what it needs (see "
-            "the memory budget in cases/README.md)",
-            2);
-    } catch (const std::exception& e) {
-        return Failure(e.what(), 1);
-    }
+    const std::vector<CLI::App*> subcommands = app.get_subcommands({});
+    for (std::size_t i = 0; i < subcommands.size(); ++i)
+        if (subcommands[i]->parsed()) return RunCommandSafely(commands[i]);
     return 0;
 }
 
