@@ -178,13 +178,16 @@ auto WithCaseName(const fs::path& casePath, Body body) {
 }
 
 // The case's scene with --cascades applied.
-spatial::Scene LoadSceneWithCascades(const fs::path& casePath, int cascades) {
-    spatial::Scene scene = LoadSpatialScene(casePath);
+spatial::Scene LoadSceneWithCascades(const CaseFile& file, int cascades) {
+    spatial::Scene scene = LoadSpatialScene(file);
     if (cascades > 0) scene.partitions.count = cascades;
     return scene;
 }
+spatial::Scene LoadSceneWithCascades(const fs::path& casePath, int cascades) {
+    return LoadSceneWithCascades(ReadCaseFile(casePath), cascades);
+}
 
-int RunSpatial(const RunFlags& flags) {
+int RunSpatial(const RunFlags& flags, const CaseFile& file) {
     if (flags.cases.size() != 1)
         throw InputError("run: give one 3D case at a time (got " +
                          std::to_string(flags.cases.size()) + " files)");
@@ -193,7 +196,7 @@ int RunSpatial(const RunFlags& flags) {
             "--metric: 3D cases are measured by the report's h (eq. 6) and misclassified pixels; "
             "--metric applies to flatland cases");
     const fs::path casePath = flags.cases.front();
-    const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
+    const spatial::Scene scene = LoadSceneWithCascades(file, flags.cascades);
     SpatialRunOptions options;
     options.methods = SpatialMethodsOfCase(flags.methods, scene, false);
     WithCaseName(casePath, [&] { CheckCaseMethodLights(scene, options.methods, false); });
@@ -252,7 +255,7 @@ OutputPlan FlatlandOutputPlan(const RunFlags& flags,
             }};
 }
 
-int RunFlatland(const RunFlags& flags) {
+int RunFlatland(const RunFlags& flags, const CaseFile& first) {
     if (flags.backend != "cpu")
         throw InputError(
             "--backend: flatland cases have no renderer; --backend applies to 3D cases");
@@ -262,7 +265,9 @@ int RunFlatland(const RunFlags& flags) {
     const std::vector<std::string> methods = FlatlandMethods(flags.methods);
     // Everything is computed before anything is written: a bad second case leaves no files.
     std::vector<flatland::FlatScene> scenes;
-    for (const auto& path : flags.cases) scenes.push_back(LoadFlatScene(path));
+    scenes.push_back(LoadFlatScene(first));
+    for (std::size_t i = 1; i < flags.cases.size(); ++i)
+        scenes.push_back(LoadFlatScene(flags.cases[i]));
     std::optional<OutputSet> out;  // --out is checked before anything is computed
     if (!flags.outDir.empty()) out.emplace(flags.outDir, FlatlandOutputPlan(flags, scenes));
     std::vector<flatland::CaseReport> reports;
@@ -304,8 +309,10 @@ int RunFlatland(const RunFlags& flags) {
 
 int RunCommand(const RunFlags& flags) {
     // 3D cases (they have "lights") go to the spatial harness, one at a time.
-    if (IsSpatialCase(ParseJsonFile(flags.cases.front()))) return RunSpatial(flags);
-    return RunFlatland(flags);
+    // Each case file is read once: the first tells which world the run is in.
+    const CaseFile first = ReadCaseFile(flags.cases.front());
+    if (IsSpatialCase(first.document)) return RunSpatial(flags, first);
+    return RunFlatland(flags, first);
 }
 
 namespace {

@@ -140,7 +140,12 @@ flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
 }
 
 flatland::FlatScene LoadFlatScene(const std::filesystem::path& path) {
-    const nlohmann::json document = ParseJsonFile(path);
+    return LoadFlatScene(ReadCaseFile(path));
+}
+
+flatland::FlatScene LoadFlatScene(const CaseFile& file) {
+    const std::filesystem::path& path = file.path;
+    const nlohmann::json& document = file.document;
     if (IsSpatialCase(document))
         throw InputError(path.string() +
                          ": this is a 3D case (it has \"lights\" or \"light_sweep\"); expected a "

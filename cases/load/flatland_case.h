@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "lexel/cases/load/json_reader.h"
 #include "lexel/flatland/scene.h"
 #include "lexel/solvers/errors.h"
 
@@ -19,6 +20,8 @@ inline constexpr long long kMaxWedges = 4096;
 flatland::FlatScene FlatSceneFromJson(const nlohmann::json& document,
                                       const std::string& fallbackName);
 flatland::FlatScene LoadFlatScene(const std::filesystem::path& path);
+// The same for a file already read (ReadCaseFile).
+flatland::FlatScene LoadFlatScene(const CaseFile& file);
 
 // A DomainError met while checking or running a flatland scene, as the one line the CLI prints:
 // "<source>: <field>: <reason>", the field being the JSON pointer of the camera's or the light's

@@ -414,4 +414,6 @@ Eigen::Vector3d JsonField::Vec3() const {
     return {items[0].Number(), items[1].Number(), items[2].Number()};
 }
 
+CaseFile ReadCaseFile(const std::filesystem::path& path) { return {path, ParseJsonFile(path)}; }
+
 }  // namespace lexel::cases

@@ -25,6 +25,14 @@ inline constexpr std::size_t kMaxCaseFileBytes = std::size_t{16} << 20;
 nlohmann::json ParseJsonFile(const std::filesystem::path& path);
 nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceName);
 
+// A case file read and parsed once (ParseJsonFile's checks and errors): the commands hand it on
+// to the loaders rather than reading the file again.
+struct CaseFile {
+    std::filesystem::path path;
+    nlohmann::json document;
+};
+CaseFile ReadCaseFile(const std::filesystem::path& path);
+
 class JsonField {
   public:
     JsonField(const nlohmann::json& value, std::string pointer)

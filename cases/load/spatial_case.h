@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "lexel/cases/load/json_reader.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/mesh_frame.h"
@@ -47,6 +48,8 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
                                     const std::filesystem::path& baseDir);
 // Reads the file; errors are prefixed with its path.
 spatial::Scene LoadSpatialScene(const std::filesystem::path& path);
+// The same for a file already read (ReadCaseFile).
+spatial::Scene LoadSpatialScene(const CaseFile& file);
 
 // A `mesh` geometry entry of a 3D case: its file (a relative path resolved against the case's
 // directory), the file's axes and units (`up`, `units`) and the entry's transform; the entry's
@@ -70,19 +73,5 @@ std::string SpatialErrorField(const DomainError& e, const std::string& light,
                               const std::string& camera = "/camera");
 std::string LightField(std::size_t light);      // "/lights/<light>"
 std::string CameraPathField(std::size_t pose);  // "/camera_path/<pose>"
-
-// The evaluator of a loaded scene seen from `scene.camera`; its DomainErrors become InputErrors
-// naming `camera` or /geometry.
-std::unique_ptr<spatial::Evaluator> MakeEvaluator(const spatial::Scene& scene,
-                                                  const spatial::RenderBackend& backend,
-                                                  const std::string& camera = "/camera");
-
-// Refuses a fixed light that no counted pixel faces (Evaluator::CountedPixels is 0: it lies in the
-// plane of, or behind, every surface the camera sees), before any method runs: every count and h
-// would be 0 and say nothing. `field` is the light's pointer ("/lights/k"); the error names its
-// position or direction. A light sweep does not call this: such a light is kept in the sweep with
-// receiver_pixels 0 (lights.csv), since one unlucky light should not abort the others.
-void CheckLightFacesPixels(const spatial::Evaluator& evaluator, const spatial::Light& light,
-                           const std::string& field);
 
 }  // namespace lexel::cases

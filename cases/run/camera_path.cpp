@@ -5,6 +5,7 @@
 #include <span>
 
 #include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/run/evaluator_setup.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/temporal.h"

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/run/evaluator_setup.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/methods.h"
 

@@ -7,6 +7,7 @@
 
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/run/backend.h"
+#include "lexel/cases/run/evaluator_setup.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/cascades.h"
 #include "lexel/spatial/harness/evaluation.h"

@@ -9,6 +9,7 @@
 #include "lexel/cases/load/memory_budget.h"
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/report/text_table.h"
+#include "lexel/cases/run/evaluator_setup.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/evaluation.h"

@@ -1,6 +1,7 @@
 #include "lexel/cases/run/timing.h"
 
 #include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/run/evaluator_setup.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/frame_schedule.h"
