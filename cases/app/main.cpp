@@ -1,7 +1,7 @@
 // lexel — the command line. Subcommands:
 //   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv]
 //             [--out DIR] [--no-map-truth] [--cascades K]   flatland and 3D cases alike
-//   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--methods NAME...]
+//   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--method NAME...]
 //             [--cascades K] [--format table|markdown|csv|json]
 //             [--out DIR] [--shard K/N] [--resume]
 //                                  the 3D report's Table 1, the fair and equal-texel tables
@@ -114,7 +114,7 @@ Command RegisterSweep(CLI::App& app) {
         ->add_option("--light-type", flags->lightType,
                      "Sweep point or directional lights (default: the case's light_sweep type)")
         ->check(CLI::IsMember({"point", "directional"}));
-    sweep->add_option("--methods,--method", flags->methods,
+    sweep->add_option("--method,--methods", flags->methods,
                       "Methods to run (default: all; listed below)");
     sweep->footer(cases::MethodsHelp(false, true));
     sweep->add_option("--format", flags->format, "Output format")
