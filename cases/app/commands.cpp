@@ -71,6 +71,26 @@ fs::path DataDirectory() {
 
 namespace {
 
+// One command's report in the output format chosen by --format, on stdout: JSON (indented), CSV,
+// Markdown (where the command has it) or the terminal text. Each form is made only when chosen.
+struct ReportForms {
+    std::function<nlohmann::json()> json;
+    std::function<std::string()> csv;
+    std::function<std::string()> markdown;  // empty: the command has no Markdown form
+    std::function<std::string()> text;
+};
+
+void PrintReport(const std::string& format, const ReportForms& forms) {
+    if (format == "json")
+        std::cout << forms.json().dump(2) << '\n';
+    else if (format == "csv")
+        std::cout << forms.csv();
+    else if (format == "markdown" && forms.markdown)
+        std::cout << forms.markdown();
+    else
+        std::cout << forms.text();
+}
+
 std::string MethodLines(const std::vector<std::string>& names,
                         std::string_view (*describe)(std::string_view)) {
     std::size_t width = 0;
@@ -217,12 +237,10 @@ int RunSpatial(const RunFlags& flags, const CaseFile& file) {
     Progress bar("run " + scene.name, SpatialRunSteps(scene, options), "steps");
     options.onStep = [&] { bar.Step(); };
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
-    if (flags.format == "json")
-        std::cout << SpatialRunJson(scene, run).dump(2) << '\n';
-    else if (flags.format == "csv")
-        std::cout << SpatialRunCsv(run);
-    else
-        std::cout << SpatialRunText(scene, run);
+    PrintReport(flags.format, {.json = [&] { return SpatialRunJson(scene, run); },
+                               .csv = [&] { return SpatialRunCsv(run); },
+                               .markdown = {},
+                               .text = [&] { return SpatialRunText(scene, run); }});
     if (!out) return 0;
     Progress imageBar("run " + scene.name + ": images", SpatialImageCount(run), "images");
     const std::vector<SpatialImageFile> images = out->Writing([&] {
@@ -281,13 +299,18 @@ int RunFlatland(const RunFlags& flags, const CaseFile& first) {
             throw FlatlandInputError(flags.cases[i], e);
         }
     }
-    if (flags.format == "json")
-        std::cout << RunJson(reports).dump(2) << '\n';
-    else if (flags.format == "csv")
-        std::cout << RunCsv(reports);
-    else
-        for (std::size_t i = 0; i < reports.size(); ++i)
-            std::cout << (i ? "\n" : "") << CaseTable(reports[i]);
+    PrintReport(flags.format, {.json = [&] { return RunJson(reports); },
+                               .csv = [&] { return RunCsv(reports); },
+                               .markdown = {},
+                               .text =
+                                   [&] {
+                                       std::string text;
+                                       for (std::size_t i = 0; i < reports.size(); ++i) {
+                                           if (i > 0) text += '\n';
+                                           text += CaseTable(reports[i]);
+                                       }
+                                       return text;
+                                   }});
     if (!out) return 0;
     std::vector<LinkedFile> files;
     for (const auto& r : reports) {
@@ -390,14 +413,10 @@ std::string StageSweepFiles(OutputSet& out, const SweepResult& r, const ReportTa
 // Prints the sweep's tables in `format` (table: with `closing`, the line after them).
 void PrintSweep(const SweepResult& r, const ReportTable1& report, const std::string& format,
                 const std::string& closing) {
-    if (format == "json")
-        std::cout << SweepJson(r).dump(2) << '\n';
-    else if (format == "csv")
-        std::cout << SweepCsv(r, report);
-    else if (format == "markdown")
-        std::cout << SweepMarkdown(r, report);
-    else
-        std::cout << SweepTable(r, report) << closing << '\n';
+    PrintReport(format, {.json = [&] { return SweepJson(r); },
+                         .csv = [&] { return SweepCsv(r, report); },
+                         .markdown = [&] { return SweepMarkdown(r, report); },
+                         .text = [&] { return SweepTable(r, report) + closing + "\n"; }});
 }
 
 // The --shard value "K/N": N ≥ 1, 0 ≤ K < N, both decimal integers.
@@ -612,12 +631,10 @@ int TimingCommand(const TimingFlags& flags) {
     Progress bar("timing", static_cast<std::size_t>(options.frames) + 1, "frames");
     options.onFrameDone = [&] { bar.Step(); };
     const TimingRun run = WithCaseName(casePath, [&] { return RunTiming(scene, options); });
-    if (flags.format == "json")
-        std::cout << TimingJson(scene, run, report).dump(2) << '\n';
-    else if (flags.format == "csv")
-        std::cout << TimingCsv(run);
-    else
-        std::cout << TimingText(scene, run, report);
+    PrintReport(flags.format, {.json = [&] { return TimingJson(scene, run, report); },
+                               .csv = [&] { return TimingCsv(run); },
+                               .markdown = {},
+                               .text = [&] { return TimingText(scene, run, report); }});
     return 0;
 }
 
@@ -668,12 +685,10 @@ int CaseStorageCommand(const StorageFlags& flags) {
                                              }});
     const CaseStorage result =
         WithCaseName(casePath, [&] { return RunCaseStorage(scene, methods); });
-    if (flags.format == "json")
-        std::cout << CaseStorageJson(result).dump(2) << '\n';
-    else if (flags.format == "csv")
-        std::cout << CaseStorageCsv(result);
-    else
-        std::cout << CaseStorageText(result);
+    PrintReport(flags.format, {.json = [&] { return CaseStorageJson(result); },
+                               .csv = [&] { return CaseStorageCsv(result); },
+                               .markdown = {},
+                               .text = [&] { return CaseStorageText(result); }});
     if (!out) return 0;
     out->WriteText(stem + ".json", CaseStorageJson(result).dump(2) + "\n");
     out->WriteText(stem + ".csv", CaseStorageCsv(result));
@@ -697,12 +712,10 @@ int StorageCommand(const StorageFlags& flags) {
                                           (file.starts_with("fig") && file.ends_with(".png"));
                                }});
     const StorageStudy study = RunStorageStudy(frustum);
-    if (flags.format == "json")
-        std::cout << StorageJson(study).dump(2) << '\n';
-    else if (flags.format == "csv")
-        std::cout << StorageCsv(study);
-    else
-        std::cout << StorageText(study);
+    PrintReport(flags.format, {.json = [&] { return StorageJson(study); },
+                               .csv = [&] { return StorageCsv(study); },
+                               .markdown = {},
+                               .text = [&] { return StorageText(study); }});
     if (!out) return 0;
     out->WriteText("storage.json", StorageJson(study).dump(2) + "\n");
     out->WriteText("storage.csv", StorageCsv(study));

@@ -6,20 +6,13 @@
 #include <sstream>
 
 #include "lexel/cases/report/figures.h"
+#include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/harness/images.h"
 #include "lexel/spatial/harness/warped_methods.h"
 
 namespace lexel::cases {
-
-namespace {
-
-nlohmann::json FiniteOrNull(double v) {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
-}  // namespace
 
 std::vector<std::string> LightHeaderLines(std::size_t l, const spatial::LightOutcome& o) {
     std::vector<std::string> lines = {

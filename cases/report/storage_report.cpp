@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "lexel/cases/report/figures.h"
+#include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/harness/image_io.h"
@@ -14,10 +15,6 @@
 namespace lexel::cases {
 
 namespace {
-
-nlohmann::json FiniteOrNull(double v) {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
 
 std::string FrustumLine(const spatial::ViewFrustum& f) {
     return "fov_y " + Significant(f.fovYDeg, 6) + "°, aspect " + Significant(f.aspect, 6) + ", n " +

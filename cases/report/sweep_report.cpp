@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "lexel/cases/report/figures.h"
+#include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/spatial/harness/methods.h"
 
@@ -466,10 +467,6 @@ std::vector<ReportSection> SweepSections(const SweepResult& r, const ReportTable
 }
 
 namespace {
-
-nlohmann::json FiniteOrNull(double v) {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
 
 nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) {
     nlohmann::json doc;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/lowres_report.h"
 #include "lexel/cases/report/text_table.h"
 
@@ -65,3 +66,13 @@ TEST(ReportNumbers, MarkdownLinksEncodeFileNames) {
 
 }  // namespace
 }  // namespace lexel::cases
+
+TEST(JsonNumber, FiniteNumbersStayAndTheRestAreNull) {
+    using lexel::cases::FiniteOrNull;
+    EXPECT_EQ(FiniteOrNull(0.938).dump(), "0.938");
+    EXPECT_EQ(FiniteOrNull(-0.0).dump(), "-0.0");
+    EXPECT_EQ(FiniteOrNull(1e308).get<double>(), 1e308);
+    EXPECT_TRUE(FiniteOrNull(std::numeric_limits<double>::infinity()).is_null());
+    EXPECT_TRUE(FiniteOrNull(-std::numeric_limits<double>::infinity()).is_null());
+    EXPECT_TRUE(FiniteOrNull(std::nan("")).is_null());
+}
