@@ -1,0 +1,106 @@
+#include "lexel/cases/app/command_support.h"
+
+#include <algorithm>
+#include <iostream>
+#include <optional>
+
+#include "lexel/cases/load/case_methods.h"
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/flatland/methods.h"
+#include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/warped_methods.h"
+
+namespace lexel::cases {
+
+namespace fs = std::filesystem;
+
+void PrintReport(const std::string& format, const ReportForms& forms) {
+    if (format == "json")
+        std::cout << forms.json().dump(2) << '\n';
+    else if (format == "csv")
+        std::cout << forms.csv();
+    else if (format == "markdown" && forms.markdown)
+        std::cout << forms.markdown();
+    else
+        std::cout << forms.text();
+}
+
+std::string KnownList(const std::vector<std::string>& names) {
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list;
+}
+
+namespace {
+
+// The --method values, checked against `known` (all of them when none are given).
+std::vector<std::string> MethodsOf(std::vector<std::string> methods,
+                                   const std::vector<std::string>& known, const char* world) {
+    if (methods.empty()) return known;
+    for (auto m = methods.begin(); m != methods.end(); ++m) {
+        if (std::find(known.begin(), known.end(), *m) == known.end())
+            throw InputError("--method: unknown " + std::string(world) + " method '" + *m +
+                             "' (known: " + KnownList(known) + ")");
+        // A method given twice would run twice and print two columns of one name.
+        if (std::find(methods.begin(), m, *m) != m)
+            throw InputError("--method: '" + *m + "' is given twice");
+    }
+    return methods;
+}
+
+}  // namespace
+
+std::vector<std::string> SpatialMethods(std::vector<std::string> methods) {
+    return MethodsOf(std::move(methods), spatial::SpatialMethodNames(), "3D");
+}
+
+std::vector<std::string> SpatialMethodsOfCase(std::vector<std::string> methods,
+                                              const spatial::Scene& scene, bool forSweep) {
+    std::vector<std::string> known = spatial::SpatialMethodNames();
+    if (methods.empty()) {
+        for (std::string& m : CaseMethodNames(scene, forSweep)) known.push_back(std::move(m));
+        return known;
+    }
+    for (const spatial::CaseMethod& m : scene.methods) known.push_back(m.name);
+    return MethodsOf(std::move(methods), known, "3D");
+}
+
+std::vector<std::string> FlatlandMethods(std::vector<std::string> methods) {
+    return MethodsOf(std::move(methods), flatland::FlatlandMethodNames(), "flatland");
+}
+
+BackendKind BackendOf(const std::string& name) {
+    const std::optional<BackendKind> kind = ParseBackend(name);
+    if (!kind) throw InputError("--backend: must be cpu or gl, got '" + name + "'");
+    if (*kind == BackendKind::kGl) {
+        std::string description;
+        try {
+            description = DescribeBackend(*kind);
+        } catch (const BackendUnavailable& e) {
+            throw InputError("--backend gl: " + std::string(e.what()));
+        }
+        std::cerr << "lexel: backend " << description << '\n';
+    }
+    return *kind;
+}
+
+// With --backend gl, one line on stderr for each method whose map the GPU does not render
+// (logpsm: a logarithm is no vertex warp, its map is ray-cast on the CPU: warped_methods.h).
+void NoteCpuOnlyMethods(const std::vector<std::string>& methods, BackendKind backend) {
+    if (backend != BackendKind::kGl) return;
+    for (const std::string& m : methods)
+        if (spatial::IsWarpedMethod(m) && !spatial::WarpedMethodRendersOnGl(m))
+            std::cerr << "lexel: note: --backend gl: " << m
+                      << "'s map is ray-cast on the CPU (a logarithmic warp is no vertex warp)\n";
+}
+
+spatial::Scene LoadSceneWithCascades(const CaseFile& file, int cascades) {
+    spatial::Scene scene = LoadSpatialScene(file);
+    if (cascades > 0) scene.partitions.count = cascades;
+    return scene;
+}
+spatial::Scene LoadSceneWithCascades(const fs::path& casePath, int cascades) {
+    return LoadSceneWithCascades(ReadCaseFile(casePath), cascades);
+}
+
+}  // namespace lexel::cases
