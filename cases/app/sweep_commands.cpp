@@ -160,13 +160,6 @@ SweepShard ShardOf(const std::string& text) {
     return shard;
 }
 
-std::string FileBytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (!in.eof() && in.fail()) throw InputError(path.string() + ": cannot be read");
-    return bytes;
-}
-
 // One line on stderr for a resumed run: how many of its lights its journal held.
 void SayResumed(const SweepDone& done, std::size_t lights, std::size_t studyLights,
                 const SweepJournal& journal) {
@@ -243,7 +236,8 @@ int SweepCommand(const SweepFlags& flags) {
     if (flags.resume && flags.outDir.empty())
         throw InputError("--resume: continues a sweep into its --out directory; give --out");
     const fs::path casePath = flags.casePath;
-    const spatial::Scene scene = LoadSceneWithCascades(casePath, flags.cascades);
+    const CaseFile caseFile = ReadCaseFile(casePath);  // read once: the scene and the identity
+    const spatial::Scene scene = LoadSceneWithCascades(caseFile, flags.cascades);
     const std::vector<std::string> methods = SpatialMethodsOfCase(flags.methods, scene, true);
     const BackendKind backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(methods, backend);
@@ -254,8 +248,8 @@ int SweepCommand(const SweepFlags& flags) {
     const std::vector<std::size_t> indices = ShareOf(lights.size(), shard);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
     if (!flags.outDir.empty()) out.emplace(flags.outDir, SweepOutputPlan(casePath, scene.name));
-    const SweepIdentity identity{scene.name,        Fnv1a64Hex(FileBytes(casePath)), methods,
-                                 flags.backend,     scene.partitions.count,          lights.size(),
+    const SweepIdentity identity{scene.name,        Fnv1a64Hex(caseFile.text), methods,
+                                 flags.backend,     scene.partitions.count,    lights.size(),
                                  LightsHash(lights)};
     // With --out: the cascade-count study, and the journal of the finished lights.
     const bool withStudy = out && !CascadeStudyMethods(methods).empty();

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "lexel/solvers/errors.h"
@@ -268,7 +269,10 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceN
     }
 }
 
-nlohmann::json ParseJsonFile(const std::filesystem::path& path) {
+namespace {
+
+// The bytes of a case file, with ParseJsonFile's checks before and while reading.
+std::string ReadCaseText(const std::filesystem::path& path) {
     // Only a regular file of bounded size: /dev/zero would be read without end, a FIFO would block.
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(path, error);
@@ -285,7 +289,14 @@ nlohmann::json ParseJsonFile(const std::filesystem::path& path) {
         throw InputError(path.string() + ": larger than " +
                          std::to_string(kMaxCaseFileBytes >> 20) +
                          " MiB, the most a case file may be");
-    return ParseJsonText(text, path.string());
+    text.shrink_to_fit();
+    return text;
+}
+
+}  // namespace
+
+nlohmann::json ParseJsonFile(const std::filesystem::path& path) {
+    return ParseJsonText(ReadCaseText(path), path.string());
 }
 
 void JsonField::Fail(const std::string& reason) const {
@@ -414,6 +425,10 @@ Eigen::Vector3d JsonField::Vec3() const {
     return {items[0].Number(), items[1].Number(), items[2].Number()};
 }
 
-CaseFile ReadCaseFile(const std::filesystem::path& path) { return {path, ParseJsonFile(path)}; }
+CaseFile ReadCaseFile(const std::filesystem::path& path) {
+    std::string text = ReadCaseText(path);
+    nlohmann::json document = ParseJsonText(text, path.string());
+    return {path, std::move(text), std::move(document)};
+}
 
 }  // namespace lexel::cases

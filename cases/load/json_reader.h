@@ -29,6 +29,7 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceN
 // to the loaders rather than reading the file again.
 struct CaseFile {
     std::filesystem::path path;
+    std::string text;  // the bytes read (a sweep's identity hashes them)
     nlohmann::json document;
 };
 CaseFile ReadCaseFile(const std::filesystem::path& path);

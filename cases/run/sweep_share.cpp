@@ -87,19 +87,19 @@ SweepResult RunSweepShare(const spatial::Scene& scene, const std::vector<std::st
                           const std::vector<std::size_t>& indices, const SweepDone& done,
                           const std::function<void(const SweepLightRecord&)>& onLightDone,
                           BackendKind backend) {
-    std::vector<std::size_t> todo;
-    std::vector<Light> todoLights;
+    std::vector<std::size_t> pending;
+    std::vector<Light> pendingLights;
     for (std::size_t i : indices)
         if (!done.lights.count(i)) {
-            todo.push_back(i);
-            todoLights.push_back(allLights.at(i));
+            pending.push_back(i);
+            pendingLights.push_back(allLights.at(i));
         }
     SweepResult fresh = RunSweep(
-        scene, methods, todoLights,
+        scene, methods, pendingLights,
         [&](std::size_t l, const std::vector<SweepCell>& cells, std::int64_t receiverPixels) {
-            if (onLightDone) onLightDone({todo[l], todoLights[l], receiverPixels, cells});
+            if (onLightDone) onLightDone({pending[l], pendingLights[l], receiverPixels, cells});
         },
-        backend, todo);
+        backend, pending);
     SweepResult r;
     r.caseName = scene.name;
     r.methods = methods;
@@ -127,25 +127,25 @@ StudyMisclassified RunStudyShare(const spatial::Scene& scene, const SweepResult&
     const std::vector<std::string> methods = CascadeStudyMethods(share.methods);
     StudyMisclassified study;
     for (int k : CascadeStudyExtraCounts(scene.partitions.count)) {
-        std::vector<std::size_t> todo, todoIndices;  // positions in the share, in the sweep
-        std::vector<Light> todoLights;
+        std::vector<std::size_t> pending, pendingIndices;  // positions in the share, in the sweep
+        std::vector<Light> pendingLights;
         for (std::size_t l = 0; l < share.lights.size(); ++l)
             if (!done.study.count({k, share.indices[l]})) {
-                todo.push_back(l);
-                todoIndices.push_back(share.indices[l]);
-                todoLights.push_back(share.lights[l]);
+                pending.push_back(l);
+                pendingIndices.push_back(share.indices[l]);
+                pendingLights.push_back(share.lights[l]);
             }
         spatial::Scene atK = scene;
         atK.partitions.count = k;
         auto& perLight = study.emplace_back(share.lights.size());
         RunSweep(
-            atK, methods, todoLights,
+            atK, methods, pendingLights,
             [&](std::size_t l, const std::vector<SweepCell>& cells, std::int64_t) {
-                std::vector<std::int64_t>& counts = perLight[todo[l]];
+                std::vector<std::int64_t>& counts = perLight[pending[l]];
                 for (const SweepCell& c : cells) counts.push_back(c.misclassified);
-                if (onLightDone) onLightDone({k, share.indices[todo[l]], counts});
+                if (onLightDone) onLightDone({k, share.indices[pending[l]], counts});
             },
-            backend, todoIndices);
+            backend, pendingIndices);
         for (std::size_t l = 0; l < share.lights.size(); ++l)
             if (const auto it = done.study.find({k, share.indices[l]}); it != done.study.end())
                 perLight[l] = it->second.misclassified;
