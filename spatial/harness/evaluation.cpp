@@ -236,6 +236,10 @@ std::int64_t Evaluator::CountedPixels(const Light& light) const {
     return counted;
 }
 
+std::vector<std::uint8_t> Evaluator::TruthShadows(const Light& light) const {
+    return TraceTruth(LightSpace(light, bounds_));
+}
+
 std::int64_t Evaluator::Misclassified(const Light& light, const LightMatrix& matrix) const {
     const LightSpace lightSpace(light, bounds_);
     return CountWrong(

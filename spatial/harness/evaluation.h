@@ -157,6 +157,9 @@ class Evaluator {
     glm::dmat4 ClipFromWorldOf(const Light& light, const LightMatrix& matrix, Resolution map) const;
     // The frame's shades through one matrix, at the scene's shadow-map resolution.
     std::vector<Shade> ShadeFrame(const Light& light, const LightMatrix& matrix) const;
+    // The exact truth per frame pixel for `light`: 1 where a counted pixel's (covered, facing the
+    // light) shadow ray is blocked, 0 elsewhere. What Misclassified compares against.
+    std::vector<std::uint8_t> TruthShadows(const Light& light) const;
 
     const Scene& scene() const { return scene_; }
     const CameraBuffer& frame() const { return frame_; }
