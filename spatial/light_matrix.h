@@ -44,6 +44,11 @@ struct LightMatrix {
     // The same map after a 2D affine change of map coordinates u' = a · (u, 1)
     // (a: 3×3 with last row (0, 0, 1)).
     LightMatrix ThenAffine(const glm::dmat3& a) const;
+    // The same map with its texel grid moved by `texels`: u' = u + texels (p_i += texels_i p4).
+    // A sub-texel phase (|texels| < 1) changes which texel a point lands in, not J.
+    LightMatrix Shifted(const glm::dvec2& texels) const {
+        return {p1 + texels.x * p4, p2 + texels.y * p4, p4};
+    }
 };
 
 // The LightMatrix equal to a world-space 4×4 whose rows 1, 2, 4 send world points to texels

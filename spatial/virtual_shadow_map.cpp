@@ -43,7 +43,7 @@ double LevelScale(const VirtualMapLayout& l, int level) {
 }
 glm::dvec2 LevelTexel(const VirtualMapLayout& l, int level, const glm::dvec2& y) {
     const double offset = std::ldexp(0.5 * kVirtualMapTexels, -level);
-    return LevelScale(l, level) * (y - l.centre) + glm::dvec2(offset);
+    return LevelScale(l, level) * (y - l.centre) + glm::dvec2(offset) + l.phase;
 }
 
 }  // namespace
@@ -60,8 +60,9 @@ int VirtualPageTexels(Resolution budget) {
 LightMatrix VirtualMapLayout::LevelMatrix(int level) const {
     const double s = LevelScale(*this, level);
     const double offset = std::ldexp(0.5 * kVirtualMapTexels, -level);
-    // u = s (y − centre) + offset with y = (b1·X, b2·X) / (p4·X).
-    return {s * b1 + (offset - s * centre.x) * p4, s * b2 + (offset - s * centre.y) * p4, p4};
+    // u = s (y − centre) + offset + phase with y = (b1·X, b2·X) / (p4·X).
+    return {s * b1 + (offset + phase.x - s * centre.x) * p4,
+            s * b2 + (offset + phase.y - s * centre.y) * p4, p4};
 }
 
 LightMatrix VirtualMapLayout::PageMatrix(const PageKey& page) const {
@@ -249,6 +250,7 @@ VirtualShadowMap BuildVirtualShadowMap(const BaselineContext& context, const Rea
                                        const VirtualMapOptions& options) {
     VirtualShadowMap vsm;
     vsm.layout = MakeVirtualMapLayout(context);
+    vsm.layout.phase = options.phase;
     const std::vector<Asker> askers = Askers(vsm.layout, context, readback);
     vsm.lodBias = options.fitPool ? FitBias(vsm.layout, askers, options.lodBias) : options.lodBias;
     std::vector<std::uint64_t> keys = RequestKeys(vsm.layout, askers, vsm.lodBias);

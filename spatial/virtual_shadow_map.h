@@ -74,6 +74,9 @@ struct VirtualMapLayout {
     int minLevel = 0, maxLevel = 0;       // maxLevel: level 0's square in one page
     bool clipmap = false;                 // directional: levels < 0 are windows about the camera
     glm::dvec2 cameraTexel{0.0};          // clipmap: the camera's point in level 0's texels
+    // Every level's texel grid moved by this many of its own texels (a sub-texel phase, issue
+    // 25's phase averaging): u' = u + phase on every level, page boundaries included.
+    glm::dvec2 phase{0.0};
 
     // The map of level `level`'s texel grid: u = level 0's texels / 2^level (for ℓ ≥ 0 the
     // square fills [0, 16384 / 2^ℓ)²; for ℓ < 0 it extends past the window).
@@ -100,8 +103,9 @@ std::optional<double> FootprintLevel(const VirtualMapLayout& layout, const Camer
 int RequestedLevel(const VirtualMapLayout& layout, double footprintLevel, double lodBias);
 
 struct VirtualMapOptions {
-    double lodBias = 0.0;  // b: added to every footprint level (> 0: coarser)
-    bool fitPool = true;   // raise b until every requested page fits the pool
+    double lodBias = 0.0;   // b: added to every footprint level (> 0: coarser)
+    bool fitPool = true;    // raise b until every requested page fits the pool
+    glm::dvec2 phase{0.0};  // VirtualMapLayout::phase: the grid's sub-texel phase (texels)
 };
 
 struct VirtualShadowMap {

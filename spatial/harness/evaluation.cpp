@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include "lexel/spatial/harness/page_shading.h"
 #include "lexel/spatial/harness/ray_cast_map.h"
 #include "lexel/spatial/harness/ray_caster.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 
 namespace lexel::spatial {
 
@@ -140,6 +142,41 @@ Resolution WarpResolution(const MethodMatrix& computed, Resolution scene) {
     return computed.resolution.width > 0 ? computed.resolution : scene;
 }
 
+// What shading a method's map(s) needs beside the method itself.
+struct ShadingSetup {
+    const RenderBackend& backend;
+    const RayCastMapper& mapper;
+    const CameraBuffer& frame;
+    const LightSpace& lightSpace;
+    const Camera& camera;
+    Resolution shadowMap;                // the scene's map
+    std::span<const double> frameDepth;  // per frame pixel: planar eye depth
+};
+
+// The frame shaded through the method's map(s) with their texel grids moved by `phase` texels
+// (sub_texel_phase.h): every cascade alike; a virtual map's pages requested afresh on the moved
+// grid at the bias it was built with (`vsmAtPhase`, called only for phase ≠ 0).
+FrameShading ShadeMethod(const ShadingSetup& s, const MethodMatrix& computed,
+                         const glm::dvec2& phase,
+                         const std::function<VirtualShadowMap(const glm::dvec2&)>& vsmAtPhase) {
+    const bool moved = phase != glm::dvec2(0.0);
+    if (computed.virtualMap) {
+        PageShading p = ShadeThroughPages(s.backend, s.frame, s.lightSpace, s.camera,
+                                          moved ? vsmAtPhase(phase) : *computed.virtualMap);
+        return {std::move(p.shades), std::move(p.maps), std::move(p.page), std::move(p.outside)};
+    }
+    if (computed.warp)
+        return ShadeThroughWarp(s.backend, s.mapper, s.frame, s.lightSpace,
+                                moved ? computed.warp->Shifted(phase) : *computed.warp,
+                                WarpResolution(computed, s.shadowMap));
+    if (computed.cascades.empty())
+        return ShadeThroughMap(s.backend, s.frame, s.lightSpace, computed.matrix.Shifted(phase),
+                               s.shadowMap);
+    std::vector<Cascade> cascades = computed.cascades;
+    for (Cascade& c : cascades) c.matrix = c.matrix.Shifted(phase);
+    return ShadeThroughCascades(s.backend, s.frame, s.lightSpace, cascades, s.frameDepth);
+}
+
 struct Footprints {
     double mean = 0.0, max = 0.0;
     std::int64_t uncovered = 0;
@@ -251,6 +288,7 @@ std::int64_t Evaluator::Misclassified(const Light& light, const LightMatrix& mat
 LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& options) const {
     LightOutcome out;
     out.light = light;
+    out.phases = options.phases;
     const LightSpace lightSpace(light, bounds_);
 
     MethodContext context;
@@ -310,7 +348,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
             m.hBeforeRefine = computed.optimizer->hBeforeRefine;
         }
         m.winner = computed.winner;
-        Measure(lightSpace, computed, out, grazing, truth, options.keepBuffers, &m);
+        Measure(lightSpace, computed, context, out, grazing, truth, options, &m);
         out.methods.push_back(std::move(m));
         if (options.onMethodDone) options.onMethodDone(method);
     }
@@ -339,27 +377,37 @@ void MeasureCascadeEnergy(const Camera& camera, std::span<const Cascade> cascade
 }  // namespace
 
 void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& computed,
-                        const LightOutcome& light, std::span<const std::uint8_t> grazing,
-                        std::span<const std::uint8_t> truth, bool keepBuffers,
-                        MethodOutcome* m) const {
+                        const MethodContext& context, const LightOutcome& light,
+                        std::span<const std::uint8_t> grazing, std::span<const std::uint8_t> truth,
+                        const EvaluationOptions& options, MethodOutcome* m) const {
     const LightSamples& samples = light.samples;
     const std::vector<Cascade>& cascades = computed.cascades;
+    const bool keepBuffers = options.keepBuffers;
     m->matrix = computed.matrix;
-    FrameShading shading;
-    if (computed.virtualMap) {
-        PageShading p =
-            ShadeThroughPages(backend_, frame_, lightSpace, scene_.camera, *computed.virtualMap);
-        shading = {std::move(p.shades), std::move(p.maps), std::move(p.page), std::move(p.outside)};
-    } else if (computed.warp) {
-        shading = ShadeThroughWarp(backend_, *mapper_, frame_, lightSpace, *computed.warp,
-                                   WarpResolution(computed, scene_.shadowMap));
-    } else {
-        shading =
-            cascades.empty()
-                ? ShadeThroughMap(backend_, frame_, lightSpace, computed.matrix, scene_.shadowMap)
-                : ShadeThroughCascades(backend_, frame_, lightSpace, cascades, frameDepth_);
-    }
+    const ShadingSetup setup{backend_,      *mapper_,         frame_,     lightSpace,
+                             scene_.camera, scene_.shadowMap, frameDepth_};
+    const auto vsmAtPhase = [&](const glm::dvec2& phase) {
+        VirtualMapOptions vsmOptions;
+        vsmOptions.lodBias = computed.virtualMap->lodBias;
+        vsmOptions.fitPool = false;
+        vsmOptions.phase = phase;
+        return BuildVirtualShadowMap(context.baseline, readback_, vsmOptions);
+    };
+    const std::vector<glm::dvec2> phases = SubTexelPhases(options.phases);
+    FrameShading shading = ShadeMethod(setup, computed, phases.front(), vsmAtPhase);
     m->misclassified = CountWrong(shading.shades, truth, &m->falseShadow);
+    std::vector<std::int64_t> wrong = {m->misclassified};
+    double falseShadows = static_cast<double>(m->falseShadow);
+    for (std::size_t k = 1; k < phases.size(); ++k) {
+        std::int64_t falseShadow = 0;
+        wrong.push_back(CountWrong(ShadeMethod(setup, computed, phases[k], vsmAtPhase).shades,
+                                   truth, &falseShadow));
+        falseShadows += static_cast<double>(falseShadow);
+    }
+    const PhaseMean mean = MeanOverPhases(wrong);
+    m->misclassifiedMean = mean.mean;
+    m->misclassifiedError = mean.standardError;
+    m->falseShadowMean = falseShadows / static_cast<double>(phases.size());
     const Footprints footprints =
         MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
     m->footprintMean = footprints.mean;

@@ -64,6 +64,10 @@ struct EvaluationOptions {
     bool mapTruth = false;     // also render the report's focused truth map
     int truthMapSize = 4000;   // its resolution (square)
     bool keepBuffers = false;  // keep shades and maps (for images)
+    // K: each method's errors are also measured with its map(s) moved by K sub-texel phases
+    // (SubTexelPhases, sub_texel_phase.h; phase 0 the map as computed) and averaged. 1: the
+    // single measurement. Costs K shadow passes and shadings per method (the matrix once).
+    int phases = 1;
     // Called after each method is measured, with its name (a progress bar); may be empty.
     std::function<void(std::string_view method)> onMethodDone;
 };
@@ -89,9 +93,13 @@ struct PageOutcome {
 struct MethodOutcome {
     std::string method;
     LightMatrix matrix;
-    double ms = 0.0;                      // wall time to compute the matrix
-    std::int64_t misclassified = 0;       // counted pixels whose decision differs from the truth
-    std::int64_t falseShadow = 0;         // ... of which the method shadows a lit pixel
+    double ms = 0.0;                 // wall time to compute the matrix
+    std::int64_t misclassified = 0;  // counted pixels whose decision differs from the truth
+    std::int64_t falseShadow = 0;    // ... of which the method shadows a lit pixel
+    // Over EvaluationOptions::phases sub-texel phases (phase 0 gives the two counts above): the
+    // mean misclassified and false-shadow pixels, and the standard error of the first mean
+    // (MeanOverPhases; 0 for one phase). What the tables compare.
+    double misclassifiedMean = 0.0, falseShadowMean = 0.0, misclassifiedError = 0.0;
     double h = 0.0;                       // eq. (6) over the boundary samples
     double hGrazing = 0.0;                // ... of which from grazing samples (kGrazingCos)
     std::vector<double> hAfterIteration;  // optimal*: h after each Algorithm 1 iteration
@@ -125,6 +133,7 @@ struct LightOutcome {
     std::int64_t receiverPixels = 0;     // counted pixels
     std::int64_t truthShadowed = 0;      // ... that the rays find shadowed
     std::int64_t mapTruthDisagree = -1;  // focused truth map vs rays (-1: not computed)
+    int phases = 1;                      // EvaluationOptions::phases the methods were measured at
     LightSamples samples;                // the optimization samples (boundary, relevant)
     std::vector<MethodOutcome> methods;
     std::vector<std::uint8_t> truth;  // per frame pixel 1 = shadowed (when keepBuffers)
@@ -170,8 +179,9 @@ class Evaluator {
   private:
     std::vector<std::uint8_t> TraceTruth(const class LightSpace& lightSpace) const;
     void Measure(const LightSpace& lightSpace, const struct MethodMatrix& computed,
-                 const LightOutcome& light, std::span<const std::uint8_t> grazing,
-                 std::span<const std::uint8_t> truth, bool keepBuffers, MethodOutcome* m) const;
+                 const struct MethodContext& context, const LightOutcome& light,
+                 std::span<const std::uint8_t> grazing, std::span<const std::uint8_t> truth,
+                 const EvaluationOptions& options, MethodOutcome* m) const;
 
     const Scene& scene_;
     const RenderBackend& backend_;

@@ -81,6 +81,9 @@ struct Scene {
     std::vector<Camera> cameraPath;   // optional sequence of poses (temporal hysteresis)
     PartitionOptions partitions;      // the partitioned methods' k, λ and texel allocation
     std::vector<CaseMethod> methods;  // the case's own methods
+    // Sub-texel phases every method's errors are averaged over (EvaluationOptions::phases,
+    // sub_texel_phase.h): 1 measures each map once, as computed.
+    int phases = 1;
 };
 
 }  // namespace lexel::spatial

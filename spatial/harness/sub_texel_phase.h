@@ -1,0 +1,37 @@
+// Sub-texel phases: where a shadow map's texel grid sits relative to the scene, within one texel.
+//
+// Moving a map's grid by δ texels (LightMatrix::Shifted, MapWarp::Shifted, a virtual map's
+// VirtualMapLayout::phase, every cascade alike) leaves J = ∂u/∂x, h and every proxy unchanged,
+// yet moves each quantized shadow edge by up to half a texel across itself: on the shipped scenes
+// one light's misclassified pixels vary by 5–15% (coefficient of variation) over δ. A renderer
+// does not choose δ (the camera and light move), so lexel measures a method by its mean over K
+// phases (Evaluator, EvaluationOptions::phases), and counts a difference between two methods only
+// when it exceeds the residual noise of that mean (PhaseNoise).
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+namespace lexel::spatial {
+
+// The most phases a case or command may ask for: each costs one shadow pass and one shading of
+// the frame per method, so 256 bounds a light's evaluation at 256 times a single measurement.
+inline constexpr int kMaxPhases = 256;
+
+// K phases δ_k in [−½, ½)², texels: δ_0 = (0, 0) (the unshifted map, so K = 1 is today's single
+// measurement), then Roberts' R2 low-discrepancy sequence δ_k = frac(½ + k (1/g, 1/g²)) − ½, g the
+// plastic number (g³ = g + 1): any first K cover the square evenly, and a larger K extends a
+// smaller one. std::invalid_argument unless count ≥ 1.
+std::vector<glm::dvec2> SubTexelPhases(int count);
+
+// The mean of per-phase counts and the standard error of that mean: s / √K with s the sample
+// standard deviation over the K phases (0 for K = 1: no estimate).
+struct PhaseMean {
+    double mean = 0.0;
+    double standardError = 0.0;
+};
+PhaseMean MeanOverPhases(std::span<const std::int64_t> perPhase);
+
+}  // namespace lexel::spatial
