@@ -94,13 +94,11 @@ void NoteCpuOnlyMethods(const std::vector<std::string>& methods, BackendKind bac
                       << "'s map is ray-cast on the CPU (a logarithmic warp is no vertex warp)\n";
 }
 
-spatial::Scene LoadSceneWithCascades(const CaseFile& file, int cascades) {
+spatial::Scene LoadSceneWithOverrides(const CaseFile& file, int cascades, int phases) {
     spatial::Scene scene = LoadSpatialScene(file);
     if (cascades > 0) scene.partitions.count = cascades;
+    if (phases > 0) scene.phases = phases;
     return scene;
-}
-spatial::Scene LoadSceneWithCascades(const fs::path& casePath, int cascades) {
-    return LoadSceneWithCascades(ReadCaseFile(casePath), cascades);
 }
 
 }  // namespace lexel::cases

@@ -1,6 +1,6 @@
 // What the `lexel` commands share (cases/app only): choosing and checking methods and the
-// backend from the flags, loading a 3D case with --cascades, prefixing errors with the case's
-// name, and printing a report in the --format chosen.
+// backend from the flags, loading a 3D case with --cascades and --phases, prefixing errors with the
+// case's name, and printing a report in the --format chosen.
 #pragma once
 
 #include <filesystem>
@@ -54,8 +54,7 @@ auto WithCaseName(const std::filesystem::path& casePath, Body body) {
     }
 }
 
-// The case's scene with --cascades applied (0: the case's own count).
-spatial::Scene LoadSceneWithCascades(const CaseFile& file, int cascades);
-spatial::Scene LoadSceneWithCascades(const std::filesystem::path& casePath, int cascades);
+// The case's scene with --cascades and --phases applied (0: the case's own count).
+spatial::Scene LoadSceneWithOverrides(const CaseFile& file, int cascades, int phases);
 
 }  // namespace lexel::cases

@@ -27,6 +27,7 @@ struct RunFlags {
     std::string outDir;            // empty: print only
     bool mapTruth = true;          // 3D: also the report's 4000² truth map
     int cascades = 0;              // 3D: partitions of the partitioned methods; 0: the case's
+    int phases = 0;                // 3D: sub-texel phases errors are averaged over; 0: the case's
     std::string backend = "cpu";   // 3D: cpu | gl
 };
 int RunCommand(const RunFlags& flags);
@@ -39,6 +40,7 @@ struct SweepFlags {
     std::string format = "table";      // table | markdown | csv | json
     std::string outDir;
     int cascades = 0;             // partitions of the partitioned methods; 0: the case's
+    int phases = 0;               // sub-texel phases errors are averaged over; 0: the case's
     std::string backend = "cpu";  // cpu | gl
     std::string shard = "0/1";    // K/N: the lights i with i mod N = K
     bool resume = false;          // continue from the journal of a killed run into outDir

@@ -1,8 +1,8 @@
 // lexel — the command line. Subcommands:
 //   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv]
-//             [--out DIR] [--no-map-truth] [--cascades K]   flatland and 3D cases alike
+//             [--out DIR] [--no-map-truth] [--cascades K] [--phases K]   flatland and 3D
 //   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--method NAME...]
-//             [--cascades K] [--format table|markdown|csv|json]
+//             [--cascades K] [--phases K] [--format table|markdown|csv|json]
 //             [--out DIR] [--shard K/N] [--resume]
 //                                  the 3D report's Table 1, the fair and equal-texel tables
 //   lexel merge DIR... --out DIR [--format ...]   sweep shards joined into one whole sweep
@@ -35,6 +35,7 @@
 #include "lexel/cases/app/commands.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 #include "lexel/spatial/partitions.h"
 
 #ifndef LEXEL_VERSION
@@ -70,6 +71,15 @@ CLI::Option* AddBackend(CLI::App* sub, std::string& backend, const std::string& 
     return sub->add_option("--backend", backend, what)->check(CLI::IsMember({"cpu", "gl"}));
 }
 
+// --phases K: each 3D method's errors averaged over K sub-texel phases of its map(s).
+CLI::Option* AddPhases(CLI::App* sub, int& phases) {
+    return sub
+        ->add_option("--phases", phases,
+                     "3D: average each method's misclassified pixels over K sub-texel shifts of "
+                     "its map(s) (default: the case's phases, or 1)")
+        ->check(CLI::Range(1, lexel::spatial::kMaxPhases));
+}
+
 Command RegisterRun(CLI::App& app) {
     auto* run =
         app.add_subcommand("run", "Run methods on case files and report their footprint metrics");
@@ -90,6 +100,7 @@ Command RegisterRun(CLI::App& app) {
     run->add_option("--cascades", flags->cascades,
                     "3D: partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
         ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
+    AddPhases(run, flags->phases);
     AddBackend(run, flags->backend, "3D cases: the renderer (gl: OpenGL 4.5 via EGL)");
     run->add_flag("--no-map-truth", *noMapTruth,
                   "3D cases: skip the report's focused 4000² truth map (rays are the truth)");
@@ -128,6 +139,7 @@ Command RegisterSweep(CLI::App& app) {
         ->add_option("--cascades", flags->cascades,
                      "Partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
         ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
+    AddPhases(sweep, flags->phases);
     AddBackend(sweep, flags->backend, "The renderer (gl: OpenGL 4.5 via EGL)");
     sweep->add_option("--shard", flags->shard,
                       "K/N: evaluate only the lights i with i mod N = K (K = 0 ... N-1), for a "

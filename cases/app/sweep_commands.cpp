@@ -237,7 +237,7 @@ int SweepCommand(const SweepFlags& flags) {
         throw InputError("--resume: continues a sweep into its --out directory; give --out");
     const fs::path casePath = flags.casePath;
     const CaseFile caseFile = ReadCaseFile(casePath);  // read once: the scene and the identity
-    const spatial::Scene scene = LoadSceneWithCascades(caseFile, flags.cascades);
+    const spatial::Scene scene = LoadSceneWithOverrides(caseFile, flags.cascades, flags.phases);
     const std::vector<std::string> methods = SpatialMethodsOfCase(flags.methods, scene, true);
     const BackendKind backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(methods, backend);
@@ -248,9 +248,14 @@ int SweepCommand(const SweepFlags& flags) {
     const std::vector<std::size_t> indices = ShareOf(lights.size(), shard);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
     if (!flags.outDir.empty()) out.emplace(flags.outDir, SweepOutputPlan(casePath, scene.name));
-    const SweepIdentity identity{scene.name,        Fnv1a64Hex(caseFile.text), methods,
-                                 flags.backend,     scene.partitions.count,    lights.size(),
-                                 LightsHash(lights)};
+    const SweepIdentity identity{.caseName = scene.name,
+                                 .caseHash = Fnv1a64Hex(caseFile.text),
+                                 .methods = methods,
+                                 .backend = flags.backend,
+                                 .cascades = scene.partitions.count,
+                                 .phases = scene.phases,
+                                 .lights = lights.size(),
+                                 .lightsHash = LightsHash(lights)};
     // With --out: the cascade-count study, and the journal of the finished lights.
     const bool withStudy = out && !CascadeStudyMethods(methods).empty();
     const std::vector<int> studyCounts =

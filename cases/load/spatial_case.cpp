@@ -25,6 +25,7 @@
 #include "lexel/spatial/harness/mesh_loader.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/primitives.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 #include "lexel/spatial/light_space.h"
 
 namespace lexel::cases {
@@ -368,7 +369,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     const JsonField root(document, "");
     root.ExpectObject({"camera"},
                       {"name", "description", "lights", "shadow_map", "readback", "geometry",
-                       "generator", "light_sweep", "camera_path", "cascades", "methods"});
+                       "generator", "light_sweep", "camera_path", "cascades", "methods", "phases"});
     spatial::Scene scene;
     scene.name = CaseNameOf(root, fallbackName);
     if (root.Has("description")) root["description"].String();
@@ -396,6 +397,8 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
         scene.lightSweep = lightSweep;
     }
     if (root.Has("cascades")) scene.partitions = ReadPartitions(root["cascades"]);
+    if (root.Has("phases"))
+        scene.phases = static_cast<int>(root["phases"].Integer(1, spatial::kMaxPhases));
     if (root.Has("lights")) {
         const JsonField lights = root["lights"];
         const auto items = lights.Array();

@@ -7,6 +7,7 @@
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/cases/report/sweep_record.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 
 namespace lexel::cases {
 
@@ -51,14 +52,15 @@ SweepShard ParseShardText(const JsonField& field) {
 }
 
 SweepIdentity ParseIdentity(const JsonField& f) {
-    f.ExpectObject(
-        {"case", "case_fnv1a64", "methods", "backend", "cascades", "lights", "lights_fnv1a64"});
+    f.ExpectObject({"case", "case_fnv1a64", "methods", "backend", "cascades", "phases", "lights",
+                    "lights_fnv1a64"});
     SweepIdentity id;
     id.caseName = f["case"].String();
     id.caseHash = f["case_fnv1a64"].String();
     id.methods = Strings(f["methods"]);
     id.backend = f["backend"].String();
     id.cascades = static_cast<int>(f["cascades"].Integer(0, 1 << 20));
+    id.phases = static_cast<int>(f["phases"].Integer(1, spatial::kMaxPhases));
     id.lights = static_cast<std::size_t>(f["lights"].Integer(0, kMaxCount));
     id.lightsHash = f["lights_fnv1a64"].String();
     return id;
@@ -92,6 +94,8 @@ SweepCell ParseCell(const JsonField& f, const nlohmann::json& value) {
     c.pagesResident = x[11].Integer(-1, kMaxCount);
     c.pagesDropped = x[12].Integer(-1, kMaxCount);
     c.lodBias = RecordNumber(x[13], value[13]);
+    c.misclassifiedMean = x[14].NumberIn(0.0, static_cast<double>(kMaxCount), false, false);
+    c.misclassifiedError = x[15].NumberIn(0.0, static_cast<double>(kMaxCount), false, false);
     return c;
 }
 
@@ -126,13 +130,14 @@ SweepLightRecord ParseLight(const JsonField& f, const nlohmann::json& value, std
 }
 
 // The study's misclassified pixels per study method.
-std::vector<std::int64_t> StudyCounts(const JsonField& f, std::size_t studyMethods) {
+std::vector<double> StudyCounts(const JsonField& f, std::size_t studyMethods) {
     const std::vector<JsonField> items = f.Array();
     if (items.size() != studyMethods)
         f.Fail("must have one count per study method (" + std::to_string(studyMethods) + "), got " +
                std::to_string(items.size()));
-    std::vector<std::int64_t> counts;
-    for (const JsonField& item : items) counts.push_back(item.Integer(0, kMaxCount));
+    std::vector<double> counts;  // phase means
+    for (const JsonField& item : items)
+        counts.push_back(item.NumberIn(0.0, static_cast<double>(kMaxCount), false, false));
     return counts;
 }
 

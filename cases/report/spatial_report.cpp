@@ -29,14 +29,36 @@ std::vector<std::string> LightHeaderLines(std::size_t l, const spatial::LightOut
     return lines;
 }
 
+// "mean ± 95% half-width" of a phase mean (sub_texel_phase.h): 1.96 standard errors.
+std::string PhaseMeanText(double mean, double standardError) {
+    return Fixed(mean, 1) + " ± " + Fixed(1.96 * standardError, 1);
+}
+
 TextTable SpatialMethodTable(const spatial::LightOutcome& o) {
-    TextTable table({"method", "misclassified", "false\nshadow", "false\nlight", "uncovered",
-                     "mean\nσ1(J⁻¹)", "max\nσ1(J⁻¹)", "storage\nfactor", "h\n(eq. 6)", "ms"});
-    for (const auto& m : o.methods)
-        table.AddRow({m.method, std::to_string(m.misclassified), std::to_string(m.falseShadow),
-                      std::to_string(m.misclassified - m.falseShadow), std::to_string(m.uncovered),
-                      Significant(m.footprintMean, 4), Significant(m.footprintMax, 4),
-                      Significant(m.storageFactor, 4), Significant(m.h, 6), Fixed(m.ms, 3)});
+    std::vector<std::string> header = {
+        "method",        "misclassified", "false\nshadow",   "false\nlight", "uncovered",
+        "mean\nσ1(J⁻¹)", "max\nσ1(J⁻¹)",  "storage\nfactor", "h\n(eq. 6)",   "ms"};
+    // Over several phases: the mean and its 95% interval beside phase 0's count.
+    const bool phased = o.phases > 1;
+    if (phased)
+        header.insert(header.begin() + 2,
+                      "mean over\n" + std::to_string(o.phases) + " phases\n(95% CI)");
+    TextTable table(header);
+    for (const auto& m : o.methods) {
+        std::vector<std::string> row = {m.method,
+                                        std::to_string(m.misclassified),
+                                        std::to_string(m.falseShadow),
+                                        std::to_string(m.misclassified - m.falseShadow),
+                                        std::to_string(m.uncovered),
+                                        Significant(m.footprintMean, 4),
+                                        Significant(m.footprintMax, 4),
+                                        Significant(m.storageFactor, 4),
+                                        Significant(m.h, 6),
+                                        Fixed(m.ms, 3)};
+        if (phased)
+            row.insert(row.begin() + 2, PhaseMeanText(m.misclassifiedMean, m.misclassifiedError));
+        table.AddRow(row);
+    }
     return table;
 }
 
@@ -193,6 +215,12 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                                      {"storage_factor_p99", m.storageFactorP99},
                                      {"h", FiniteOrNull(m.h)},
                                      {"ms", m.ms}};
+            if (o.phases > 1) {
+                method["phases"] = o.phases;
+                method["misclassified_mean"] = m.misclassifiedMean;
+                method["misclassified_standard_error"] = m.misclassifiedError;
+                method["false_shadow_mean"] = m.falseShadowMean;
+            }
             if (!m.hAfterIteration.empty()) method["h_after_iteration"] = m.hAfterIteration;
             const spatial::Resolution map =
                 m.pages ? spatial::Resolution{m.pages->pageTexels, m.pages->pageTexels}
@@ -248,7 +276,11 @@ std::string SpatialRunCsv(const SpatialRun& run) {
     std::ostringstream csv;
     csv << "light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,"
            "max_footprint,maps,max_perspective_aliasing,storage_factor,pages_requested,"
-           "pages_resident,pages_dropped\n";
+           "pages_resident,pages_dropped";
+    // Over several phases (every light has the case's): the means and the standard error.
+    const bool phased = !run.outcomes.empty() && run.outcomes.front().phases > 1;
+    if (phased) csv << ",phases,misclassified_mean,misclassified_standard_error,false_shadow_mean";
+    csv << '\n';
     for (std::size_t l = 0; l < run.outcomes.size(); ++l)
         for (const auto& m : run.outcomes[l].methods) {
             // A virtual shadow map's maps are its resident pages.
@@ -263,6 +295,9 @@ std::string SpatialRunCsv(const SpatialRun& run) {
                 csv << m.pages->requested << ',' << m.pages->resident << ',' << m.pages->dropped;
             else
                 csv << ",,";
+            if (phased)
+                csv << ',' << run.outcomes[l].phases << ',' << CsvNumber(m.misclassifiedMean) << ','
+                    << CsvNumber(m.misclassifiedError) << ',' << CsvNumber(m.falseShadowMean);
             csv << '\n';
         }
     return csv.str();

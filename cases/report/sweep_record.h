@@ -11,15 +11,16 @@
 namespace lexel::cases {
 
 // The record's format tag and the names of a cell's fields, in the order of its array.
-inline constexpr const char* kSweepRecordFormat = "lexel-sweep-record/1";
-inline constexpr const char* kSweepJournalFormat = "lexel-sweep-journal/1";
-inline constexpr const char* kSweepCellFields[] = {"misclassified",    "h",
-                                                   "h_grazing",        "winner",
-                                                   "footprint_mean",   "footprint_max",
-                                                   "uncovered",        "cascades",
-                                                   "empty_partitions", "storage_factor",
-                                                   "pages_requested",  "pages_resident",
-                                                   "pages_dropped",    "lod_bias"};
+inline constexpr const char* kSweepRecordFormat = "lexel-sweep-record/2";
+inline constexpr const char* kSweepJournalFormat = "lexel-sweep-journal/2";
+inline constexpr const char* kSweepCellFields[] = {"misclassified",      "h",
+                                                   "h_grazing",          "winner",
+                                                   "footprint_mean",     "footprint_max",
+                                                   "uncovered",          "cascades",
+                                                   "empty_partitions",   "storage_factor",
+                                                   "pages_requested",    "pages_resident",
+                                                   "pages_dropped",      "lod_bias",
+                                                   "misclassified_mean", "misclassified_error"};
 
 // sweep-record.json: the identity and header fields one per line, then one line per light (its
 // cells per method, their times apart in "ms", the study's counts per extra k).

@@ -82,7 +82,7 @@ std::vector<std::size_t> WorstLights(const SweepResult& r, std::size_t method) {
     std::vector<std::size_t> order(r.lights.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return r.cells[a][method].misclassified > r.cells[b][method].misclassified;
+        return r.cells[a][method].misclassifiedMean > r.cells[b][method].misclassifiedMean;
     });
     const std::size_t keep = std::max<std::size_t>(1, (r.lights.size() + 5) / 10);
     order.resize(std::min(keep, order.size()));
@@ -97,7 +97,7 @@ struct Row {
 std::vector<double> MeanOver(const SweepResult& r, const std::vector<std::size_t>& lights) {
     std::vector<double> mean(r.methods.size(), 0.0);
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
-        for (std::size_t l : lights) mean[m] += r.cells[l][m].misclassified;
+        for (std::size_t l : lights) mean[m] += r.cells[l][m].misclassifiedMean;
         mean[m] /= std::max<std::size_t>(1, lights.size());
     }
     return mean;
@@ -155,16 +155,62 @@ std::vector<std::string> ReportCells(const ReportTable1& report, const std::stri
     return cells;
 }
 
+// The two-sided 95% quantile of Student's t with `dof` degrees of freedom: exact for 1 and 2,
+// else the Cornish–Fisher expansion about the normal's 1.959964 (within 0.1% for dof ≥ 3).
+double StudentT95(std::size_t dof) {
+    if (dof == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (dof == 1) return 12.7062;
+    if (dof == 2) return 4.3027;
+    const double z = 1.959964, n = static_cast<double>(dof);
+    return z + (z * z * z + z) / (4.0 * n) +
+           (5.0 * std::pow(z, 5) + 16.0 * z * z * z + 3.0 * z) / (96.0 * n * n);
+}
+
+// The 95% half-width of the mean of `values` (t · s / √n); NaN for fewer than 2.
+double HalfWidth95(const std::vector<double>& values) {
+    const std::size_t n = values.size();
+    if (n < 2) return std::numeric_limits<double>::quiet_NaN();
+    const double mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
+    double squares = 0.0;
+    for (double v : values) squares += (v - mean) * (v - mean);
+    return StudentT95(n - 1) * std::sqrt(squares / (n - 1.0) / n);
+}
+
+// Whether two cells of one light differ beyond the noise of their phase means: by more than 1.96
+// standard errors of the difference (independent phase means). With one phase there is no noise
+// estimate and `fallback` decides: any difference (the wins), or one above 2% of the larger
+// count and a pixel (the proxy's orderings, as the audit counted them).
+enum class Unmeasured { kAnyDifference, kTwoPercent };
+bool DiffersBeyondNoise(const SweepCell& a, const SweepCell& b, int phases, Unmeasured fallback) {
+    const double d = std::abs(a.misclassifiedMean - b.misclassifiedMean);
+    if (phases > 1) return d > 1.96 * std::hypot(a.misclassifiedError, b.misclassifiedError);
+    if (fallback == Unmeasured::kAnyDifference) return d > 0.0;
+    return d > std::max(1.0, 0.02 * std::max(a.misclassifiedMean, b.misclassifiedMean));
+}
+
 struct MethodSummary {
     double meanMisclassified = 0.0;
+    double ci95 = std::numeric_limits<double>::quiet_NaN();  // 95% half-width over the lights
+    // The 95% half-width of the paired difference against the reference (per light this −
+    // reference; its mean is the difference of the means) as % of the reference's mean (NaN for
+    // the reference itself).
+    double pairedPercentCi95 = std::numeric_limits<double>::quiet_NaN();
+    double losingPercent = 0.0;  // % of lights where the reference has fewer (beyond the noise)
+    // The residual noise of the per-light phase means: Σ standard errors / Σ means (0 for one
+    // phase).
+    double residualNoise = 0.0;
     double meanH = 0.0;  // over lights where h is finite
     std::int64_t infiniteH = 0;
     double meanMs = 0.0;
-    double beatingPercent = 0.0;  // % of lights with fewer misclassified pixels than the reference
-    // % of the lights where the two differ in misclassified pixels on which h orders this method
-    // and the reference the same way (is h the right proxy?); NaN for the reference itself.
+    // % of lights with fewer misclassified pixels than the reference, beyond the noise
+    // (DiffersBeyondNoise; one phase: any difference).
+    double beatingPercent = 0.0;
+    // % of the lights where the two differ in misclassified pixels (DiffersBeyondNoise; one
+    // phase: by 2% and a pixel) and in h on which h orders this method and the reference the same
+    // way (is h the right proxy?); NaN for the reference itself or when no light qualifies.
     double hAgreesPercent = std::numeric_limits<double>::quiet_NaN();
-    double grazingShare = 0.0;         // mean over lights of the part of h from grazing samples
+    // Mean over the lights with 0 < h < inf of the part of h from grazing samples.
+    double grazingShare = 0.0;
     double meanFootprint = 0.0;        // mean over lights of the per-pixel mean σ₁(J⁻¹)
     double maxFootprint = 0.0;         // max over lights and pixels
     double meanUncovered = 0.0;        // counted pixels no map covers, mean per light
@@ -182,18 +228,49 @@ struct MethodSummary {
     double meanLodBias = std::numeric_limits<double>::quiet_NaN();
 };
 
+// Whether h ranks two cells at all: both finite and not equal (a tie at h = 0, lights without
+// boundary samples, orders nothing).
+bool HOrders(const SweepCell& a, const SweepCell& b) {
+    return std::isfinite(a.h) && std::isfinite(b.h) && a.h != b.h;
+}
+
+// The means over lights, their 95% half-width, and the paired difference against the reference.
+void SummarizeMeans(const SweepResult& r, std::size_t m, std::size_t reference,
+                    MethodSummary* out) {
+    std::vector<double> values, differences;
+    double refSum = 0.0, errors = 0.0;
+    for (const auto& light : r.cells) {
+        values.push_back(light[m].misclassifiedMean);
+        differences.push_back(light[m].misclassifiedMean - light[reference].misclassifiedMean);
+        refSum += light[reference].misclassifiedMean;
+        errors += light[m].misclassifiedError;
+    }
+    const double sum = std::accumulate(values.begin(), values.end(), 0.0);
+    out->ci95 = HalfWidth95(values);
+    const double refMean = refSum / static_cast<double>(std::max<std::size_t>(1, values.size()));
+    if (m != reference && refMean > 0.0)
+        out->pairedPercentCi95 = 100.0 * HalfWidth95(differences) / refMean;
+    out->residualNoise = sum > 0.0 ? errors / sum : 0.0;
+}
+
 MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t reference) {
     MethodSummary out;
-    std::size_t finite = 0, beating = 0, differ = 0, agree = 0;
+    SummarizeMeans(r, m, reference, &out);
+    std::size_t finite = 0, positive = 0, beating = 0, losing = 0, differ = 0, agree = 0;
     for (const auto& light : r.cells) {
         const SweepCell& c = light[m];
         const SweepCell& ref = light[reference];
-        if (m != reference && c.misclassified != ref.misclassified) {
+        const bool beyond = DiffersBeyondNoise(c, ref, r.phases, Unmeasured::kAnyDifference);
+        if (m != reference && HOrders(c, ref) &&
+            DiffersBeyondNoise(c, ref, r.phases, Unmeasured::kTwoPercent)) {
             ++differ;
-            agree += (c.h < ref.h) == (c.misclassified < ref.misclassified);
+            agree += (c.h < ref.h) == (c.misclassifiedMean < ref.misclassifiedMean);
         }
-        if (std::isfinite(c.h) && c.h > 0.0) out.grazingShare += c.hGrazing / c.h;
-        out.meanMisclassified += c.misclassified;
+        if (std::isfinite(c.h) && c.h > 0.0) {
+            out.grazingShare += c.hGrazing / c.h;
+            ++positive;
+        }
+        out.meanMisclassified += c.misclassifiedMean;
         if (std::isfinite(c.h)) {
             out.meanH += c.h;
             ++finite;
@@ -201,7 +278,8 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
             ++out.infiniteH;
         }
         out.meanMs += c.ms;
-        beating += c.misclassified < light[reference].misclassified;
+        beating += beyond && c.misclassifiedMean < ref.misclassifiedMean;
+        losing += beyond && c.misclassifiedMean > ref.misclassifiedMean;
         out.meanFootprint += c.footprintMean;
         out.maxFootprint = std::max(out.maxFootprint, c.footprintMax);
         out.meanUncovered += static_cast<double>(c.uncovered);
@@ -224,8 +302,9 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
     out.meanFootprint /= lights;
     out.meanUncovered /= lights;
     out.beatingPercent = 100.0 * beating / lights;
+    out.losingPercent = 100.0 * losing / lights;
     if (differ) out.hAgreesPercent = 100.0 * agree / differ;
-    out.grazingShare = finite ? out.grazingShare / finite : 0.0;
+    out.grazingShare = positive ? out.grazingShare / positive : 0.0;
     if (!r.cells.empty() && r.cells.front()[m].pagesRequested >= 0) {
         double requested = 0.0, resident = 0.0, dropped = 0.0, bias = 0.0;
         for (const auto& light : r.cells) {
@@ -275,19 +354,31 @@ std::string PercentCell(double pct, bool isReference) {
     return isReference ? "0" : (pct >= 0 ? "+" : "") + Fixed(pct, 2) + "%";
 }
 
+// "mean ± 95% half-width" (the half-width left out when there is none).
+std::string MeanCell(double mean, double ci95) {
+    return std::isfinite(ci95) ? Fixed(mean, 1) + " ± " + Fixed(ci95, 1) : Fixed(mean, 1);
+}
+// The % against the reference with its paired 95% half-width.
+std::string PairedCell(double pct, double ci95, bool isReference) {
+    if (isReference || !std::isfinite(ci95)) return PercentCell(pct, isReference);
+    return (pct >= 0 ? "+" : "") + Fixed(pct, 2) + " ± " + Fixed(ci95, 2) + "%";
+}
+
 // Mean misclassified, % more than the reference, % of lights beating it, mean h and time.
 TextTable SummaryTable(const SweepResult& r, const View& view) {
-    TextTable table({"method", "mean\nmisclassified", "% more\nthan ref", "% lights\nbeating\nref",
-                     "mean h\n(eq. 6)", "lights\nwith\nh = inf", "h orders\nas errors",
-                     "grazing\nshare\nof h", "median\nstorage\nfactor", "mean ms\nper light"});
+    TextTable table({"method", "mean\nmisclassified\n(95% CI)", "% more\nthan ref\n(95% CI)",
+                     "% lights\nbeating\nref", "% lights\nref\nbeats", "mean h\n(eq. 6)",
+                     "lights\nwith\nh = inf", "h orders\nas errors", "grazing\nshare\nof h",
+                     "median\nstorage\nfactor", "mean ms\nper light"});
     const MethodSummary reference = Summarize(r, view.reference, view.reference);
     for (std::size_t m : view.methods) {
         const MethodSummary s = Summarize(r, m, view.reference);
         const bool isReference = m == view.reference;
-        table.AddRow({r.methods[m], Fixed(s.meanMisclassified, 1),
-                      PercentCell(PercentMore(s.meanMisclassified, reference.meanMisclassified),
-                                  isReference),
-                      isReference ? "–" : Fixed(s.beatingPercent, 0) + "%", Significant(s.meanH, 5),
+        table.AddRow({r.methods[m], MeanCell(s.meanMisclassified, s.ci95),
+                      PairedCell(PercentMore(s.meanMisclassified, reference.meanMisclassified),
+                                 s.pairedPercentCi95, isReference),
+                      isReference ? "–" : Fixed(s.beatingPercent, 0) + "%",
+                      isReference ? "–" : Fixed(s.losingPercent, 0) + "%", Significant(s.meanH, 5),
                       std::to_string(s.infiniteH),
                       std::isnan(s.hAgreesPercent) ? "–" : Fixed(s.hAgreesPercent, 0) + "%",
                       Fixed(100.0 * s.grazingShare, 0) + "%", Significant(s.medianStorage, 4),
@@ -302,9 +393,10 @@ TextTable SummaryTable(const SweepResult& r, const View& view) {
 TextTable EqualTexelTable(const SweepResult& r, const View& view, bool terminal) {
     std::vector<std::string> header = {"method",
                                        "maps",
-                                       "mean\nmisclassified",
-                                       "% more\nthan ref",
+                                       "mean\nmisclassified\n(95% CI)",
+                                       "% more\nthan ref\n(95% CI)",
                                        "% lights\nbeating\nref",
+                                       "% lights\nref\nbeats",
                                        "mean\nσ1(J⁻¹)",
                                        "max\nσ1(J⁻¹)",
                                        "uncovered\npixels\n(mean)",
@@ -312,7 +404,7 @@ TextTable EqualTexelTable(const SweepResult& r, const View& view, bool terminal)
                                        "median\nstorage\nfactor",
                                        "mean h\n(eq. 6)",
                                        "mean ms\nper light"};
-    constexpr std::size_t kMaxFootprintColumn = 6;
+    constexpr std::size_t kMaxFootprintColumn = 7;
     if (terminal) header.erase(header.begin() + kMaxFootprintColumn);
     TextTable table(header);
     const MethodSummary reference = Summarize(r, view.reference, view.reference);
@@ -322,9 +414,11 @@ TextTable EqualTexelTable(const SweepResult& r, const View& view, bool terminal)
         std::vector<std::string> row = {
             r.methods[m],
             std::to_string(s.cascades),
-            Fixed(s.meanMisclassified, 1),
-            PercentCell(PercentMore(s.meanMisclassified, reference.meanMisclassified), isReference),
+            MeanCell(s.meanMisclassified, s.ci95),
+            PairedCell(PercentMore(s.meanMisclassified, reference.meanMisclassified),
+                       s.pairedPercentCi95, isReference),
             isReference ? "–" : Fixed(s.beatingPercent, 0) + "%",
+            isReference ? "–" : Fixed(s.losingPercent, 0) + "%",
             Significant(s.meanFootprint, 4),
             Significant(s.maxFootprint, 4),
             Fixed(s.meanUncovered, 1),
@@ -352,14 +446,38 @@ std::string Lights(const SweepResult& r) {
 
 // What the summary tables' columns mean (every section that has one says it).
 constexpr const char* kSummaryColumns =
-    "Columns: the mean misclassified pixels per light; how many % more than the reference (ref); "
-    "the % of lights on which the method misclassifies fewer pixels than the reference; the mean "
-    "energy h of the report's eq. (6), which Algorithm 1 minimizes (over the lights where it is "
-    "finite), and the lights where it is infinite; h orders as errors: of the lights where the "
-    "method and the reference misclassify different counts, the % on which h ranks them the same "
-    "way (is h the right proxy?); the part of h from boundary samples the light grazes; Lloyd et "
-    "al. 2006's storage factor as measured (median over the lights); the time to compute the "
-    "light matrix.";
+    "Columns: the mean misclassified pixels per light with its 95% confidence interval over the "
+    "lights; how many % more than the reference (ref), with the 95% interval of the paired "
+    "per-light difference; the % of lights on which the method misclassifies fewer pixels than "
+    "the reference, and more, each counting only differences beyond the phase noise (see "
+    "below); the mean energy h of the report's eq. (6), which Algorithm 1 minimizes (over the "
+    "lights where it is finite), and the lights where it is infinite; h orders as errors: of "
+    "the lights where the method and the reference differ in h and in misclassified pixels "
+    "beyond the noise, the % on which h ranks them the same way (is h the right proxy?); the "
+    "part of h from boundary samples the light grazes (mean over the lights with 0 < h < inf); "
+    "Lloyd et al. 2006's storage factor as measured (median over the lights); the time to "
+    "compute the light matrix.";
+
+// What "beyond the noise" means for this sweep, and how large the noise is.
+std::string PhaseNote(const SweepResult& r) {
+    if (r.phases <= 1)
+        return "Each light's count is one measurement of each map (one sub-texel phase; "
+               "--phases K averages K): a phase alone moves a light's count by 5-15%, so the "
+               "wins count any difference and the h orderings differences above 2% and a pixel, "
+               "and neither is beyond the noise.";
+    double errors = 0.0, sum = 0.0;
+    for (const auto& light : r.cells)
+        for (const SweepCell& c : light) {
+            errors += c.misclassifiedError;
+            sum += c.misclassifiedMean;
+        }
+    return "Each light's count is the mean over " + std::to_string(r.phases) +
+           " sub-texel phases of its map(s); its residual noise (standard error over mean, "
+           "summed over lights and methods) is " +
+           Fixed(sum > 0.0 ? 100.0 * errors / sum : 0.0, 2) +
+           "%. A light counts as a win or loss (and as ordered by h) only where the two "
+           "methods' means differ by more than 1.96 standard errors of their difference.";
+}
 
 std::vector<ReportSection> ReportSections(const SweepResult& r, const View& view,
                                           const ReportTable1& report) {
@@ -393,7 +511,7 @@ std::vector<ReportSection> ReportSections(const SweepResult& r, const View& view
         "The report's methods summarized: " + r.caseName + ", " + Lights(r) + "; ref = " + ref,
         kSummaryColumns,
         SummaryTable(r, view),
-        {}};
+        {PhaseNote(r)}};
     return {std::move(table1), std::move(summary)};
 }
 
@@ -406,7 +524,7 @@ ReportSection FairSection(const SweepResult& r, const View& view) {
         "points and the same 2% margin, and optimal searches from every baseline's start. " +
             std::string(kSummaryColumns),
         SummaryTable(r, view),
-        {}};
+        {PhaseNote(r)}};
 }
 
 ReportSection EqualTexelSection(const SweepResult& r, const View& view, bool terminal) {
@@ -422,7 +540,7 @@ ReportSection EqualTexelSection(const SweepResult& r, const View& view, bool ter
         "undersamples the view), the counted pixels no map covers (mean per light), and the "
         "partitions that served no visible point (summed over the lights).",
         EqualTexelTable(r, view, terminal),
-        {}};
+        {PhaseNote(r)}};
     if (terminal) section.notes.push_back("max σ1(J⁻¹): in --format csv, json and markdown.");
     return section;
 }
@@ -477,9 +595,13 @@ nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) 
         doc["methods"].push_back(
             {{"method", r.methods[m]},
              {"mean_misclassified", s.meanMisclassified},
+             {"mean_misclassified_ci95", FiniteOrNull(s.ci95)},
              {"percent_more",
               FiniteOrNull(PercentMore(s.meanMisclassified, reference.meanMisclassified))},
+             {"percent_more_ci95", FiniteOrNull(s.pairedPercentCi95)},
              {"percent_lights_beating_reference", s.beatingPercent},
+             {"percent_lights_reference_beats", s.losingPercent},
+             {"residual_noise", s.residualNoise},
              {"mean_h", FiniteOrNull(s.meanH)},
              {"lights_with_infinite_h", s.infiniteH},
              {"percent_lights_h_ranks_as_misclassified", FiniteOrNull(s.hAgreesPercent)},
@@ -527,7 +649,8 @@ std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
     std::ostringstream out;
     out << "table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,"
            "mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,"
-           "mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor\n";
+           "mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor,"
+           "mean_misclassified_ci95,percent_more_ci95,percent_lights_reference_beats,phases\n";
     const auto write = [&](const char* table, const View& view, const std::vector<Row>& rows) {
         const bool published = r.methods[view.reference] == "optimal-report";
         for (const Row& row : rows) {
@@ -548,9 +671,11 @@ std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
                 if (row.set == "all")
                     out << ',' << CsvNumber(s.meanFootprint) << ',' << CsvNumber(s.maxFootprint)
                         << ',' << CsvNumber(s.meanUncovered) << ',' << s.emptyPartitions << ','
-                        << CsvNumber(s.medianStorage) << ',' << CsvNumber(s.maxStorage);
+                        << CsvNumber(s.medianStorage) << ',' << CsvNumber(s.maxStorage) << ','
+                        << CsvNumber(s.ci95) << ',' << CsvNumber(s.pairedPercentCi95) << ','
+                        << CsvNumber(s.losingPercent) << ',' << r.phases;
                 else
-                    out << ",,,,,,";
+                    out << ",,,,,,,,,";
                 out << '\n';
             }
         }
@@ -566,6 +691,7 @@ nlohmann::json SweepJson(const SweepResult& r) {
     nlohmann::json doc;
     doc["case"] = r.caseName;
     doc["lights"] = r.lights.size();
+    doc["phases"] = r.phases;
     if (const auto view = ReportView(r)) doc["report_table"] = ViewJson(r, *view, true);
     if (const auto view = FairView(r)) doc["fair_table"] = ViewJson(r, *view, false);
     if (const auto view = EqualTexelView(r)) doc["equal_texel_table"] = ViewJson(r, *view, false);
@@ -587,6 +713,8 @@ std::string SweepLightsCsv(const SweepResult& r) {
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
         const std::string& name = r.methods[m];
         perLight << ',' << name << "_misclassified," << name << "_h," << name << "_ms";
+        if (r.phases > 1)
+            perLight << ',' << name << "_misclassified_mean," << name << "_misclassified_se";
         if (hasWinner(m)) perLight << ',' << name << "_winner";
         if (hasPages(m))
             perLight << ',' << name << "_pages_requested," << name << "_pages_resident," << name
@@ -603,6 +731,9 @@ std::string SweepLightsCsv(const SweepResult& r) {
         for (std::size_t m = 0; m < r.methods.size(); ++m) {
             const SweepCell& c = r.cells[l][m];
             perLight << ',' << c.misclassified << ',' << CsvNumber(c.h) << ',' << CsvNumber(c.ms);
+            if (r.phases > 1)
+                perLight << ',' << CsvNumber(c.misclassifiedMean) << ','
+                         << CsvNumber(c.misclassifiedError);
             if (hasWinner(m)) perLight << ',' << c.winner;
             if (hasPages(m))
                 perLight << ',' << c.pagesRequested << ',' << c.pagesResident << ','

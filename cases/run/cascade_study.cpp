@@ -11,7 +11,7 @@ constexpr int kCounts[] = {1, 2, 4, 8};
 
 double MeanMisclassified(const SweepResult& r, std::size_t method) {
     double sum = 0.0;
-    for (const auto& light : r.cells) sum += static_cast<double>(light[method].misclassified);
+    for (const auto& light : r.cells) sum += light[method].misclassifiedMean;
     return r.cells.empty() ? 0.0 : sum / static_cast<double>(r.cells.size());
 }
 
@@ -82,7 +82,7 @@ CascadeCountStudy RunCascadeCountStudy(const spatial::Scene& scene, const SweepR
         auto& perLight = extra.emplace_back();
         for (const auto& cells : r.cells) {
             perLight.emplace_back();
-            for (const SweepCell& c : cells) perLight.back().push_back(c.misclassified);
+            for (const SweepCell& c : cells) perLight.back().push_back(c.misclassifiedMean);
         }
     }
     return CascadeStudyOf(sweep, scene.partitions.count, extra);

@@ -30,7 +30,7 @@ std::vector<int> CascadeStudyExtraCounts(int sweepCount);
 
 // The study methods' misclassified pixels per extra count (CascadeStudyExtraCounts' order), light
 // of the sweep and study method (CascadeStudyMethods' order): [count][light][method].
-using StudyMisclassified = std::vector<std::vector<std::vector<std::int64_t>>>;
+using StudyMisclassified = std::vector<std::vector<std::vector<double>>>;
 
 // The study from `sweep` (run at `sweepCount`) and the extra counts' sweeps: the means are taken
 // over the lights in their order, so equal inputs give equal bits.

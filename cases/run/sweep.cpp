@@ -75,8 +75,10 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     }
     r.cells.assign(lights.size(), std::vector<SweepCell>(methods.size()));
     r.receiverPixels.assign(lights.size(), 0);
+    r.phases = scene.phases;
     spatial::EvaluationOptions options;
     options.methods = methods;
+    options.phases = scene.phases;
     // Lights in batches of what the memory budget holds at once; with the usual sizes one batch of
     // all lights, evaluated in parallel as they come.
     const auto batch = static_cast<std::size_t>(LightsInFlight(scene, methods.size()));
@@ -108,6 +110,8 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                                  std::max(1, static_cast<int>(o.cascades.size())),
                                  o.emptyPartitions,
                                  o.storageFactor};
+                r.cells[l][m].misclassifiedMean = o.misclassifiedMean;
+                r.cells[l][m].misclassifiedError = o.misclassifiedError;
                 if (o.pages) {
                     SweepCell& c = r.cells[l][m];
                     c.cascades = static_cast<int>(o.pages->resident);

@@ -31,6 +31,9 @@ struct SweepCell {
     // for the other methods.
     std::int64_t pagesRequested = -1, pagesResident = -1, pagesDropped = -1;
     double lodBias = 0.0;
+    // Over the scene's sub-texel phases (MethodOutcome::misclassifiedMean): the mean misclassified
+    // pixels and its standard error (0 for one phase); `misclassified` is phase 0's count.
+    double misclassifiedMean = 0.0, misclassifiedError = 0.0;
 };
 
 struct SweepResult {
@@ -43,6 +46,7 @@ struct SweepResult {
     std::vector<std::vector<SweepCell>> cells;  // [light][method]
     std::vector<std::int64_t> receiverPixels;   // per light
     double seconds = 0.0;                       // wall time of the whole sweep
+    int phases = 1;  // the sub-texel phases each cell's mean is over (Scene::phases)
 };
 
 // The lights of the sweep: the case's light_sweep, its count overridden by `lights` when > 0 and

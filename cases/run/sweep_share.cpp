@@ -75,6 +75,8 @@ std::string IdentityDifference(const SweepIdentity& a, const SweepIdentity& b) {
     if (a.backend != b.backend) return differ("backend", a.backend, b.backend);
     if (a.cascades != b.cascades)
         return differ("cascades", std::to_string(a.cascades), std::to_string(b.cascades));
+    if (a.phases != b.phases)
+        return differ("phases", std::to_string(a.phases), std::to_string(b.phases));
     if (a.lights != b.lights)
         return differ("number of lights", std::to_string(a.lights), std::to_string(b.lights));
     if (a.lightsHash != b.lightsHash)
@@ -103,6 +105,7 @@ SweepResult RunSweepShare(const spatial::Scene& scene, const std::vector<std::st
     SweepResult r;
     r.caseName = scene.name;
     r.methods = methods;
+    r.phases = scene.phases;
     r.seconds = fresh.seconds;
     std::size_t next = 0;  // the next of `fresh`
     for (std::size_t i : indices) {
@@ -141,8 +144,8 @@ StudyMisclassified RunStudyShare(const spatial::Scene& scene, const SweepResult&
         RunSweep(
             atK, methods, pendingLights,
             [&](std::size_t l, const std::vector<SweepCell>& cells, std::int64_t) {
-                std::vector<std::int64_t>& counts = perLight[pending[l]];
-                for (const SweepCell& c : cells) counts.push_back(c.misclassified);
+                std::vector<double>& counts = perLight[pending[l]];
+                for (const SweepCell& c : cells) counts.push_back(c.misclassifiedMean);
                 if (onLightDone) onLightDone({k, share.indices[pending[l]], counts});
             },
             backend, pendingIndices);
@@ -167,6 +170,7 @@ SweepResult ResultOf(const SweepRecord& record) {
     SweepResult r;
     r.caseName = record.identity.caseName;
     r.methods = record.identity.methods;
+    r.phases = record.identity.phases;
     r.seconds = record.seconds;
     for (const SweepLightRecord& light : record.lights) {
         r.indices.push_back(light.index);

@@ -30,13 +30,15 @@ std::string ShardText(SweepShard shard);  // "K/N"
 std::vector<std::size_t> ShardLights(std::size_t lights, SweepShard shard);
 
 // What makes two runs parts of one sweep: the case (its name and the FNV-1a 64 hash of the case
-// file's bytes), the methods in order, the backend, the partitioned methods' count and the whole
-// sweep's lights (their number and the hash of their shortest round-trip coordinates).
+// file's bytes), the methods in order, the backend, the partitioned methods' count, the sub-texel
+// phases and the whole sweep's lights (their number and the hash of their shortest round-trip
+// coordinates).
 struct SweepIdentity {
     std::string caseName, caseHash;
     std::vector<std::string> methods;
     std::string backend;
     int cascades = 0;
+    int phases = 1;  // Scene::phases
     std::size_t lights = 0;
     std::string lightsHash;
     bool operator==(const SweepIdentity&) const = default;
@@ -59,8 +61,8 @@ struct SweepLightRecord {
 // One light of the cascade-count study at one of its extra counts (CascadeStudyExtraCounts).
 struct StudyLightRecord {
     int count = 0;
-    std::size_t index = 0;                    // the light's, in the whole sweep
-    std::vector<std::int64_t> misclassified;  // per study method (CascadeStudyMethods)
+    std::size_t index = 0;              // the light's, in the whole sweep
+    std::vector<double> misclassified;  // per study method (CascadeStudyMethods): phase means
 };
 
 // The lights a killed run finished (its journal).

@@ -485,7 +485,7 @@ expect_run(0 "\nworst 10% by optimal-report [^\n]*\n  published \\(report\\) +30
 # counts.
 expect_run(0 "^## Table 1 as published [^\n]*spatial_small, 3 point lights[^\n]*\n\nThe report's experiment [^\n]*\n\n\\| lights \\| optimal-report \\| focused \\| lispsm \\| plane-optimal \\| normal \\| psm \\| tsm-report \\|\n.*\\|   published \\(report\\) \\| 1886057 \\(0\\) \\|.*\nRows \"published \\(report\\)\" are the report's own Table 1 as printed: absolute counts summed over its 500 lights[^\n]*\n\nNo worst-10% rows: they need at least 20 lights \\(this sweep has 3[^\n]*\n.*## The fair comparison [^\n]*\n\nEvery method gets [^\n]*\n\n\\| method \\|"
            "^$" sweep "${small}" --lights 3 --format markdown)
-expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor\nreport,all,optimal-report,[0-9.]+,0,.*\nfair,all,optimal,[0-9.]+,0,"
+expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor,mean_misclassified_ci95,percent_more_ci95,percent_lights_reference_beats,phases\nreport,all,optimal-report,[0-9.]+,0,.*\nfair,all,optimal,[0-9.]+,0,"
            "^$" sweep "${small}" --lights 3 --format csv)
 expect_run(0 "^Table 1 as published .*\nThe fair comparison .*\nsweep: [0-9.]+ s for 3 lights\n$" "^$"
            sweep "${small}" --lights 3)
@@ -532,7 +532,7 @@ expect_run(0 "\"method\": \"psm\"" "^$" sweep "${small}" --lights 2 --method psm
 
 # Partitioned methods: the equal-texel table; --out adds the cascade-count study (k = 1, 2, 4, 8)
 # as CSV and a plot, and the first light's images with one map per cascade.
-expect_run(0 "\nEqual texels [^\n]*\n  spatial_small, 3 point lights; ref = optimal\n[^\n]*\n[^\n]*\nmethod +maps +misclassified +than ref[^\n]*\n-+\noptimal +1 [^\n]*\nsdsm +2 [^\n]*\nsdsm-optimal +2 "
+expect_run(0 "\nEqual texels [^\n]*\n  spatial_small, 3 point lights; ref = optimal\n[^\n]*\n[^\n]*\nmethod +maps +\\(95% CI\\) +\\(95% CI\\)[^\n]*\n-+\noptimal +1 [^\n]*\nsdsm +2 [^\n]*\nsdsm-optimal +2 "
            "^lexel: wrote index.html, table1.md, table1.csv, sweep.json, lights.csv, sweep-record.json, cascades.csv, cascades.png and 8 images of the first light to [^\n]*\n$"
            sweep "${small}" --lights 3 --methods optimal --methods sdsm --methods sdsm-optimal
            --cascades 2 --out "${WORK}/cascades")

@@ -31,6 +31,7 @@ SweepResult SmallSweep(std::size_t lights, std::string caseName) {
         std::vector<SweepCell> cells(r.methods.size());
         for (std::size_t m = 0; m < cells.size(); ++m) {
             cells[m].misclassified = static_cast<std::int64_t>(10 * (m + 1) + l);
+            cells[m].misclassifiedMean = static_cast<double>(cells[m].misclassified);
             cells[m].h = 5.0 * (m + 1);
             cells[m].cascades = r.methods[m] == "sdsm" ? 4 : 1;
         }

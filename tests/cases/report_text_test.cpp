@@ -5,6 +5,7 @@
 // as the same double.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -211,6 +213,7 @@ SweepResult WideSweep(std::size_t lights) {
         for (std::size_t m = 0; m < r.methods.size(); ++m) {
             SweepCell c;
             c.misclassified = static_cast<std::int64_t>(100000 + 7919 * ((l * 31 + m * 17) % 97));
+            c.misclassifiedMean = static_cast<double>(c.misclassified);
             c.h = 123456.789 * (m + 1);
             c.ms = 1234.5678;
             c.footprintMean = 12.3456;
@@ -308,6 +311,88 @@ TEST(SweepTable, MarkdownSaysWhatEachTableMeans) {
         << markdown;
     EXPECT_EQ(explained, headings) << markdown;
     EXPECT_NE(markdown.find("| max σ1(J⁻¹) |"), std::string::npos);  // terminal-only cut
+}
+
+// A two-method fair sweep (optimal, lispsm-tight) from per-light (misclassified mean, standard
+// error, h, grazing part of h) for each method.
+struct CellSpec {
+    double mean, error, h, hGrazing;
+};
+SweepResult FairSweep(const std::vector<std::array<CellSpec, 2>>& lights, int phases) {
+    SweepResult r;
+    r.caseName = "demo";
+    r.methods = {"optimal", "lispsm-tight"};
+    r.phases = phases;
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        spatial::Light light;
+        light.position = {1.0 + static_cast<double>(l), 40.0, 2.0};
+        r.lights.push_back(light);
+        r.indices.push_back(l);
+        r.receiverPixels.push_back(1000);
+        std::vector<SweepCell> cells;
+        for (const CellSpec& spec : lights[l]) {
+            SweepCell c;
+            c.misclassified = static_cast<std::int64_t>(spec.mean);
+            c.misclassifiedMean = spec.mean;
+            c.misclassifiedError = spec.error;
+            c.h = spec.h;
+            c.hGrazing = spec.hGrazing;
+            cells.push_back(c);
+        }
+        r.cells.push_back(cells);
+    }
+    return r;
+}
+
+const nlohmann::json& FairEntry(const nlohmann::json& doc, const std::string& method) {
+    for (const nlohmann::json& m : doc["fair_table"]["methods"])
+        if (m["method"] == method) return m;
+    throw std::runtime_error("no " + method);
+}
+
+// Issue 25's report bugs: the grazing share of h averaged only over lights with 0 < h < inf (a
+// light without boundary samples has h = 0 and no share), and "h orders as errors" counting
+// neither a tie in h (both 0) nor a difference within the noise (one phase: under 2% or a pixel).
+TEST(SweepReport, GrazingShareAndHOrderingsSkipLightsWithoutOrder) {
+    const SweepResult r = FairSweep({{{{0, 0, 0.0, 0.0}, {0, 0, 0.0, 0.0}}},        // no samples
+                                     {{{100, 0, 10.0, 5.0}, {150, 0, 20.0, 5.0}}},  // h agrees
+                                     {{{200, 0, 10.0, 2.5}, {201, 0, 30.0, 3.0}}},  // one pixel
+                                     {{{50, 0, 10.0, 0.0}, {40, 0, 5.0, 0.0}}}},    // h agrees
+                                    1);
+    const nlohmann::json doc = SweepJson(r);
+    const nlohmann::json& optimal = FairEntry(doc, "optimal");
+    // (0.5 + 0.25 + 0) / 3, light 0 left out.
+    EXPECT_DOUBLE_EQ(optimal["h_share_at_grazing_samples"].get<double>(), 0.25);
+    const nlohmann::json& lispsm = FairEntry(doc, "lispsm-tight");
+    // Lights 1 and 3 qualify, and h orders both right; light 0 ties, light 2 is one pixel.
+    EXPECT_DOUBLE_EQ(lispsm["percent_lights_h_ranks_as_misclassified"].get<double>(), 100.0);
+    // One phase: any difference is a win or a loss (lights 1, 2 lost, 3 won).
+    EXPECT_DOUBLE_EQ(lispsm["percent_lights_beating_reference"].get<double>(), 25.0);
+    EXPECT_DOUBLE_EQ(lispsm["percent_lights_reference_beats"].get<double>(), 50.0);
+}
+
+// With phases, a win counts only beyond 1.96 standard errors of the difference.
+TEST(SweepReport, WinsCountOnlyBeyondThePhaseNoise) {
+    // Differences 10 with errors (3, 4): 10 > 1.96 · 5 = 9.8, a win; 9 is not; 20 is a loss.
+    const SweepResult r = FairSweep({{{{100, 3, 1.0, 0.0}, {90, 4, 2.0, 0.0}}},
+                                     {{{100, 3, 1.0, 0.0}, {91, 4, 2.0, 0.0}}},
+                                     {{{100, 3, 1.0, 0.0}, {120, 4, 2.0, 0.0}}}},
+                                    16);
+    const nlohmann::json doc = SweepJson(r);
+    EXPECT_EQ(doc["phases"], 16);
+    const nlohmann::json& lispsm = FairEntry(doc, "lispsm-tight");
+    EXPECT_NEAR(lispsm["percent_lights_beating_reference"].get<double>(), 100.0 / 3.0, 1e-12);
+    EXPECT_NEAR(lispsm["percent_lights_reference_beats"].get<double>(), 100.0 / 3.0, 1e-12);
+    // h (1 vs 2) orders light 0 wrongly and light 2 rightly; light 1 is within the noise.
+    EXPECT_DOUBLE_EQ(lispsm["percent_lights_h_ranks_as_misclassified"].get<double>(), 50.0);
+    // Means 100 and 100.33; the paired differences (−10, −9, +20) have s = √(1742/6) = 17.0392,
+    // t(2) = 4.3027: half-width 4.3027 · 17.0392 / √3 = 42.328, as % of 100.
+    EXPECT_NEAR(lispsm["percent_more_ci95"].get<double>(), 42.328, 0.001);
+    EXPECT_NEAR(lispsm["mean_misclassified"].get<double>(), 301.0 / 3.0, 1e-12);
+    // The residual noise: Σ errors / Σ means = 12 / 301.
+    EXPECT_NEAR(lispsm["residual_noise"].get<double>(), 12.0 / 301.0, 1e-12);
+    const std::string text = SweepTable(r, PublishedTable1());
+    EXPECT_NE(text.find("mean over 16 sub-texel phases"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -170,7 +170,11 @@ TEST(SpatialCase, BadFieldsAreNamed) {
     EXPECT_EQ(ErrorForText("[]"), "/: must be an object, got an array");
     EXPECT_EQ(add("/colour", "1"),
               "/colour: unknown key (allowed here: camera, name, description, lights, shadow_map, "
-              "readback, geometry, generator, light_sweep, camera_path, cascades, methods)");
+              "readback, geometry, generator, light_sweep, camera_path, cascades, methods, "
+              "phases)");
+    EXPECT_EQ(add("/phases", "0"), "/phases: must be in [1, 256], got 0");
+    EXPECT_EQ(add("/phases", "257"), "/phases: must be in [1, 256], got 257");
+    EXPECT_EQ(add("/phases", "2.5"), "/phases: must be an integer, got 2.5");
     EXPECT_EQ(
         add("/camera/zoom", "2"),
         "/camera/zoom: unknown key (allowed here: position, target, fov_y_deg, width, height, "

@@ -36,13 +36,22 @@ SweepCell AwkwardCell(std::int64_t k) {
     c.pagesResident = k == 2 ? 10 : -1;
     c.pagesDropped = k == 2 ? 2 : -1;
     c.lodBias = 0.125;
+    c.misclassifiedMean = 1000.0 + static_cast<double>(k) + 1.0 / 7.0;  // a phase mean
+    c.misclassifiedError = k == 1 ? 0.0 : 0.1 + 1e-17 * static_cast<double>(k);
     return c;
 }
 
 // A whole sweep's record: `lights` lights of two methods, one study count.
 SweepRecord WholeRecord(std::size_t lights) {
     SweepRecord r;
-    r.identity = {"demo", "0123456789abcdef", {"optimal", "sdsm"}, "cpu", 2, lights, ""};
+    r.identity = {.caseName = "demo",
+                  .caseHash = "0123456789abcdef",
+                  .methods = {"optimal", "sdsm"},
+                  .backend = "cpu",
+                  .cascades = 2,
+                  .phases = 16,
+                  .lights = lights,
+                  .lightsHash = ""};
     std::vector<spatial::Light> all;
     r.studyCounts = {1};
     r.study.assign(1, {});
@@ -58,7 +67,7 @@ SweepRecord WholeRecord(std::size_t lights) {
                        AwkwardCell(static_cast<std::int64_t>((i + 1) % 3))};
         all.push_back(light.light);
         r.lights.push_back(light);
-        r.study[0].push_back({static_cast<std::int64_t>(40 + i)});
+        r.study[0].push_back({40.0 + static_cast<double>(i) + 1.0 / 3.0});
     }
     r.identity.lightsHash = LightsHash(all);
     r.seconds = 1.5;
@@ -83,7 +92,8 @@ TEST(SweepRecord, EveryCellReadsBackBitForBit) {
             EXPECT_EQ(a.misclassified, b.misclassified);
             for (const auto field :
                  {&SweepCell::h, &SweepCell::ms, &SweepCell::hGrazing, &SweepCell::footprintMean,
-                  &SweepCell::footprintMax, &SweepCell::storageFactor, &SweepCell::lodBias})
+                  &SweepCell::footprintMax, &SweepCell::storageFactor, &SweepCell::lodBias,
+                  &SweepCell::misclassifiedMean, &SweepCell::misclassifiedError})
                 EXPECT_TRUE(SameBits(a.*field, b.*field)) << l << ' ' << m;
             EXPECT_EQ(a.winner, b.winner);
             EXPECT_EQ(a.pagesRequested, b.pagesRequested);
@@ -175,7 +185,7 @@ TEST(SweepJournal, LinesReadBackIntoTheFinishedLights) {
     std::string line = JournalLightLine(whole.lights[1]);
     line.pop_back();  // the '\n'
     ParseJournalEntry(line, "j:2", 2, 1, done);
-    std::string study = JournalStudyLine({4, 1, {41}});
+    std::string study = JournalStudyLine({4, 1, {41.0625}});
     study.pop_back();
     ParseJournalEntry(study, "j:3", 2, 1, done);
     ASSERT_EQ(done.lights.count(1), 1u);
@@ -183,7 +193,7 @@ TEST(SweepJournal, LinesReadBackIntoTheFinishedLights) {
     EXPECT_EQ(done.lights[1].cells[1].h, whole.lights[1].cells[1].h);
     EXPECT_EQ(done.lights[1].cells[1].winner, "lispsm-tight");
     EXPECT_TRUE(std::isnan(done.lights[1].cells[0].footprintMean));
-    EXPECT_EQ(done.study.at({4, 1}).misclassified, std::vector<std::int64_t>{41});
+    EXPECT_EQ(done.study.at({4, 1}).misclassified, std::vector<double>{41.0625});
 }
 
 }  // namespace
