@@ -466,17 +466,23 @@ std::string PhaseNote(const SweepResult& r) {
                "wins count any difference and the h orderings differences above 2% and a pixel, "
                "and neither is beyond the noise.";
     double errors = 0.0, sum = 0.0;
+    std::vector<double> relative;  // per light and method with a mean of at least one pixel
     for (const auto& light : r.cells)
         for (const SweepCell& c : light) {
             errors += c.misclassifiedError;
             sum += c.misclassifiedMean;
+            if (c.misclassifiedMean >= 1.0)
+                relative.push_back(c.misclassifiedError / c.misclassifiedMean);
         }
+    std::sort(relative.begin(), relative.end());
+    const double median = relative.empty() ? 0.0 : relative[relative.size() / 2];
     return "Each light's count is the mean over " + std::to_string(r.phases) +
-           " sub-texel phases of its map(s); its residual noise (standard error over mean, "
-           "summed over lights and methods) is " +
+           " sub-texel phases of its map(s); its residual noise (standard error over mean) is " +
+           Fixed(100.0 * median, 2) + "% for the median light and method, " +
            Fixed(sum > 0.0 ? 100.0 * errors / sum : 0.0, 2) +
-           "%. A light counts as a win or loss (and as ordered by h) only where the two "
-           "methods' means differ by more than 1.96 standard errors of their difference.";
+           "% summed over them. A light counts as a win or loss (and as ordered by h) only "
+           "where the two methods' means differ by more than 1.96 standard errors of their "
+           "difference.";
 }
 
 std::vector<ReportSection> ReportSections(const SweepResult& r, const View& view,

@@ -11,10 +11,12 @@
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/clip_matrix.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/oracle.h"
 #include "lexel/spatial/harness/page_shading.h"
 #include "lexel/spatial/harness/ray_cast_map.h"
 #include "lexel/spatial/harness/ray_caster.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
+#include "lexel/spatial/optimizer.h"
 
 namespace lexel::spatial {
 
@@ -273,6 +275,40 @@ std::int64_t Evaluator::CountedPixels(const Light& light) const {
     return counted;
 }
 
+LightMatrix Evaluator::OracleMatrix(const LightSpace& lightSpace, const MethodContext& context,
+                                    std::span<const std::uint8_t> truth, int phases,
+                                    std::string* winner) const {
+    std::vector<OracleStart> starts;
+    for (const std::string& name : FairMethodNames()) {
+        try {
+            starts.push_back({name, ComputeLightMatrix(name, context).matrix});
+        } catch (const std::exception&) {
+            // A start that cannot serve this light (no samples, no floor plane) is left out.
+        }
+    }
+    const LightSamples& samples = *context.samples;
+    const std::vector<glm::dvec3>& lsCone =
+        samples.lsRelevantHull.empty() ? samples.lsRelevant : samples.lsRelevantHull;
+    const std::optional<RelevantHull> hull =
+        RelevantHull::Of(lsCone, glm::normalize(FocusedLightMatrix(context.baseline).p4));
+    if (starts.empty() || !hull)
+        throw DomainError(Subject::kLight, "optimal-oracle: no single matrix serves this light");
+    const std::vector<glm::dvec2> shifts = SubTexelPhases(phases);
+    const auto score = [&](const LightMatrix& matrix) {
+        double wrong = 0.0;
+        for (const glm::dvec2& shift : shifts)
+            wrong += static_cast<double>(
+                CountWrong(ShadeThroughMap(backend_, frame_, lightSpace, matrix.Shifted(shift),
+                                           scene_.shadowMap)
+                               .shades,
+                           truth, nullptr));
+        return wrong / static_cast<double>(shifts.size());
+    };
+    const OracleResult best = SearchOracleMatrix(starts, *hull, scene_.shadowMap, score);
+    *winner = best.start;
+    return best.matrix;
+}
+
 std::vector<std::uint8_t> Evaluator::TruthShadows(const Light& light) const {
     return TraceTruth(LightSpace(light, bounds_));
 }
@@ -341,7 +377,12 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
         MethodOutcome m;
         m.method = method;
         const Stopwatch timer;
-        const MethodMatrix computed = ComputeLightMatrix(method, context);
+        MethodMatrix computed;
+        if (method == kOracleMethod)
+            computed.matrix =
+                OracleMatrix(lightSpace, context, truth, options.phases, &computed.winner);
+        else
+            computed = ComputeLightMatrix(method, context);
         m.ms = timer.Ms();
         if (computed.optimizer) {
             m.hAfterIteration = computed.optimizer->hAfterIteration;
