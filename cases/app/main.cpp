@@ -19,6 +19,7 @@
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
 //   lexel fit-thesis [--case NAME] [--out DIR] [--seed S] [--samples N] [--starts K] [--explain]
+//   lexel error-model CASE.json --out DIR [--lights N] [--method NAME...] [--phases K]
 // Exit status: 0 success, 2 bad input (one line on stderr naming the field and the reason) or
 // too little memory for it, 1 an I/O failure while writing results, 128 + n stopped by signal n
 // (SIGINT, SIGTERM, SIGHUP; the --out staging removed). Every failure is one line
@@ -33,6 +34,7 @@
 #include <vector>
 
 #include "lexel/cases/app/commands.h"
+#include "lexel/cases/app/error_model_command.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/partitions.h"
@@ -318,10 +320,17 @@ int RunLexel(int argc, char** argv) {
     app.set_version_flag("--version", std::string("lexel ") + LEXEL_VERSION);
     app.require_subcommand(1);
     // In `lexel --help` order.
-    const std::vector<Command> commands = {
-        RegisterRun(app),     RegisterSweep(app),    RegisterMerge(app), RegisterTiming(app),
-        RegisterStorage(app), RegisterMeshInfo(app), RegisterInfo(app),  RegisterTables(app),
-        RegisterLowres(app),  RegisterFitThesis(app)};
+    const std::vector<Command> commands = {RegisterRun(app),
+                                           RegisterSweep(app),
+                                           RegisterMerge(app),
+                                           RegisterTiming(app),
+                                           RegisterStorage(app),
+                                           RegisterMeshInfo(app),
+                                           RegisterInfo(app),
+                                           RegisterTables(app),
+                                           RegisterLowres(app),
+                                           RegisterFitThesis(app),
+                                           cases::RegisterErrorModel(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
