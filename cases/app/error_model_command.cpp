@@ -53,7 +53,7 @@ void CheckPhases(int phases) {
 }  // namespace
 
 int ErrorModelCommand(const ErrorModelFlags& flags) {
-    if (flags.outDir.empty()) throw InputError("--out: must name a directory");
+    if (flags.outDir.empty()) throw InputError("--out: must name a directory, got an empty string");
     CheckPhases(flags.phases);
     const std::vector<std::string> methods = ErrorModelMethods(flags.methods);
     const fs::path casePath = flags.casePath;

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "lexel/cases/report/json_number.h"
+#include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"
 
 namespace lexel::cases {
@@ -21,22 +22,8 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool Fitted(const ErrorModelSample& s) {
-    return s.normal != glm::dvec2(0.0) && std::isfinite(s.predicted) &&
+    return s.normal != glm::dvec2(0.0) && s.inRange && std::isfinite(s.predicted) &&
            std::isfinite(s.predictedIsotropic);
-}
-
-std::string Number(double v, int digits = 6) {
-    if (!std::isfinite(v)) return "";
-    std::ostringstream out;
-    out << std::setprecision(digits) << v;
-    return out.str();
-}
-
-std::string Fixed(double v, int decimals) {
-    if (!std::isfinite(v)) return "n/a";
-    std::ostringstream out;
-    out << std::fixed << std::setprecision(decimals) << v;
-    return out.str();
 }
 
 ErrorModelSummary Summarize(const ErrorModelStudy& study, const std::string& name, bool all,
@@ -51,6 +38,10 @@ ErrorModelSummary Summarize(const ErrorModelStudy& study, const std::string& nam
         if (!all && e.method != method) continue;
         ++s.samples;
         if (e.normal == glm::dvec2(0.0)) ++s.withoutNormal;
+        if (!e.inRange) {
+            ++s.outOfRange;
+            s.measuredOutOfRange += e.measured;
+        }
         if (!Fitted(e)) continue;
         lightX[e.light * study.methods.size() + e.method] += e.predicted;
         lightY[e.light * study.methods.size() + e.method] += e.measured;
@@ -147,13 +138,14 @@ std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study)
 std::string ErrorModelCsv(const ErrorModelStudy& study) {
     std::ostringstream out;
     out << "light,method,sample,readback_x,readback_y,normal_x,normal_y,predicted,"
-           "predicted_isotropic,measured\n";
+           "predicted_isotropic,measured,in_range\n";
     const auto width = static_cast<std::uint32_t>(study.readback.width);
     for (const ErrorModelSample& e : study.samples)
-        out << e.light << ',' << study.methods[e.method] << ',' << e.sample << ','
-            << e.pixel % width << ',' << e.pixel / width << ',' << Number(e.normal.x) << ','
-            << Number(e.normal.y) << ',' << Number(e.predicted) << ','
-            << Number(e.predictedIsotropic) << ',' << Number(e.measured) << '\n';
+        out << e.light << ',' << CsvText(study.methods[e.method]) << ',' << e.sample << ','
+            << e.pixel % width << ',' << e.pixel / width << ',' << CsvNumber(e.normal.x) << ','
+            << CsvNumber(e.normal.y) << ',' << CsvNumber(e.predicted) << ','
+            << CsvNumber(e.predictedIsotropic) << ',' << CsvNumber(e.measured) << ','
+            << (e.inRange ? 1 : 0) << '\n';
     return out.str();
 }
 
@@ -166,6 +158,8 @@ nlohmann::json ErrorModelJson(const ErrorModelStudy& study) {
                            {"fit_per_light", FitJson(s.fitPerLight)},
                            {"samples", s.samples},
                            {"samples_without_normal", s.withoutNormal},
+                           {"samples_out_of_range", s.outOfRange},
+                           {"measured_pixels_out_of_range", FiniteOrNull(s.measuredOutOfRange)},
                            {"predicted_pixels", FiniteOrNull(s.predicted)},
                            {"measured_pixels", FiniteOrNull(s.measured)},
                            {"misclassified_pixels", FiniteOrNull(s.misclassified)},
@@ -236,8 +230,8 @@ void WriteErrorModelPlot(const std::string& pngPath, const ErrorModelStudy& stud
         cairo_line_to(cr, left + plotW, py(v));
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0, 0, 0);
-        Text(cr, px(v), top + plotH + 16, Number(v, 4), 0.5);
-        Text(cr, left - 6, py(v) + 4, Number(v, 4), 1.0);
+        Text(cr, px(v), top + plotH + 16, Significant(v, 4), 0.5);
+        Text(cr, left - 6, py(v) + 4, Significant(v, 4), 1.0);
     }
     // Points, one colour per method.
     cairo_save(cr);

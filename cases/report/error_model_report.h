@@ -23,14 +23,15 @@ struct LineFit {
 LineFit FitLine(std::span<const double> x, std::span<const double> y);
 
 // One method's (or, with method "all", every method's pooled) summary. The fit takes the samples
-// with an edge normal and a finite prediction.
+// with an edge normal that are in range (ErrorModelSample::inRange).
 struct ErrorModelSummary {
     std::string method;
     LineFit fit, fitIsotropic;  // on ExpectedBandWidth, on ‖n̂ᵀJ⁻¹‖/4
     // Per light (and method): Σ measured over its fitted samples against Σ predicted, over the
     // lights with samples — the sample-to-sample split of a band among neighbours averaged out.
     LineFit fitPerLight;
-    std::size_t samples = 0, withoutNormal = 0;
+    std::size_t samples = 0, withoutNormal = 0, outOfRange = 0;
+    double measuredOutOfRange = 0.0;         // pixels assigned to out-of-range samples
     double predicted = 0.0, measured = 0.0;  // Σ over the fitted samples (frame pixels)
     double misclassified = 0.0, explained = 0.0, singlePhase = 0.0;  // ErrorModelTotals summed
     double ExplainedShare() const;  // explained / misclassified (NaN for 0)
@@ -38,7 +39,7 @@ struct ErrorModelSummary {
 std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study);
 
 // light,method,sample,readback_x,readback_y,normal_x,normal_y,predicted,predicted_isotropic,
-// measured — one row per sample and method; predicted empty where J is singular.
+// measured,in_range — one row per sample and method (CsvNumber; predicted inf where J is singular).
 std::string ErrorModelCsv(const ErrorModelStudy& study);
 nlohmann::json ErrorModelJson(const ErrorModelStudy& study);
 std::string ErrorModelText(const ErrorModelStudy& study);

@@ -136,8 +136,8 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
                 spatial::ExpectedBandWidthIsotropic(e.normal, row1, row2) * length, readback,
                 frame);
             const double g = glm::length(spatial::EdgeNormalInTexels(e.normal, row1, row2));
-            radius[s] =
-                std::isfinite(g) ? std::min(kMaxAssignRadius, 2.0 + 0.5 * g) : kMaxAssignRadius;
+            e.inRange = std::isfinite(g) && 2.0 + 0.5 * g <= kMaxAssignRadius;
+            radius[s] = e.inRange ? 2.0 + 0.5 * g : kMaxAssignRadius;
         }
         std::int64_t single = 0;
         const std::vector<std::uint16_t> wrong =

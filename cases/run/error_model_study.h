@@ -14,7 +14,8 @@
 // ‖n̂‖₁ ≤ √2 readback pixels of a boundary pixel's centre, and the pixel itself spans ½. A pixel no
 // sample reaches is unexplained (thin shadows the readback misses, pixels no map covers, lights
 // without samples) and counted apart. Samples whose shades give no edge normal (a shadow one
-// pixel thin) still take pixels but are left out of the fit.
+// pixel thin) still take pixels but are left out of the fit, as are samples out of range
+// (ErrorModelSample::inRange).
 #pragma once
 
 #include <cstddef>
@@ -40,6 +41,10 @@ struct ErrorModelSample {
     double predicted = 0.0;   // frame pixels (ExpectedBandWidth); +inf where J is singular
     double predictedIsotropic = 0.0;  // the same with ‖n̂ᵀJ⁻¹‖/4
     double measured = 0.0;            // phase-averaged misclassified frame pixels assigned to it
+    // Whether its radius 2 + ½‖n̂ᵀJ⁻¹‖ fits under kMaxAssignRadius: the whole predicted band can
+    // be assigned to it. Out of range (J near singular: grazing light, a sample near the map's
+    // plane) the model predicts a band wider than the pixels it could be measured on.
+    bool inRange = true;
 };
 
 // Per method: phase-averaged misclassified counted frame pixels over all lights, and how many of
