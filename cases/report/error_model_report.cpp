@@ -135,6 +135,32 @@ std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study)
     return out;
 }
 
+std::vector<ErrorModelBin> BinErrorModel(const ErrorModelStudy& study) {
+    constexpr int kLowest = -5;
+    std::vector<ErrorModelBin> bins;
+    for (const ErrorModelSample& e : study.samples) {
+        if (!Fitted(e)) continue;
+        const int k = e.predicted > 0.0
+                          ? std::max(kLowest, static_cast<int>(std::floor(std::log2(e.predicted))))
+                          : kLowest;
+        const auto index = static_cast<std::size_t>(k - kLowest);
+        if (bins.size() <= index) bins.resize(index + 1);
+        ErrorModelBin& b = bins[index];
+        ++b.samples;
+        b.predictedMean += e.predicted;
+        b.measuredMean += e.measured;
+    }
+    for (std::size_t i = 0; i < bins.size(); ++i) {
+        bins[i].lo = i == 0 ? 0.0 : std::ldexp(1.0, static_cast<int>(i) + kLowest);
+        bins[i].hi = std::ldexp(1.0, static_cast<int>(i) + kLowest + 1);
+        if (bins[i].samples == 0) continue;
+        bins[i].predictedMean /= static_cast<double>(bins[i].samples);
+        bins[i].measuredMean /= static_cast<double>(bins[i].samples);
+    }
+    std::erase_if(bins, [](const ErrorModelBin& b) { return b.samples == 0; });
+    return bins;
+}
+
 std::string ErrorModelCsv(const ErrorModelStudy& study) {
     std::ostringstream out;
     out << "light,method,sample,readback_x,readback_y,normal_x,normal_y,predicted,"
@@ -168,6 +194,13 @@ nlohmann::json ErrorModelJson(const ErrorModelStudy& study) {
                            {"single_phase_pixels", FiniteOrNull(s.singlePhase)}});
     std::size_t withSamples = 0;
     for (std::size_t n : study.samplesPerLight) withSamples += n > 0;
+    nlohmann::json bins = nlohmann::json::array();
+    for (const ErrorModelBin& b : BinErrorModel(study))
+        bins.push_back({{"predicted_lo", b.lo},
+                        {"predicted_hi", b.hi},
+                        {"samples", b.samples},
+                        {"predicted_mean", b.predictedMean},
+                        {"measured_mean", b.measuredMean}});
     return {{"case", study.caseName},
             {"lights", study.lights.size()},
             {"lights_with_samples", withSamples},
@@ -176,7 +209,8 @@ nlohmann::json ErrorModelJson(const ErrorModelStudy& study) {
             {"frame", {study.frame.width, study.frame.height}},
             {"max_assign_radius_readback_pixels", kMaxAssignRadius},
             {"seconds", study.seconds},
-            {"methods", methods}};
+            {"methods", methods},
+            {"bins", bins}};
 }
 
 std::string ErrorModelText(const ErrorModelStudy& study) {
@@ -196,6 +230,15 @@ std::string ErrorModelText(const ErrorModelStudy& study) {
             << std::setw(8) << Fixed(s.fit.r, 3) << std::setw(10) << Fixed(s.fitIsotropic.r, 3)
             << std::setw(10) << Fixed(100.0 * s.ExplainedShare(), 1) << "%" << std::setw(13)
             << Fixed(s.fitPerLight.slope, 3) << std::setw(9) << Fixed(s.fitPerLight.r, 3) << '\n';
+    out << "all methods binned by prediction (frame pixels):\n"
+        << std::right << std::setw(20) << "predicted in" << std::setw(9) << "samples"
+        << std::setw(11) << "predicted" << std::setw(10) << "measured" << std::setw(8) << "ratio"
+        << '\n';
+    for (const ErrorModelBin& b : BinErrorModel(study))
+        out << std::setw(20) << ("[" + Significant(b.lo, 3) + ", " + Significant(b.hi, 3) + ")")
+            << std::setw(9) << b.samples << std::setw(11) << Fixed(b.predictedMean, 3)
+            << std::setw(10) << Fixed(b.measuredMean, 3) << std::setw(8)
+            << Fixed(b.measuredMean / b.predictedMean, 3) << '\n';
     return out.str();
 }
 

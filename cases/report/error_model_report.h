@@ -38,6 +38,16 @@ struct ErrorModelSummary {
 };
 std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study);
 
+// The fitted samples of every method binned by prediction, one bin per octave [2^k, 2^(k+1))
+// frame pixels (those below 2^-5 in the first): where the model holds on average, where the
+// measured floor or the saturation takes over.
+struct ErrorModelBin {
+    double lo = 0.0, hi = 0.0;  // frame pixels
+    std::size_t samples = 0;
+    double predictedMean = 0.0, measuredMean = 0.0;
+};
+std::vector<ErrorModelBin> BinErrorModel(const ErrorModelStudy& study);
+
 // light,method,sample,readback_x,readback_y,normal_x,normal_y,predicted,predicted_isotropic,
 // measured,in_range — one row per sample and method (CsvNumber; predicted inf where J is singular).
 std::string ErrorModelCsv(const ErrorModelStudy& study);
