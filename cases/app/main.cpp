@@ -68,6 +68,8 @@ CLI::Validator NonEmpty(const std::string& what) {
 using Command = std::function<int()>;
 namespace cases = lexel::cases;
 
+using cases::RegisterErrorModel;  // cases/app/error_model_command.h
+
 CLI::Option* AddBackend(CLI::App* sub, std::string& backend, const std::string& what) {
     return sub->add_option("--backend", backend, what)->check(CLI::IsMember({"cpu", "gl"}));
 }
@@ -320,17 +322,10 @@ int RunLexel(int argc, char** argv) {
     app.set_version_flag("--version", std::string("lexel ") + LEXEL_VERSION);
     app.require_subcommand(1);
     // In `lexel --help` order.
-    const std::vector<Command> commands = {RegisterRun(app),
-                                           RegisterSweep(app),
-                                           RegisterMerge(app),
-                                           RegisterTiming(app),
-                                           RegisterStorage(app),
-                                           RegisterMeshInfo(app),
-                                           RegisterInfo(app),
-                                           RegisterTables(app),
-                                           RegisterLowres(app),
-                                           RegisterFitThesis(app),
-                                           cases::RegisterErrorModel(app)};
+    const std::vector<Command> commands = {
+        RegisterRun(app),     RegisterSweep(app),     RegisterMerge(app),     RegisterTiming(app),
+        RegisterStorage(app), RegisterMeshInfo(app),  RegisterInfo(app),      RegisterTables(app),
+        RegisterLowres(app),  RegisterFitThesis(app), RegisterErrorModel(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
