@@ -66,6 +66,7 @@ ErrorModelSummary Summarize(const ErrorModelStudy& study, const std::string& nam
         s.misclassified += study.totals[m].misclassified;
         s.explained += study.totals[m].explained;
         s.singlePhase += study.totals[m].singlePhase;
+        s.uncovered += study.totals[m].uncovered;
     }
     return s;
 }
@@ -125,6 +126,10 @@ LineFit FitLine(std::span<const double> x, std::span<const double> y) {
 
 double ErrorModelSummary::ExplainedShare() const {
     return misclassified > 0.0 ? explained / misclassified : kNaN;
+}
+
+double ErrorModelSummary::UncoveredShare() const {
+    return misclassified > 0.0 ? uncovered / misclassified : kNaN;
 }
 
 std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study) {
@@ -191,6 +196,8 @@ nlohmann::json ErrorModelJson(const ErrorModelStudy& study) {
                            {"misclassified_pixels", FiniteOrNull(s.misclassified)},
                            {"explained_pixels", FiniteOrNull(s.explained)},
                            {"explained_share", FiniteOrNull(s.ExplainedShare())},
+                           {"uncovered_pixels", FiniteOrNull(s.uncovered)},
+                           {"uncovered_share", FiniteOrNull(s.UncoveredShare())},
                            {"single_phase_pixels", FiniteOrNull(s.singlePhase)}});
     std::size_t withSamples = 0;
     for (std::size_t n : study.samplesPerLight) withSamples += n > 0;
@@ -222,13 +229,14 @@ std::string ErrorModelText(const ErrorModelStudy& study) {
     out << "measured = slope * predicted + intercept per boundary sample (frame pixels)\n";
     out << std::left << std::setw(18) << "method" << std::right << std::setw(9) << "samples"
         << std::setw(9) << "slope" << std::setw(11) << "intercept" << std::setw(8) << "r"
-        << std::setw(10) << "r (iso)" << std::setw(11) << "explained" << std::setw(13)
-        << "light slope" << std::setw(9) << "light r" << '\n';
+        << std::setw(10) << "r (iso)" << std::setw(11) << "explained" << std::setw(11)
+        << "uncovered" << std::setw(13) << "light slope" << std::setw(9) << "light r" << '\n';
     for (const ErrorModelSummary& s : SummarizeErrorModel(study))
         out << std::left << std::setw(18) << s.method << std::right << std::setw(9) << s.fit.points
             << std::setw(9) << Fixed(s.fit.slope, 3) << std::setw(11) << Fixed(s.fit.intercept, 3)
             << std::setw(8) << Fixed(s.fit.r, 3) << std::setw(10) << Fixed(s.fitIsotropic.r, 3)
-            << std::setw(10) << Fixed(100.0 * s.ExplainedShare(), 1) << "%" << std::setw(13)
+            << std::setw(10) << Fixed(100.0 * s.ExplainedShare(), 1) << "%" << std::setw(10)
+            << Fixed(100.0 * s.UncoveredShare(), 1) << "%" << std::setw(13)
             << Fixed(s.fitPerLight.slope, 3) << std::setw(9) << Fixed(s.fitPerLight.r, 3) << '\n';
     out << "all methods binned by prediction (frame pixels):\n"
         << std::right << std::setw(20) << "predicted in" << std::setw(9) << "samples"

@@ -34,7 +34,9 @@ struct ErrorModelSummary {
     double measuredOutOfRange = 0.0;         // pixels assigned to out-of-range samples
     double predicted = 0.0, measured = 0.0;  // Σ over the fitted samples (frame pixels)
     double misclassified = 0.0, explained = 0.0, singlePhase = 0.0;  // ErrorModelTotals summed
+    double uncovered = 0.0;
     double ExplainedShare() const;  // explained / misclassified (NaN for 0)
+    double UncoveredShare() const;  // uncovered / misclassified (NaN for 0)
 };
 std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study);
 

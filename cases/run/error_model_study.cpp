@@ -37,23 +37,43 @@ std::vector<Shade> StandardShades(const spatial::Evaluator& evaluator,
     return evaluator.backend().ShadePixels(readback.buffer, lightSpace, map);
 }
 
-// Per frame pixel: in how many of the phases it is a misclassified counted pixel; and the
-// unshifted map's count.
+// Whether the map of `matrix` (scene.shadowMap texels) covers a frame pixel's point: in front of
+// its plane and inside its texels (ShadePoint shades the others lit).
+bool MapCovers(const spatial::LightSpace& lightSpace, const spatial::LightMatrix& matrix,
+               spatial::Resolution map, const glm::dvec3& wsPoint) {
+    const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
+    if (!spatial::InFront(matrix.p4, lsX)) return false;
+    const glm::dvec2 u = matrix.Map(lsX);
+    return u.x >= 0.0 && u.y >= 0.0 && u.x < map.width && u.y < map.height;
+}
+
+// Per frame pixel: in how many of the phases it is a misclassified counted pixel the phase's map
+// covers; the phase-summed count of misclassified pixels it does not cover (a shifted tight map
+// loses up to half a texel at its border: not the model's band), and the unshifted map's count.
 std::vector<std::uint16_t> WrongPerPixel(const spatial::Evaluator& evaluator,
                                          const spatial::Light& light,
                                          const spatial::LightMatrix& matrix,
                                          std::span<const std::uint8_t> truth, int side,
-                                         std::int64_t* singlePhase) {
+                                         std::int64_t* uncoveredWrong, std::int64_t* singlePhase) {
+    const spatial::LightSpace lightSpace(light, evaluator.bounds());
+    const spatial::Resolution map = evaluator.scene().shadowMap;
     std::vector<std::uint16_t> wrong(truth.size(), 0);
+    *uncoveredWrong = 0;
     for (int i = 0; i < side; ++i) {
         for (int j = 0; j < side; ++j) {
             glm::dmat3 shift(1.0);
             shift[2][0] = (i + 0.5) / side - 0.5;
             shift[2][1] = (j + 0.5) / side - 0.5;
-            const std::vector<Shade> shades = evaluator.ShadeFrame(light, matrix.ThenAffine(shift));
-            for (std::size_t p = 0; p < shades.size(); ++p)
-                if (shades[p] == Shade::kLit || shades[p] == Shade::kShadowed)
-                    wrong[p] += (shades[p] == Shade::kShadowed) != static_cast<bool>(truth[p]);
+            const spatial::LightMatrix shifted = matrix.ThenAffine(shift);
+            const std::vector<Shade> shades = evaluator.ShadeFrame(light, shifted);
+            for (std::size_t p = 0; p < shades.size(); ++p) {
+                if (shades[p] != Shade::kLit && shades[p] != Shade::kShadowed) continue;
+                if ((shades[p] == Shade::kShadowed) == static_cast<bool>(truth[p])) continue;
+                if (MapCovers(lightSpace, shifted, map, evaluator.frame().wsPosition[p]))
+                    ++wrong[p];
+                else
+                    ++*uncoveredWrong;
+            }
         }
     }
     *singlePhase = 0;
@@ -139,12 +159,14 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
             e.inRange = std::isfinite(g) && 2.0 + 0.5 * g <= kMaxAssignRadius;
             radius[s] = e.inRange ? 2.0 + 0.5 * g : kMaxAssignRadius;
         }
-        std::int64_t single = 0;
+        std::int64_t single = 0, uncovered = 0;
         const std::vector<std::uint16_t> wrong =
-            WrongPerPixel(evaluator, light, matrix, truth, side, &single);
+            WrongPerPixel(evaluator, light, matrix, truth, side, &uncovered, &single);
         const std::vector<std::int32_t> owner = AssignPixels(frame, readback, samples, radius);
         ErrorModelTotals t;
         t.singlePhase = static_cast<double>(single);
+        t.uncovered = static_cast<double>(uncovered) / phases;
+        t.misclassified = t.uncovered;
         for (std::size_t p = 0; p < wrong.size(); ++p) {
             if (wrong[p] == 0) continue;
             const double w = wrong[p] / phases;
@@ -201,6 +223,7 @@ ErrorModelStudy RunErrorModelStudy(const spatial::Scene& scene,
             study.totals[m].misclassified += r.totals[m].misclassified;
             study.totals[m].explained += r.totals[m].explained;
             study.totals[m].singlePhase += r.totals[m].singlePhase;
+            study.totals[m].uncovered += r.totals[m].uncovered;
         }
     }
     study.seconds = timer.Ms() / 1000.0;

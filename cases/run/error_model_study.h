@@ -53,6 +53,9 @@ struct ErrorModelTotals {
     double misclassified = 0.0;  // Σ over lights, mean over phases
     double explained = 0.0;      // ... assigned to a sample (with or without a normal)
     double singlePhase = 0.0;    // Σ over lights of the unshifted map's count (phase 0, 0)
+    // ... of `misclassified`, the pixels the phase's map does not cover (shaded lit: a shifted
+    // map loses up to half a texel at its border), never assigned to a sample.
+    double uncovered = 0.0;
 };
 
 struct ErrorModelStudy {
