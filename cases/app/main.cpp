@@ -19,6 +19,7 @@
 //   lexel tables [--out DIR] [--cases DIR]
 //   lexel lowres CASE.json [--out DIR]
 //   lexel fit-thesis [--case NAME] [--out DIR] [--seed S] [--samples N] [--starts K] [--explain]
+//   lexel error-model CASE.json --out DIR [--lights N] [--method NAME...] [--phases K]
 // Exit status: 0 success, 2 bad input (one line on stderr naming the field and the reason) or
 // too little memory for it, 1 an I/O failure while writing results, 128 + n stopped by signal n
 // (SIGINT, SIGTERM, SIGHUP; the --out staging removed). Every failure is one line
@@ -33,6 +34,7 @@
 #include <vector>
 
 #include "lexel/cases/app/commands.h"
+#include "lexel/cases/app/error_model_command.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
@@ -66,6 +68,8 @@ CLI::Validator NonEmpty(const std::string& what) {
 // to a flags struct it owns, and returns the command to run when the subcommand is chosen.
 using Command = std::function<int()>;
 namespace cases = lexel::cases;
+
+using cases::RegisterErrorModel;  // cases/app/error_model_command.h
 
 CLI::Option* AddBackend(CLI::App* sub, std::string& backend, const std::string& what) {
     return sub->add_option("--backend", backend, what)->check(CLI::IsMember({"cpu", "gl"}));
@@ -331,9 +335,9 @@ int RunLexel(int argc, char** argv) {
     app.require_subcommand(1);
     // In `lexel --help` order.
     const std::vector<Command> commands = {
-        RegisterRun(app),     RegisterSweep(app),    RegisterMerge(app), RegisterTiming(app),
-        RegisterStorage(app), RegisterMeshInfo(app), RegisterInfo(app),  RegisterTables(app),
-        RegisterLowres(app),  RegisterFitThesis(app)};
+        RegisterRun(app),     RegisterSweep(app),     RegisterMerge(app),     RegisterTiming(app),
+        RegisterStorage(app), RegisterMeshInfo(app),  RegisterInfo(app),      RegisterTables(app),
+        RegisterLowres(app),  RegisterFitThesis(app), RegisterErrorModel(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,361 @@
+// The error-model study's outputs (error_model_report.h).
+#include "lexel/cases/report/error_model_report.h"
+
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "lexel/cases/report/json_number.h"
+#include "lexel/cases/report/text_table.h"
+#include "lexel/cases/run/sweep.h"
+
+namespace lexel::cases {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+bool Fitted(const ErrorModelSample& s) {
+    return s.normal != glm::dvec2(0.0) && s.inRange && std::isfinite(s.predicted) &&
+           std::isfinite(s.predictedIsotropic);
+}
+
+ErrorModelSummary Summarize(const ErrorModelStudy& study, const std::string& name, bool all,
+                            std::size_t method) {
+    ErrorModelSummary s;
+    s.method = name;
+    std::vector<double> x, xIso, y;
+    // Per (light, method): Σ predicted, Σ measured.
+    std::vector<double> lightX(study.lights.size() * study.methods.size(), 0.0);
+    std::vector<double> lightY(lightX.size(), 0.0);
+    for (const ErrorModelSample& e : study.samples) {
+        if (!all && e.method != method) continue;
+        ++s.samples;
+        if (e.normal == glm::dvec2(0.0)) ++s.withoutNormal;
+        if (!e.inRange) {
+            ++s.outOfRange;
+            s.measuredOutOfRange += e.measured;
+        }
+        if (!Fitted(e)) continue;
+        lightX[e.light * study.methods.size() + e.method] += e.predicted;
+        lightY[e.light * study.methods.size() + e.method] += e.measured;
+        x.push_back(e.predicted);
+        xIso.push_back(e.predictedIsotropic);
+        y.push_back(e.measured);
+        s.predicted += e.predicted;
+        s.measured += e.measured;
+    }
+    s.fit = FitLine(x, y);
+    s.fitIsotropic = FitLine(xIso, y);
+    std::vector<double> perLightX, perLightY;
+    for (std::size_t i = 0; i < lightX.size(); ++i) {
+        if (!all && i % study.methods.size() != method) continue;
+        if (study.samplesPerLight[i / study.methods.size()] == 0) continue;
+        perLightX.push_back(lightX[i]);
+        perLightY.push_back(lightY[i]);
+    }
+    s.fitPerLight = FitLine(perLightX, perLightY);
+    for (std::size_t m = 0; m < study.totals.size(); ++m) {
+        if (!all && m != method) continue;
+        s.misclassified += study.totals[m].misclassified;
+        s.explained += study.totals[m].explained;
+        s.singlePhase += study.totals[m].singlePhase;
+        s.uncovered += study.totals[m].uncovered;
+    }
+    return s;
+}
+
+nlohmann::json FitJson(const LineFit& f) {
+    return {{"slope", FiniteOrNull(f.slope)},
+            {"intercept", FiniteOrNull(f.intercept)},
+            {"r", FiniteOrNull(f.r)},
+            {"points", f.points}};
+}
+
+struct Rgb {
+    double r, g, b;
+};
+constexpr Rgb kPalette[] = {{0.12, 0.47, 0.71}, {1.00, 0.50, 0.05}, {0.17, 0.63, 0.17},
+                            {0.84, 0.15, 0.16}, {0.58, 0.40, 0.74}, {0.55, 0.34, 0.29},
+                            {0.89, 0.47, 0.76}, {0.50, 0.50, 0.50}};
+
+void Text(cairo_t* cr, double x, double y, const std::string& text, double alignX = 0.0) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, text.c_str(), &e);
+    cairo_move_to(cr, x - alignX * e.width - e.x_bearing, y);
+    cairo_show_text(cr, text.c_str());
+}
+
+double NiceStep(double span) {
+    const double rough = span / 5.0;
+    const double p = std::pow(10.0, std::floor(std::log10(rough)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * p >= rough) return m * p;
+    return 10.0 * p;
+}
+
+}  // namespace
+
+LineFit FitLine(std::span<const double> x, std::span<const double> y) {
+    LineFit f;
+    f.points = std::min(x.size(), y.size());
+    if (f.points < 2) return {kNaN, kNaN, kNaN, f.points};
+    const double n = static_cast<double>(f.points);
+    double mx = 0.0, my = 0.0;
+    for (std::size_t i = 0; i < f.points; ++i) mx += x[i], my += y[i];
+    mx /= n;
+    my /= n;
+    double sxx = 0.0, syy = 0.0, sxy = 0.0;
+    for (std::size_t i = 0; i < f.points; ++i) {
+        sxx += (x[i] - mx) * (x[i] - mx);
+        syy += (y[i] - my) * (y[i] - my);
+        sxy += (x[i] - mx) * (y[i] - my);
+    }
+    if (!(sxx > 0.0)) return {kNaN, kNaN, kNaN, f.points};
+    f.slope = sxy / sxx;
+    f.intercept = my - f.slope * mx;
+    f.r = syy > 0.0 ? sxy / std::sqrt(sxx * syy) : kNaN;
+    return f;
+}
+
+double ErrorModelSummary::ExplainedShare() const {
+    return misclassified > 0.0 ? explained / misclassified : kNaN;
+}
+
+double ErrorModelSummary::UncoveredShare() const {
+    return misclassified > 0.0 ? uncovered / misclassified : kNaN;
+}
+
+std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study) {
+    std::vector<ErrorModelSummary> out;
+    for (std::size_t m = 0; m < study.methods.size(); ++m)
+        out.push_back(Summarize(study, study.methods[m], false, m));
+    out.push_back(Summarize(study, "all", true, 0));
+    return out;
+}
+
+std::vector<ErrorModelBin> BinErrorModel(const ErrorModelStudy& study) {
+    constexpr int kLowest = -5;
+    std::vector<ErrorModelBin> bins;
+    for (const ErrorModelSample& e : study.samples) {
+        if (!Fitted(e)) continue;
+        const int k = e.predicted > 0.0
+                          ? std::max(kLowest, static_cast<int>(std::floor(std::log2(e.predicted))))
+                          : kLowest;
+        const auto index = static_cast<std::size_t>(k - kLowest);
+        if (bins.size() <= index) bins.resize(index + 1);
+        ErrorModelBin& b = bins[index];
+        ++b.samples;
+        b.predictedMean += e.predicted;
+        b.measuredMean += e.measured;
+    }
+    for (std::size_t i = 0; i < bins.size(); ++i) {
+        bins[i].lo = i == 0 ? 0.0 : std::ldexp(1.0, static_cast<int>(i) + kLowest);
+        bins[i].hi = std::ldexp(1.0, static_cast<int>(i) + kLowest + 1);
+        if (bins[i].samples == 0) continue;
+        bins[i].predictedMean /= static_cast<double>(bins[i].samples);
+        bins[i].measuredMean /= static_cast<double>(bins[i].samples);
+    }
+    std::erase_if(bins, [](const ErrorModelBin& b) { return b.samples == 0; });
+    return bins;
+}
+
+std::string ErrorModelCsv(const ErrorModelStudy& study) {
+    std::ostringstream out;
+    out << "light,method,sample,readback_x,readback_y,normal_x,normal_y,predicted,"
+           "predicted_isotropic,measured,in_range\n";
+    const auto width = static_cast<std::uint32_t>(study.readback.width);
+    for (const ErrorModelSample& e : study.samples)
+        out << e.light << ',' << CsvText(study.methods[e.method]) << ',' << e.sample << ','
+            << e.pixel % width << ',' << e.pixel / width << ',' << CsvNumber(e.normal.x) << ','
+            << CsvNumber(e.normal.y) << ',' << CsvNumber(e.predicted) << ','
+            << CsvNumber(e.predictedIsotropic) << ',' << CsvNumber(e.measured) << ','
+            << (e.inRange ? 1 : 0) << '\n';
+    return out.str();
+}
+
+nlohmann::json ErrorModelJson(const ErrorModelStudy& study) {
+    nlohmann::json methods = nlohmann::json::array();
+    for (const ErrorModelSummary& s : SummarizeErrorModel(study))
+        methods.push_back({{"method", s.method},
+                           {"fit", FitJson(s.fit)},
+                           {"fit_isotropic", FitJson(s.fitIsotropic)},
+                           {"fit_per_light", FitJson(s.fitPerLight)},
+                           {"samples", s.samples},
+                           {"samples_without_normal", s.withoutNormal},
+                           {"samples_out_of_range", s.outOfRange},
+                           {"measured_pixels_out_of_range", FiniteOrNull(s.measuredOutOfRange)},
+                           {"predicted_pixels", FiniteOrNull(s.predicted)},
+                           {"measured_pixels", FiniteOrNull(s.measured)},
+                           {"misclassified_pixels", FiniteOrNull(s.misclassified)},
+                           {"explained_pixels", FiniteOrNull(s.explained)},
+                           {"explained_share", FiniteOrNull(s.ExplainedShare())},
+                           {"uncovered_pixels", FiniteOrNull(s.uncovered)},
+                           {"uncovered_share", FiniteOrNull(s.UncoveredShare())},
+                           {"single_phase_pixels", FiniteOrNull(s.singlePhase)}});
+    std::size_t withSamples = 0;
+    for (std::size_t n : study.samplesPerLight) withSamples += n > 0;
+    nlohmann::json bins = nlohmann::json::array();
+    for (const ErrorModelBin& b : BinErrorModel(study))
+        bins.push_back({{"predicted_lo", b.lo},
+                        {"predicted_hi", b.hi},
+                        {"samples", b.samples},
+                        {"predicted_mean", b.predictedMean},
+                        {"measured_mean", b.measuredMean}});
+    return {{"case", study.caseName},
+            {"lights", study.lights.size()},
+            {"lights_with_samples", withSamples},
+            {"phases", study.phases},
+            {"readback", {study.readback.width, study.readback.height}},
+            {"frame", {study.frame.width, study.frame.height}},
+            {"max_assign_radius_readback_pixels", kMaxAssignRadius},
+            {"seconds", study.seconds},
+            {"methods", methods},
+            {"bins", bins}};
+}
+
+std::string ErrorModelText(const ErrorModelStudy& study) {
+    std::ostringstream out;
+    std::size_t withSamples = 0;
+    for (std::size_t n : study.samplesPerLight) withSamples += n > 0;
+    out << "error model, " << study.caseName << ": " << study.lights.size() << " lights ("
+        << withSamples << " with boundary samples), " << study.phases << " phases\n";
+    out << "measured = slope * predicted + intercept per boundary sample (frame pixels)\n";
+    out << std::left << std::setw(18) << "method" << std::right << std::setw(9) << "samples"
+        << std::setw(9) << "slope" << std::setw(11) << "intercept" << std::setw(8) << "r"
+        << std::setw(10) << "r (iso)" << std::setw(11) << "explained" << std::setw(11)
+        << "uncovered" << std::setw(13) << "light slope" << std::setw(9) << "light r" << '\n';
+    for (const ErrorModelSummary& s : SummarizeErrorModel(study))
+        out << std::left << std::setw(18) << s.method << std::right << std::setw(9) << s.fit.points
+            << std::setw(9) << Fixed(s.fit.slope, 3) << std::setw(11) << Fixed(s.fit.intercept, 3)
+            << std::setw(8) << Fixed(s.fit.r, 3) << std::setw(10) << Fixed(s.fitIsotropic.r, 3)
+            << std::setw(10) << Fixed(100.0 * s.ExplainedShare(), 1) << "%" << std::setw(10)
+            << Fixed(100.0 * s.UncoveredShare(), 1) << "%" << std::setw(13)
+            << Fixed(s.fitPerLight.slope, 3) << std::setw(9) << Fixed(s.fitPerLight.r, 3) << '\n';
+    out << "all methods binned by prediction (frame pixels):\n"
+        << std::right << std::setw(20) << "predicted in" << std::setw(9) << "samples"
+        << std::setw(11) << "predicted" << std::setw(10) << "measured" << std::setw(8) << "ratio"
+        << '\n';
+    for (const ErrorModelBin& b : BinErrorModel(study))
+        out << std::setw(20) << ("[" + Significant(b.lo, 3) + ", " + Significant(b.hi, 3) + ")")
+            << std::setw(9) << b.samples << std::setw(11) << Fixed(b.predictedMean, 3)
+            << std::setw(10) << Fixed(b.measuredMean, 3) << std::setw(8)
+            << Fixed(b.measuredMean / b.predictedMean, 3) << '\n';
+    return out.str();
+}
+
+void WriteErrorModelPlot(const std::string& pngPath, const ErrorModelStudy& study) {
+    const std::vector<ErrorModelSummary> summaries = SummarizeErrorModel(study);
+    const int width = 820, height = 690 + 17 * static_cast<int>(summaries.size() + 1);
+    const double left = 80, top = 50, plotW = 700, plotH = 570;
+    double hi = 0.0;
+    for (const ErrorModelSample& e : study.samples)
+        if (Fitted(e)) hi = std::max({hi, e.predicted, e.measured});
+    if (!(hi > 0.0)) hi = 1.0;
+    const double step = NiceStep(hi);
+    hi = std::ceil(hi / step) * step;
+    const auto px = [&](double v) { return left + plotW * v / hi; };
+    const auto py = [&](double v) { return top + plotH * (1.0 - v / hi); };
+    const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height), cairo_surface_destroy);
+    const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> context(cairo_create(surface.get()),
+                                                                     cairo_destroy);
+    cairo_t* cr = context.get();
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 12);
+    // Grid and ticks.
+    for (double v = 0.0; v <= hi * (1 + 1e-9); v += step) {
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_set_line_width(cr, 1);
+        cairo_move_to(cr, px(v), top);
+        cairo_line_to(cr, px(v), top + plotH);
+        cairo_move_to(cr, left, py(v));
+        cairo_line_to(cr, left + plotW, py(v));
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        Text(cr, px(v), top + plotH + 16, Significant(v, 4), 0.5);
+        Text(cr, left - 6, py(v) + 4, Significant(v, 4), 1.0);
+    }
+    // Points, one colour per method.
+    cairo_save(cr);
+    cairo_rectangle(cr, left, top, plotW, plotH);
+    cairo_clip(cr);
+    for (const ErrorModelSample& e : study.samples) {
+        if (!Fitted(e)) continue;
+        const Rgb c = kPalette[e.method % std::size(kPalette)];
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.35);
+        cairo_arc(cr, px(e.predicted), py(e.measured), 2.0, 0, 2 * M_PI);
+        cairo_fill(cr);
+    }
+    // y = x (dashed) and the pooled fit line.
+    const ErrorModelSummary& pooled = summaries.back();
+    const double dashes[] = {6.0, 4.0};
+    cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+    cairo_set_line_width(cr, 1.2);
+    cairo_set_dash(cr, dashes, 2, 0);
+    cairo_move_to(cr, px(0), py(0));
+    cairo_line_to(cr, px(hi), py(hi));
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    if (std::isfinite(pooled.fit.slope)) {
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_set_line_width(cr, 2.0);
+        cairo_move_to(cr, px(0), py(pooled.fit.intercept));
+        cairo_line_to(cr, px(hi), py(pooled.fit.intercept + pooled.fit.slope * hi));
+        cairo_stroke(cr);
+    }
+    cairo_restore(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.2);
+    cairo_rectangle(cr, left, top, plotW, plotH);
+    cairo_stroke(cr);
+    // Title, axis labels, legend.
+    cairo_set_font_size(cr, 15);
+    Text(cr, left + plotW / 2, 28,
+         "Error model, " + study.caseName + ": " + std::to_string(study.lights.size()) +
+             " lights, " + std::to_string(study.phases) + " phases",
+         0.5);
+    cairo_set_font_size(cr, 13);
+    Text(cr, left + plotW / 2, top + plotH + 40,
+         "predicted band at the sample (frame pixels, ExpectedBandWidth)", 0.5);
+    cairo_save(cr);
+    cairo_translate(cr, 22, top + plotH / 2);
+    cairo_rotate(cr, -M_PI / 2);
+    Text(cr, 0, 0, "measured misclassified pixels nearest the sample (phase mean)", 0.5);
+    cairo_restore(cr);
+    cairo_set_font_size(cr, 12);
+    double y = top + plotH + 64;  // the legend under the plot
+    for (std::size_t m = 0; m < summaries.size(); ++m) {
+        const ErrorModelSummary& s = summaries[m];
+        const bool isPooled = m + 1 == summaries.size();
+        const Rgb c = isPooled ? Rgb{0, 0, 0} : kPalette[m % std::size(kPalette)];
+        cairo_set_source_rgb(cr, c.r, c.g, c.b);
+        cairo_arc(cr, left + 16, y - 4, 4, 0, 2 * M_PI);
+        cairo_fill(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        Text(cr, left + 26, y,
+             (isPooled ? "fit, all: " : s.method + ": ") + "slope " + Fixed(s.fit.slope, 3) +
+                 ", intercept " + Fixed(s.fit.intercept, 3) + ", r " + Fixed(s.fit.r, 3) +
+                 ", explained " + Fixed(100.0 * s.ExplainedShare(), 1) + "%; per light: slope " +
+                 Fixed(s.fitPerLight.slope, 3) + ", r " + Fixed(s.fitPerLight.r, 3));
+        y += 17;
+    }
+    Text(cr, left + 26, y, "dashed: measured = predicted");
+    cairo_status_t status = cairo_status(cr);
+    if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface.get());
+    cairo_surface_flush(surface.get());
+    if (status == CAIRO_STATUS_SUCCESS)
+        status = cairo_surface_write_to_png(surface.get(), pngPath.c_str());
+    if (status != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(pngPath + ": " + cairo_status_to_string(status));
+}
+
+}  // namespace lexel::cases

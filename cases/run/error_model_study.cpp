@@ -1,0 +1,233 @@
+// The error model checked per boundary sample (error_model_study.h).
+#include "lexel/cases/run/error_model_study.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/run/evaluator_setup.h"
+#include "lexel/cases/run/sweep.h"
+#include "lexel/solvers/errors.h"
+#include "lexel/solvers/stopwatch.h"
+#include "lexel/spatial/error_model.h"
+#include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/warped_methods.h"
+
+namespace lexel::cases {
+
+namespace {
+
+using spatial::Shade;
+
+// The readback's shades under the standard (focused) map: the decisions the boundary samples were
+// found with (Evaluator::Evaluate's step 1), for their edge normals.
+std::vector<Shade> StandardShades(const spatial::Evaluator& evaluator,
+                                  const spatial::LightSpace& lightSpace) {
+    const spatial::Readback& readback = evaluator.readback();
+    const spatial::BaselineContext context =
+        spatial::MakeBaselineContext(evaluator.scene(), lightSpace, evaluator.bounds(),
+                                     readback.wsRelevant, readback.wsRelevantHull);
+    const spatial::ShadowMap map = evaluator.backend().RenderShadowMap(
+        lightSpace, spatial::FocusedLightMatrix(context), evaluator.scene().shadowMap);
+    return evaluator.backend().ShadePixels(readback.buffer, lightSpace, map);
+}
+
+// Whether the map of `matrix` (scene.shadowMap texels) covers a frame pixel's point: in front of
+// its plane and inside its texels (ShadePoint shades the others lit).
+bool MapCovers(const spatial::LightSpace& lightSpace, const spatial::LightMatrix& matrix,
+               spatial::Resolution map, const glm::dvec3& wsPoint) {
+    const glm::dvec3 lsX = lightSpace.ToLight(wsPoint);
+    if (!spatial::InFront(matrix.p4, lsX)) return false;
+    const glm::dvec2 u = matrix.Map(lsX);
+    return u.x >= 0.0 && u.y >= 0.0 && u.x < map.width && u.y < map.height;
+}
+
+// Per frame pixel: in how many of the phases it is a misclassified counted pixel the phase's map
+// covers; the phase-summed count of misclassified pixels it does not cover (a shifted tight map
+// loses up to half a texel at its border: not the model's band), and the unshifted map's count.
+std::vector<std::uint16_t> WrongPerPixel(const spatial::Evaluator& evaluator,
+                                         const spatial::Light& light,
+                                         const spatial::LightMatrix& matrix,
+                                         std::span<const std::uint8_t> truth, int side,
+                                         std::int64_t* uncoveredWrong, std::int64_t* singlePhase) {
+    const spatial::LightSpace lightSpace(light, evaluator.bounds());
+    const spatial::Resolution map = evaluator.scene().shadowMap;
+    std::vector<std::uint16_t> wrong(truth.size(), 0);
+    *uncoveredWrong = 0;
+    for (int i = 0; i < side; ++i) {
+        for (int j = 0; j < side; ++j) {
+            glm::dmat3 shift(1.0);
+            shift[2][0] = (i + 0.5) / side - 0.5;
+            shift[2][1] = (j + 0.5) / side - 0.5;
+            const spatial::LightMatrix shifted = matrix.ThenAffine(shift);
+            const std::vector<Shade> shades = evaluator.ShadeFrame(light, shifted);
+            for (std::size_t p = 0; p < shades.size(); ++p) {
+                if (shades[p] != Shade::kLit && shades[p] != Shade::kShadowed) continue;
+                if ((shades[p] == Shade::kShadowed) == static_cast<bool>(truth[p])) continue;
+                if (MapCovers(lightSpace, shifted, map, evaluator.frame().wsPosition[p]))
+                    ++wrong[p];
+                else
+                    ++*uncoveredWrong;
+            }
+        }
+    }
+    *singlePhase = 0;
+    const std::vector<Shade> shades = evaluator.ShadeFrame(light, matrix);
+    for (std::size_t p = 0; p < shades.size(); ++p)
+        if (shades[p] == Shade::kLit || shades[p] == Shade::kShadowed)
+            *singlePhase += (shades[p] == Shade::kShadowed) != static_cast<bool>(truth[p]);
+    return wrong;
+}
+
+struct LightResult {
+    std::vector<ErrorModelSample> samples;
+    std::vector<ErrorModelTotals> totals;
+    std::size_t sampleCount = 0;
+};
+
+// The owner of each frame pixel: the nearest sample within its radius (-1: none).
+std::vector<std::int32_t> AssignPixels(spatial::Resolution frame, spatial::Resolution readback,
+                                       const std::vector<ErrorModelSample>& samples,
+                                       const std::vector<double>& radiusReadback) {
+    const double sx = static_cast<double>(frame.width) / readback.width;
+    const double sy = static_cast<double>(frame.height) / readback.height;
+    const double scale = std::max(sx, sy);
+    std::vector<std::int32_t> owner(frame.Count(), -1);
+    std::vector<float> best(frame.Count(), std::numeric_limits<float>::infinity());
+    for (std::size_t s = 0; s < samples.size(); ++s) {
+        const std::uint32_t px = samples[s].pixel % static_cast<std::uint32_t>(readback.width);
+        const std::uint32_t py = samples[s].pixel / static_cast<std::uint32_t>(readback.width);
+        const glm::dvec2 centre((px + 0.5) * sx, (py + 0.5) * sy);
+        const double radius = radiusReadback[s] * scale;
+        const int x0 = std::max(0, static_cast<int>(std::floor(centre.x - radius)));
+        const int x1 = std::min(frame.width - 1, static_cast<int>(std::ceil(centre.x + radius)));
+        const int y0 = std::max(0, static_cast<int>(std::floor(centre.y - radius)));
+        const int y1 = std::min(frame.height - 1, static_cast<int>(std::ceil(centre.y + radius)));
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x) {
+                const double d = glm::length(glm::dvec2(x + 0.5, y + 0.5) - centre);
+                const std::size_t p = static_cast<std::size_t>(y) * frame.width + x;
+                if (d > radius || !(d < best[p])) continue;
+                best[p] = static_cast<float>(d);
+                owner[p] = static_cast<std::int32_t>(s);
+            }
+        }
+    }
+    return owner;
+}
+
+LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light& light,
+                       std::size_t lightIndex, const std::vector<std::string>& methods, int side) {
+    spatial::EvaluationOptions options;
+    options.methods = methods;
+    options.mapTruth = false;
+    const spatial::LightOutcome outcome = evaluator.Evaluate(light, options);
+    const spatial::LightSamples& ls = outcome.samples;
+    const spatial::LightSpace lightSpace(light, evaluator.bounds());
+    const std::vector<Shade> standard = StandardShades(evaluator, lightSpace);
+    const std::vector<std::uint8_t> truth = evaluator.TruthShadows(light);
+    const spatial::Resolution readback = evaluator.readback().buffer.resolution;
+    const spatial::Resolution frame = evaluator.frame().resolution;
+    const double phases = static_cast<double>(side) * side;
+    LightResult r;
+    r.sampleCount = ls.lsX.size();
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+        const spatial::LightMatrix& matrix = outcome.methods[m].matrix;
+        std::vector<ErrorModelSample> samples(ls.lsX.size());
+        std::vector<double> radius(ls.lsX.size());
+        for (std::size_t s = 0; s < samples.size(); ++s) {
+            ErrorModelSample& e = samples[s];
+            e.light = lightIndex;
+            e.method = m;
+            e.sample = s;
+            e.pixel = ls.pixel[s];
+            e.normal = spatial::EdgeNormalFromShades(readback, standard, e.pixel);
+            glm::dvec2 row1, row2;
+            spatial::SampleJacobian(matrix, ls.lsX[s], ls.dXdx1[s], ls.dXdx2[s], &row1, &row2);
+            const double length = spatial::EdgeLengthPerBoundaryPixel(e.normal);
+            e.predicted = spatial::FramePixelsFromReadbackArea(
+                spatial::ExpectedBandWidth(e.normal, row1, row2) * length, readback, frame);
+            e.predictedIsotropic = spatial::FramePixelsFromReadbackArea(
+                spatial::ExpectedBandWidthIsotropic(e.normal, row1, row2) * length, readback,
+                frame);
+            const double g = glm::length(spatial::EdgeNormalInTexels(e.normal, row1, row2));
+            e.inRange = std::isfinite(g) && 2.0 + 0.5 * g <= kMaxAssignRadius;
+            radius[s] = e.inRange ? 2.0 + 0.5 * g : kMaxAssignRadius;
+        }
+        std::int64_t single = 0, uncovered = 0;
+        const std::vector<std::uint16_t> wrong =
+            WrongPerPixel(evaluator, light, matrix, truth, side, &uncovered, &single);
+        const std::vector<std::int32_t> owner = AssignPixels(frame, readback, samples, radius);
+        ErrorModelTotals t;
+        t.singlePhase = static_cast<double>(single);
+        t.uncovered = static_cast<double>(uncovered) / phases;
+        t.misclassified = t.uncovered;
+        for (std::size_t p = 0; p < wrong.size(); ++p) {
+            if (wrong[p] == 0) continue;
+            const double w = wrong[p] / phases;
+            t.misclassified += w;
+            if (owner[p] < 0) continue;
+            t.explained += w;
+            samples[static_cast<std::size_t>(owner[p])].measured += w;
+        }
+        r.totals.push_back(t);
+        r.samples.insert(r.samples.end(), samples.begin(), samples.end());
+    }
+    return r;
+}
+
+}  // namespace
+
+ErrorModelStudy RunErrorModelStudy(const spatial::Scene& scene,
+                                   const std::vector<std::string>& methods,
+                                   const std::vector<spatial::Light>& lights, int phases,
+                                   BackendKind backendKind,
+                                   const std::function<void()>& onLightDone) {
+    const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(phases))));
+    if (phases < 1 || side * side != phases)
+        throw std::invalid_argument("RunErrorModelStudy: phases must be a square");
+    for (const std::string& m : methods)
+        if (spatial::IsPartitionedMethod(m) || spatial::IsVirtualMethod(m) ||
+            spatial::IsWarpedMethod(m))
+            throw std::invalid_argument("RunErrorModelStudy: " + m + " is not a single-map method");
+    const Stopwatch timer;
+    const auto backend = MakeRenderBackend(backendKind, scene.geometry);
+    const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
+    ErrorModelStudy study;
+    study.caseName = scene.name;
+    study.lights = lights;
+    study.methods = methods;
+    study.phases = phases;
+    study.readback = evaluator->readback().buffer.resolution;
+    study.frame = evaluator->frame().resolution;
+    std::vector<LightResult> results(lights.size());
+    tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
+        try {
+            results[l] = StudyLight(*evaluator, lights[l], l, methods, side);
+        } catch (const DomainError& e) {
+            const std::string light = "light " + std::to_string(l) + " " + LightLabel(lights[l]);
+            throw InputError(SpatialErrorField(e, light) + ": " + e.what());
+        }
+        if (onLightDone) onLightDone();
+    });
+    study.totals.assign(methods.size(), {});
+    for (const LightResult& r : results) {
+        study.samplesPerLight.push_back(r.sampleCount);
+        study.samples.insert(study.samples.end(), r.samples.begin(), r.samples.end());
+        for (std::size_t m = 0; m < methods.size(); ++m) {
+            study.totals[m].misclassified += r.totals[m].misclassified;
+            study.totals[m].explained += r.totals[m].explained;
+            study.totals[m].singlePhase += r.totals[m].singlePhase;
+            study.totals[m].uncovered += r.totals[m].uncovered;
+        }
+    }
+    study.seconds = timer.Ms() / 1000.0;
+    return study;
+}
+
+}  // namespace lexel::cases
