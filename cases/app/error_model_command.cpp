@@ -16,6 +16,7 @@
 #include "lexel/cases/run/sweep.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 #include "lexel/spatial/harness/warped_methods.h"
 
 namespace lexel::cases {
@@ -42,12 +43,9 @@ std::vector<std::string> ErrorModelMethods(const std::vector<std::string>& given
 }
 
 void CheckPhases(int phases) {
-    const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(phases))));
-    if (phases < 1 || side * side != phases)
-        throw InputError(
-            "--phases: must be a square (1, 4, 9, 16, ...: an n x n grid of "
-            "sub-texel phases), got " +
-            std::to_string(phases));
+    if (phases < 1 || phases > spatial::kMaxPhases)
+        throw InputError("--phases: must be in [1, " + std::to_string(spatial::kMaxPhases) +
+                         "], got " + std::to_string(phases));
 }
 
 }  // namespace
@@ -57,7 +55,7 @@ int ErrorModelCommand(const ErrorModelFlags& flags) {
     CheckPhases(flags.phases);
     const std::vector<std::string> methods = ErrorModelMethods(flags.methods);
     const fs::path casePath = flags.casePath;
-    const spatial::Scene scene = LoadSceneWithCascades(casePath, 0);
+    const spatial::Scene scene = LoadSceneWithOverrides(ReadCaseFile(casePath), 0, 0);
     const BackendKind backend = BackendOf(flags.backend);
     std::optional<spatial::Light::Type> type;
     if (!flags.lightType.empty())
@@ -107,8 +105,8 @@ std::function<int()> RegisterErrorModel(CLI::App& app) {
     sub->add_option("--method,--methods", flags->methods,
                     "Single-map methods (default: focused-tight lispsm-tight optimal)");
     sub->add_option("--phases", flags->phases,
-                    "Sub-texel phases K averaged, a square: an n x n grid (default 16)")
-        ->check(CLI::Range(1, 1024));
+                    "Sub-texel phases K averaged (as on run and sweep; default 16)")
+        ->check(CLI::Range(1, spatial::kMaxPhases));
     sub->add_option("--backend", flags->backend, "The renderer (gl: OpenGL 4.5 via EGL)")
         ->check(CLI::IsMember({"cpu", "gl"}));
     return [flags] { return ErrorModelCommand(*flags); };

@@ -16,6 +16,7 @@
 #include "lexel/spatial/error_model.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 #include "lexel/spatial/harness/warped_methods.h"
 
 namespace lexel::cases {
@@ -53,27 +54,22 @@ bool MapCovers(const spatial::LightSpace& lightSpace, const spatial::LightMatrix
 std::vector<std::uint16_t> WrongPerPixel(const spatial::Evaluator& evaluator,
                                          const spatial::Light& light,
                                          const spatial::LightMatrix& matrix,
-                                         std::span<const std::uint8_t> truth, int side,
+                                         std::span<const std::uint8_t> truth, int phases,
                                          std::int64_t* uncoveredWrong, std::int64_t* singlePhase) {
     const spatial::LightSpace lightSpace(light, evaluator.bounds());
     const spatial::Resolution map = evaluator.scene().shadowMap;
     std::vector<std::uint16_t> wrong(truth.size(), 0);
     *uncoveredWrong = 0;
-    for (int i = 0; i < side; ++i) {
-        for (int j = 0; j < side; ++j) {
-            glm::dmat3 shift(1.0);
-            shift[2][0] = (i + 0.5) / side - 0.5;
-            shift[2][1] = (j + 0.5) / side - 0.5;
-            const spatial::LightMatrix shifted = matrix.ThenAffine(shift);
-            const std::vector<Shade> shades = evaluator.ShadeFrame(light, shifted);
-            for (std::size_t p = 0; p < shades.size(); ++p) {
-                if (shades[p] != Shade::kLit && shades[p] != Shade::kShadowed) continue;
-                if ((shades[p] == Shade::kShadowed) == static_cast<bool>(truth[p])) continue;
-                if (MapCovers(lightSpace, shifted, map, evaluator.frame().wsPosition[p]))
-                    ++wrong[p];
-                else
-                    ++*uncoveredWrong;
-            }
+    for (const glm::dvec2& phase : spatial::SubTexelPhases(phases)) {
+        const spatial::LightMatrix shifted = matrix.Shifted(phase);
+        const std::vector<Shade> shades = evaluator.ShadeFrame(light, shifted);
+        for (std::size_t p = 0; p < shades.size(); ++p) {
+            if (shades[p] != Shade::kLit && shades[p] != Shade::kShadowed) continue;
+            if ((shades[p] == Shade::kShadowed) == static_cast<bool>(truth[p])) continue;
+            if (MapCovers(lightSpace, shifted, map, evaluator.frame().wsPosition[p]))
+                ++wrong[p];
+            else
+                ++*uncoveredWrong;
         }
     }
     *singlePhase = 0;
@@ -122,7 +118,8 @@ std::vector<std::int32_t> AssignPixels(spatial::Resolution frame, spatial::Resol
 }
 
 LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light& light,
-                       std::size_t lightIndex, const std::vector<std::string>& methods, int side) {
+                       std::size_t lightIndex, const std::vector<std::string>& methods,
+                       int phaseCount) {
     spatial::EvaluationOptions options;
     options.methods = methods;
     options.mapTruth = false;
@@ -133,7 +130,7 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
     const std::vector<std::uint8_t> truth = evaluator.TruthShadows(light);
     const spatial::Resolution readback = evaluator.readback().buffer.resolution;
     const spatial::Resolution frame = evaluator.frame().resolution;
-    const double phases = static_cast<double>(side) * side;
+    const double phases = phaseCount;
     LightResult r;
     r.sampleCount = ls.lsX.size();
     for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -161,7 +158,7 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
         }
         std::int64_t single = 0, uncovered = 0;
         const std::vector<std::uint16_t> wrong =
-            WrongPerPixel(evaluator, light, matrix, truth, side, &uncovered, &single);
+            WrongPerPixel(evaluator, light, matrix, truth, phaseCount, &uncovered, &single);
         const std::vector<std::int32_t> owner = AssignPixels(frame, readback, samples, radius);
         ErrorModelTotals t;
         t.singlePhase = static_cast<double>(single);
@@ -188,9 +185,8 @@ ErrorModelStudy RunErrorModelStudy(const spatial::Scene& scene,
                                    const std::vector<spatial::Light>& lights, int phases,
                                    BackendKind backendKind,
                                    const std::function<void()>& onLightDone) {
-    const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(phases))));
-    if (phases < 1 || side * side != phases)
-        throw std::invalid_argument("RunErrorModelStudy: phases must be a square");
+    if (phases < 1 || phases > spatial::kMaxPhases)
+        throw std::invalid_argument("RunErrorModelStudy: phases must be in [1, kMaxPhases]");
     for (const std::string& m : methods)
         if (spatial::IsPartitionedMethod(m) || spatial::IsVirtualMethod(m) ||
             spatial::IsWarpedMethod(m))
@@ -208,7 +204,7 @@ ErrorModelStudy RunErrorModelStudy(const spatial::Scene& scene,
     std::vector<LightResult> results(lights.size());
     tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
         try {
-            results[l] = StudyLight(*evaluator, lights[l], l, methods, side);
+            results[l] = StudyLight(*evaluator, lights[l], l, methods, phases);
         } catch (const DomainError& e) {
             const std::string light = "light " + std::to_string(l) + " " + LightLabel(lights[l]);
             throw InputError(SpatialErrorField(e, light) + ": " + e.what());

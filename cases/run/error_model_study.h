@@ -3,9 +3,10 @@
 // pixels, ExpectedBandWidth × the edge it stands for) beside the misclassified frame pixels
 // measured nearest to it, averaged over the map's sub-texel phases.
 //
-// Phases: the method's matrix with its map shifted by (du, dv) texels (LightMatrix::ThenAffine),
-// on a stratified √K × √K grid of cell midpoints in [−½, ½)²: J, the samples and every proxy are
-// the same for all of them, only the texel grid moves.
+// Phases: the method's matrix with its map shifted by (du, dv) texels (LightMatrix::Shifted) at
+// the K phases every 3D measurement uses (SubTexelPhases, sub_texel_phase.h: phase 0 unshifted,
+// then Roberts' R2 sequence in [−½, ½)²): J, the samples and every proxy are the same for all of
+// them, only the texel grid moves.
 //
 // Assignment: each counted frame pixel misclassified in a phase goes to the nearest boundary
 // sample (screen distance, frame pixels; a sample sits at its readback pixel's centre scaled to

@@ -50,8 +50,8 @@ if(NOT pooled STREQUAL "all" OR points LESS 500 OR slope LESS 0.6 OR slope GREAT
 endif()
 
 # ---- Bad input: one line naming the flag, exit 2, nothing written ----
-expect_run(2 "^$" "^lexel: error: --phases: must be a square[^\n]*got 5\n$"
-           error-model "${case}" --out "${WORK}/bad" --lights 2 --phases 5)
+expect_run(2 "^$" "^lexel: error: --phases: Value 257 not in range 1 to 256\n$"
+           error-model "${case}" --out "${WORK}/bad" --lights 2 --phases 257)
 expect_run(2 "^$" "^lexel: error: --method: sdsm renders more than one map[^\n]*\n$"
            error-model "${case}" --out "${WORK}/bad" --lights 2 --method sdsm)
 expect_run(2 "^$" "^lexel: error: --method[^\n]*nonsense[^\n]*\n$"
