@@ -77,6 +77,7 @@ void AddPriorPoints(const Readback& readback, const LightSpace& lightSpace,
         s->lsPrior.push_back(lightSpace.ToLight(buf.wsPosition[i]));
         s->priorDXdx1.push_back(lsFromWs * readback.dWdx1[i]);
         s->priorDXdx2.push_back(lsFromWs * readback.dWdx2[i]);
+        s->wsPrior.push_back(buf.wsPosition[i]);
     }
 }
 

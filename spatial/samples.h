@@ -50,6 +50,7 @@ struct LightSamples {
     // pixels (a receiver facing away is in attached shadow under every map); without them,
     // every smooth covered pixel. Empty for samples built by hand: no prior, no collapse guard.
     std::vector<glm::dvec3> lsPrior, priorDXdx1, priorDXdx2;
+    std::vector<glm::dvec3> wsPrior;  // their world points (partitions assign them by these)
 };
 
 // The most points the footprint prior keeps per light: enough for a mean over the view to within

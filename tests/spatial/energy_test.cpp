@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -14,7 +15,9 @@
 #include <string>
 
 #include "lexel/spatial/optimizer.h"
+#include "lexel/spatial/partitions.h"
 #include "lexel/spatial/samples.h"
+#include "lexel/spatial/temporal.h"
 
 namespace lexel::spatial {
 namespace {
@@ -252,6 +255,61 @@ TEST(EdgeNormal, IsTheUnitSobelGradientFromLitToShadowed) {
     shades[2 * 6 + 2] = Shade::kLit;
     shades[2 * 6 + 3] = Shade::kShadowed;
     EXPECT_EQ(EdgeNormalAt(r, shades, 2 * 6 + 2), glm::dvec2(1.0, 0.0));
+}
+
+TEST(Hysteresis, EdgeMedianAndThresholdAskTheSameAreaImprovementAsH) {
+    // Scaling the candidate's affine rows by c scales J by c: h's median by 1/c², e's by 1/c.
+    // Both replace the previous matrix exactly when c > 1/√0.8 ≈ 1.118.
+    std::mt19937_64 rng(19);
+    const LightSamples s = RandomSamples(rng, 41);
+    const LightMatrix m = MatrixFor(s, rng);
+    const double p4[3] = {m.p4.x, m.p4.y, m.p4.z};
+    std::vector<double> values;
+    for (std::size_t k = 0; k < s.lsX.size(); ++k)
+        values.push_back(SampleEdgeEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4, s.lsX[k],
+                                          s.dXdx1[k], s.dXdx2[k], s.edgeNormal[k]));
+    std::nth_element(values.begin(), values.begin() + 20, values.end());
+    EXPECT_EQ(MedianBadness(m, s, EnergyKind::kEdge), values[20]);
+    const Resolution map{400, 300};
+    const std::optional<LightMatrix> kept = RescaleToCover(m, s, map, 0.02);
+    ASSERT_TRUE(kept);
+    for (const EnergyKind kind : {EnergyKind::kReport, EnergyKind::kEdge})
+        for (const double c : {1.10, 1.13}) {
+            LightMatrix candidate = *kept;
+            candidate.p1 *= c, candidate.p2 *= c;
+            const HysteresisDecision d = ApplyHysteresis(m, candidate, s, map, 0.02, kind);
+            EXPECT_EQ(d.changed, c > 1.118) << "kind " << static_cast<int>(kind) << ", c " << c;
+        }
+}
+
+TEST(Partitions, CascadeSamplesCarryTheirNormalsAndPriorPoints) {
+    Camera camera;
+    camera.position = {0.0, 0.0, 0.0};
+    camera.target = {0.0, 0.0, -1.0};
+    std::vector<Cascade> cascades(2);
+    cascades[0].zFar = cascades[1].zNear = 5.0;
+    LightSamples s;
+    for (const double z : {3.0, 7.0, 4.0}) {
+        s.lsX.push_back({0.0, 0.0, z});
+        s.dXdx1.push_back({1.0, 0.0, 0.0});
+        s.dXdx2.push_back({0.0, 1.0, 0.0});
+        s.pixel.push_back(static_cast<std::uint32_t>(s.pixel.size()));
+        s.wsX.push_back({0.0, 0.0, -z});
+        s.edgeNormal.push_back({z / 10.0, 0.0});
+    }
+    for (const double z : {2.0, 8.0, 9.0}) {
+        s.lsPrior.push_back({0.0, 0.0, z});
+        s.priorDXdx1.push_back({z, 0.0, 0.0});
+        s.priorDXdx2.push_back({0.0, z, 0.0});
+        s.wsPrior.push_back({0.0, 0.0, -z});
+    }
+    const LightSamples near = SamplesOfCascade(s, {}, camera, cascades, 0);
+    EXPECT_EQ(near.edgeNormal, (std::vector<glm::dvec2>{{0.3, 0.0}, {0.4, 0.0}}));
+    EXPECT_EQ(near.lsPrior, (std::vector<glm::dvec3>{{0.0, 0.0, 2.0}}));
+    const LightSamples far = SamplesOfCascade(s, {}, camera, cascades, 1);
+    EXPECT_EQ(far.edgeNormal, (std::vector<glm::dvec2>{{0.7, 0.0}}));
+    EXPECT_EQ(far.priorDXdx1, (std::vector<glm::dvec3>{{8.0, 0.0, 0.0}, {9.0, 0.0, 0.0}}));
+    EXPECT_EQ(far.wsPrior.size(), 2u);
 }
 
 }  // namespace
