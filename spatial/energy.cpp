@@ -107,19 +107,122 @@ glm::dvec3 EnergyGradientJets(const LightMatrix& m, const LightSamples& s,
     return Gradient(m, s, options, true);
 }
 
+namespace {
+
+SearchEnergy::Points ToPoints(std::span<const glm::dvec3> X, std::span<const glm::dvec3> D1,
+                              std::span<const glm::dvec3> D2, std::span<const glm::dvec2> n) {
+    SearchEnergy::Points p;
+    p.count = X.size();
+    for (std::vector<double>& c : p.c) c.resize(p.count);
+    p.hasNormal.resize(p.count);
+    p.frontMargin.resize(p.count);
+    for (std::size_t k = 0; k < p.count; ++k) {
+        const glm::dvec3* v[3] = {&X[k], &D1[k], &D2[k]};
+        for (int a = 0; a < 3; ++a)
+            for (int c = 0; c < 3; ++c) p.c[3 * a + c][k] = (*v[a])[c];
+        const glm::dvec2 normal = n.empty() ? glm::dvec2(0.0) : n[k];
+        p.c[9][k] = normal.x;
+        p.c[10][k] = normal.y;
+        p.hasNormal[k] = normal.x == 0.0 && normal.y == 0.0 ? 0.0 : 1.0;
+        p.frontMargin[k] = 1e-9 * glm::length(X[k]);  // as InFront computes it
+    }
+    return p;
+}
+
+// The summands of points [begin, begin + n) for kind, and their p4·X, without branches: the
+// operations of SampleEnergy and SampleEdgeEnergy in their order (the edge summand squared).
+void Summands(const SearchEnergy::Points& p, std::size_t begin, std::size_t n, EnergyKind kind,
+              const LightMatrix& m, double* w, double* f) {
+    const double* x[3] = {&p.c[0][begin], &p.c[1][begin], &p.c[2][begin]};
+    const double* d1[3] = {&p.c[3][begin], &p.c[4][begin], &p.c[5][begin]};
+    const double* d2[3] = {&p.c[6][begin], &p.c[7][begin], &p.c[8][begin]};
+    const double *n1 = &p.c[9][begin], *n2 = &p.c[10][begin], *has = &p.hasNormal[begin];
+    const double* p1 = glm::value_ptr(m.p1);
+    const double* p2 = glm::value_ptr(m.p2);
+    const double p4[3] = {m.p4.x, m.p4.y, m.p4.z};
+    if (kind == EnergyKind::kReport) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const glm::dvec3 X(x[0][k], x[1][k], x[2][k]);
+            w[k] = glm::dot(m.p4, X);
+            f[k] = SampleEnergy(p1, p2, p4, X, glm::dvec3(d1[0][k], d1[1][k], d1[2][k]),
+                                glm::dvec3(d2[0][k], d2[1][k], d2[2][k]));
+        }
+        return;
+    }
+    const auto dot = [](const double* a, const glm::dvec3& v) {
+        return a[0] * v.x + a[1] * v.y + a[2] * v.z;
+    };
+    for (std::size_t k = 0; k < n; ++k) {  // SampleEdgeEnergy, the branch as a 0/1 factor
+        const glm::dvec3 X(x[0][k], x[1][k], x[2][k]);
+        const glm::dvec3 D1(d1[0][k], d1[1][k], d1[2][k]), D2(d2[0][k], d2[1][k], d2[2][k]);
+        w[k] = glm::dot(m.p4, X);
+        const double wX = dot(p4, X), wD1 = dot(p4, D1), wD2 = dot(p4, D2);
+        const double a1 = dot(p1, X), a2 = dot(p2, X);
+        const double invW = 1.0 / wX;
+        const double j11 = (dot(p1, D1) - a1 * wD1 * invW) * invW;
+        const double j12 = (dot(p1, D2) - a1 * wD2 * invW) * invW;
+        const double j21 = (dot(p2, D1) - a2 * wD1 * invW) * invW;
+        const double j22 = (dot(p2, D2) - a2 * wD2 * invW) * invW;
+        const double det = j11 * j22 - j12 * j21;
+        const double a = n1[k] * j22 - n2[k] * j21, b = n2[k] * j11 - n1[k] * j12;
+        const double qNone = 0.5 * (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22);
+        const double q = has[k] * (a * a + b * b) + (1.0 - has[k]) * qNone;
+        f[k] = q / (det * det);  // squared: the caller takes the root (std::sqrt sets errno,
+                                 // which keeps this loop from vectorizing)
+    }
+}
+
+// A summand of Summands as Energy has it.
+double Finish(EnergyKind kind, double f) { return kind == EnergyKind::kEdge ? std::sqrt(f) : f; }
+
+}  // namespace
+
 SearchEnergy::SearchEnergy(const LightSamples& samples, const EnergyOptions& options)
-    : samples_(samples), options_(options) {
-    if (options.IsReport()) report_.emplace(samples);
+    : options_(options) {
+    if (options.IsReport()) {
+        report_.emplace(samples);
+        return;
+    }
+    samples_ = ToPoints(samples.lsX, samples.dXdx1, samples.dXdx2,
+                        samples.edgeNormal.size() == samples.lsX.size()
+                            ? std::span<const glm::dvec2>(samples.edgeNormal)
+                            : std::span<const glm::dvec2>());
+    if (options.priorWeight != 0.0)
+        prior_ = ToPoints(samples.lsPrior, samples.priorDXdx1, samples.priorDXdx2, {});
 }
 
 double SearchEnergy::operator()(const LightMatrix& m, double bound) const {
     if (report_) return (*report_)(m, bound);
-    // The prior first: it is bounded and cheap, so a poor candidate stops early in the samples.
-    const double prior = PriorEnergy(m, samples_, options_);
-    if (prior >= bound) return prior;
-    const double sum = SampleSum(m, samples_, options_.kind, bound - prior);
-    // Stopped early: keep the result ≥ bound whatever the rounding of the subtraction.
-    return sum >= bound - prior ? std::max(sum + prior, bound) : sum + prior;
+    constexpr std::size_t kBlock = 64;
+    double w[kBlock], f[kBlock];
+    // The samples: SampleSum's sum, stopping at the bound.
+    double sum = 0.0;
+    for (std::size_t begin = 0; begin < samples_.count; begin += kBlock) {
+        const std::size_t n = std::min(kBlock, samples_.count - begin);
+        Summands(samples_, begin, n, options_.kind, m, w, f);
+        for (std::size_t k = 0; k < n; ++k) {
+            if (!(w[k] > samples_.frontMargin[begin + k])) return kInf;  // !InFront
+            const double fk = Finish(options_.kind, f[k]);
+            sum += std::isnan(fk) ? kInf : fk;
+            if (sum >= bound) return sum;
+        }
+    }
+    if (prior_.count == 0) return sum + 0.0;
+    // The prior: PriorEnergy's sum in its order, checked against the bound after every block
+    // (its partial sums only grow).
+    const double scale = options_.priorWeight / static_cast<double>(prior_.count);
+    double prior = 0.0;
+    for (std::size_t begin = 0; begin < prior_.count; begin += kBlock) {
+        const std::size_t n = std::min(kBlock, prior_.count - begin);
+        Summands(prior_, begin, n, options_.kind, m, w, f);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double fk = Finish(options_.kind, f[k]);
+            if (w[k] > prior_.frontMargin[begin + k] && std::isfinite(fk)) prior += fk;
+        }
+        if (begin + n < prior_.count && sum + scale * prior >= bound)
+            return std::max(sum + scale * prior, bound);
+    }
+    return sum + options_.priorWeight * prior / static_cast<double>(prior_.count);
 }
 
 std::optional<double> RelevantFootprint(const LightMatrix& m, const LightSamples& s) {

@@ -76,17 +76,29 @@ WeightedPoints PriorPoints(const LightSamples& samples, double priorWeight);
 
 // The search's energy: Energy(matrix, samples, options) when below `bound`, else some value
 // ≥ bound (+inf where a sample is not in front). BoundedEnergy (samples.h) when
-// options.IsReport(), so the search on h is today's, bit for bit.
+// options.IsReport(), so the search on h is today's, bit for bit. Otherwise the same savings as
+// BoundedEnergy, with the same values as Energy bit for bit: the points as structure-of-arrays
+// with their in-front margins, the summands in blocks without branches (the edge summand's
+// choice between n and no normal made by a 0/1 factor: 1·x + 0·y = x exactly for finite y), the
+// prior first (it cannot stop early: its non-finite terms are skipped), then the samples with
+// the early stop.
 class SearchEnergy {
   public:
     SearchEnergy(const LightSamples& samples, const EnergyOptions& options);
     double operator()(const LightMatrix& matrix,
                       double bound = std::numeric_limits<double>::infinity()) const;
 
+    // Points with derivatives, edge normals and in-front margins, component by component.
+    struct Points {
+        std::size_t count = 0;
+        std::vector<double> c[11];  // X, ∂X/∂x¹, ∂X/∂x², n (2), component by component
+        std::vector<double> hasNormal, frontMargin;
+    };
+
   private:
-    const LightSamples& samples_;
     EnergyOptions options_;
     std::optional<BoundedEnergy> report_;
+    Points samples_, prior_;
 };
 
 // The collapse guard's measure: the mean over the prior points of ||J⁻¹||_F (readback pixels
