@@ -511,6 +511,36 @@ void BM_WalkthroughMultiStart(benchmark::State& state) {
 }
 BENCHMARK(BM_WalkthroughMultiStart)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// `optimal` on the edge energy with its prior (optimal-e, energy.h) against `optimal` on h, per
+// light in one run on one core, from the same starts: ratio = optimal-e / optimal.
+void BM_WalkthroughMultiStartEdge(benchmark::State& state) {
+    tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
+    const Walkthrough& w = Case();
+    OptimizerOptions edge;
+    edge.energy = {EnergyKind::kEdge, kDefaultPriorWeight};
+    double reportMs = 0.0, edgeMs = 0.0;
+    for (auto _ : state) {
+        for (const PerLight& l : w.lights) {
+            BaselineContext context = w.Context(l.lightSpace);
+            context.samples = &l.samples;
+            const std::vector<OptimizerStart> starts = StandardStarts(context);
+            auto start = std::chrono::steady_clock::now();
+            MultiStartResult h = OptimizeFromStarts(l.samples, starts, w.scene.shadowMap);
+            benchmark::DoNotOptimize(h);
+            reportMs += MsSince(start);
+            start = std::chrono::steady_clock::now();
+            MultiStartResult e = OptimizeFromStarts(l.samples, starts, w.scene.shadowMap, edge);
+            benchmark::DoNotOptimize(e);
+            edgeMs += MsSince(start);
+        }
+    }
+    const double calls = static_cast<double>(state.iterations()) * w.lights.size();
+    state.counters["optimal_search_ms_per_light"] = reportMs / calls;
+    state.counters["optimal_e_search_ms_per_light"] = edgeMs / calls;
+    state.counters["ratio_e_to_h"] = edgeMs / reportMs;
+}
+BENCHMARK(BM_WalkthroughMultiStartEdge)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The partitioned methods (issue 14): per light, the cascades of one scheme at the default k = 4
 // against `optimal` (every start, Algorithm 1 from each) in the same run on one core; ratio =
 // scheme / optimal. Argument: the index into PartitionedMethodNames().

@@ -46,36 +46,4 @@ double FramePixelsFromReadbackArea(double readbackArea, Resolution readback, Res
            static_cast<double>(readback.Count());
 }
 
-glm::dvec2 EdgeNormalFromShades(Resolution resolution, std::span<const Shade> shades,
-                                std::uint32_t pixel) {
-    if (shades.size() != resolution.Count())
-        throw std::invalid_argument("EdgeNormalFromShades: shades do not match the resolution");
-    if (pixel >= shades.size())
-        throw std::invalid_argument("EdgeNormalFromShades: pixel outside the image");
-    const int x = static_cast<int>(pixel % static_cast<std::uint32_t>(resolution.width));
-    const int y = static_cast<int>(pixel / static_cast<std::uint32_t>(resolution.width));
-    const auto indicator = [&](Shade s, double fallback) {
-        if (s == Shade::kShadowed) return 1.0;
-        if (s == Shade::kLit) return 0.0;
-        return fallback;
-    };
-    const double centre = indicator(shades[pixel], 0.5);
-    glm::dvec2 gradient(0.0);
-    for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-            if (dx == 0 && dy == 0) continue;
-            const int nx = x + dx, ny = y + dy;
-            double value = centre;
-            if (nx >= 0 && ny >= 0 && nx < resolution.width && ny < resolution.height)
-                value =
-                    indicator(shades[static_cast<std::size_t>(ny) * resolution.width + nx], centre);
-            // Sobel: weight 2 on the axis, 1 on the diagonals.
-            const double weight = (dx == 0 || dy == 0) ? 2.0 : 1.0;
-            gradient += weight * (value - centre) * glm::dvec2(dx, dy);
-        }
-    }
-    const double length = glm::length(gradient);
-    return length > 0.0 ? gradient / length : glm::dvec2(0.0);
-}
-
 }  // namespace lexel::spatial

@@ -27,7 +27,7 @@
 //
 // The edge normal n̂ comes from the readback's decisions under the standard map (the map the
 // samples were found with): the 3×3 Sobel gradient of the shadowed indicator
-// (EdgeNormalFromShades).
+// (EdgeNormalAt, samples.h; LightSamples::edgeNormal).
 //
 // What the model leaves out (so a study must count those pixels apart):
 //  - thin shadows the readback misses (no boundary pixel near them) and shadows thinner than a
@@ -74,13 +74,5 @@ double EdgeLengthPerBoundaryPixel(glm::dvec2 normal);
 // is empty.
 double FramePixelsFromReadbackArea(double readbackArea, Resolution readback, Resolution frame);
 
-// The unit edge normal at `pixel` of an image of shadow decisions (row-major, resolution.Count()
-// entries, std::invalid_argument otherwise or for a pixel outside): the 3×3 Sobel gradient of
-// the indicator "kShadowed" over the kLit and kShadowed pixels, pointing towards the shadow, in
-// pixels (x¹ right, x² down). Neighbours outside the image or neither lit nor shadowed take the
-// centre's value (they say nothing). (0, 0) where the gradient vanishes (no edge through the
-// pixel, or a shadow one pixel thin).
-glm::dvec2 EdgeNormalFromShades(Resolution resolution, std::span<const Shade> shades,
-                                std::uint32_t pixel);
 
 }  // namespace lexel::spatial

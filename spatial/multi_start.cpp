@@ -51,7 +51,7 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
     OptimizerResult totals;
     for (std::size_t k = 0; k < starts.size(); ++k) {
         const OptimizerStart& start = starts[k];
-        out.startH.push_back(Energy(start.matrix, samples));
+        out.startH.push_back(Energy(start.matrix, samples, options.energy));
         out.searchH.push_back(std::numeric_limits<double>::infinity());
         if (out.startH[k] < bestH) {
             bestH = out.startH[k];

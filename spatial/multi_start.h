@@ -34,8 +34,9 @@ struct MultiStartResult {
                                   // the axis repeats an earlier start's)
 };
 
-// Algorithm 1 (OptimizeLightMatrix, without refinement) from each start's axis; the least h among
-// the starts' maps and the searches wins. With options.refine, the best search's axis is also
+// Algorithm 1 (OptimizeLightMatrix, without refinement) from each start's axis; the least energy
+// (options.energy: h by default; startH and searchH hold it) among the starts' maps and the
+// searches wins. With options.refine, the best search's axis is also
 // refined (optimal-refined) and competes too. `starts` must not be empty (std::invalid_argument).
 // Throws DomainError as OptimizeLightMatrix does.
 MultiStartResult OptimizeFromStarts(const LightSamples& samples,

@@ -92,13 +92,14 @@ struct RefinedEnergy {
     // unit step along −∇, a rotation of |∇| radians; h itself is in the thousands to millions,
     // and an unscaled first step leaves the valid cone and fails the line search.
     RefinedEnergy(std::span<const glm::dvec3> vertices, const LightSamples* samples, Resolution map,
-                  const FitOptions& options, double scale = 1.0)
+                  const FitOptions& options, double scale = 1.0, const EnergyOptions& energy = {})
         : vertices(vertices),
           samples(samples),
           map(map),
           margin(options.margin),
           shear(options.shear),
-          scale(scale) {}
+          scale(scale),
+          energy(energy) {}
 
     std::span<const glm::dvec3> vertices;
     const LightSamples* samples;
@@ -106,6 +107,41 @@ struct RefinedEnergy {
     double margin;
     bool shear = false;
     double scale = 1.0;
+    EnergyOptions energy;
+
+    // The chosen energy of the rows p1, p2 and axis p4 over the samples and the prior (energy.h).
+    template <typename T>
+    T Total(const T* p1, const T* p2, const T* p4, bool* inFront) const {
+        const LightSamples& s = *samples;
+        const bool edge = energy.kind == EnergyKind::kEdge;
+        const bool normals = s.edgeNormal.size() == s.lsX.size();
+        T total(0.0);
+        for (std::size_t k = 0; k < s.lsX.size(); ++k) {
+            const glm::dvec3& X = s.lsX[k];
+            if (!(ceres::internal::AsScalar(p4[0] * X.x + p4[1] * X.y + p4[2] * X.z) > 0.0)) {
+                *inFront = false;
+                return total;
+            }
+            if (!edge)
+                total += SampleEnergy(p1, p2, p4, X, s.dXdx1[k], s.dXdx2[k]);
+            else
+                total += SampleEdgeEnergy(p1, p2, p4, X, s.dXdx1[k], s.dXdx2[k],
+                                          normals ? s.edgeNormal[k] : glm::dvec2(0.0));
+        }
+        *inFront = true;
+        if (energy.priorWeight == 0.0 || s.lsPrior.empty()) return total;
+        T prior(0.0);
+        for (std::size_t k = 0; k < s.lsPrior.size(); ++k) {
+            const glm::dvec3& X = s.lsPrior[k];
+            if (!(ceres::internal::AsScalar(p4[0] * X.x + p4[1] * X.y + p4[2] * X.z) > 0.0))
+                continue;
+            const T f = edge ? SampleEdgeEnergy(p1, p2, p4, X, s.priorDXdx1[k], s.priorDXdx2[k],
+                                                glm::dvec2(0.0))
+                             : SampleEnergy(p1, p2, p4, X, s.priorDXdx1[k], s.priorDXdx2[k]);
+            if (std::isfinite(ceres::internal::AsScalar(f))) prior += f;
+        }
+        return total + prior * T(energy.priorWeight / static_cast<double>(s.lsPrior.size()));
+    }
 
     template <typename T>
     bool operator()(const T* p4, T* energy) const {
@@ -160,13 +196,9 @@ struct RefinedEnergy {
                                           T(0.5) * (hiU - loU), T(0.5) * (hiV - loV)};
         T p1[3], p2[3];
         detail::AffineRowsFromFrame(p4, b1, b2, frame, map, margin, p1, p2);
-        T total(0.0);
-        for (std::size_t k = 0; k < samples->lsX.size(); ++k) {
-            const glm::dvec3& X = samples->lsX[k];
-            if (!(ceres::internal::AsScalar(p4[0] * X.x + p4[1] * X.y + p4[2] * X.z) > 0.0))
-                return false;
-            total += SampleEnergy(p1, p2, p4, X, samples->dXdx1[k], samples->dXdx2[k]);
-        }
+        bool inFront = true;
+        const T total = Total(p1, p2, p4, &inFront);
+        if (!inFront) return false;
         *energy = total * T(scale);
         return ceres::internal::AsScalar(total) < std::numeric_limits<double>::infinity();
     }
@@ -177,8 +209,8 @@ struct RefinedEnergy {
 std::optional<double> RefinedObjective(std::span<const glm::dvec3> vertices,
                                        const LightSamples& samples, const glm::dvec3& p4,
                                        Resolution map, const FitOptions& options,
-                                       glm::dvec3* gradient) {
-    const RefinedEnergy energy(vertices, &samples, map, options);
+                                       glm::dvec3* gradient, const EnergyOptions& energyOptions) {
+    const RefinedEnergy energy(vertices, &samples, map, options, 1.0, energyOptions);
     if (!gradient) {
         double h = 0.0;
         const double x[3] = {p4.x, p4.y, p4.z};
@@ -274,13 +306,13 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
     };
 
     timer.Restart();
-    const BoundedEnergy energy(samples);  // Energy, stopping once h reaches the bound
+    const SearchEnergy energy(samples, options.energy);  // stops once the bound is reached
     glm::dvec3 p4 = glm::normalize(initialP4);
     std::optional<LightMatrix> best = fit(p4);
     double bestH = best ? energy(*best) : std::numeric_limits<double>::infinity();
     r.hAfterIteration.push_back(bestH);
     for (int it = 0; it < options.iterations && best; ++it) {
-        const glm::dvec3 g = EnergyGradientAnalytic(*best, samples);
+        const glm::dvec3 g = EnergyGradient(*best, samples, options.energy);
         const glm::dvec3 axis = glm::cross(p4, -g);
         const double axisLength = glm::length(axis);
         if (!(axisLength > 0.0) || !std::isfinite(axisLength)) break;
@@ -312,16 +344,19 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
         if (!best)
             throw DomainError(Subject::kLight,
                               "no light matrix from the initial axis sees every visible point");
-        bestH = Energy(*best, samples);
+        bestH = Energy(*best, samples, options.energy);
     }
     r.hBeforeRefine = bestH;
 
-    if (options.refine && hull && hull->Vertices().size() >= 3 && !samples.lsX.empty()) {
+    // h = 0 without samples: nothing to refine. The other energies have the prior to go by.
+    const bool anything = !samples.lsX.empty() || (options.energy.priorWeight > 0.0 &&
+                                                   !samples.lsPrior.empty() && bestH > 0.0);
+    if (options.refine && hull && hull->Vertices().size() >= 3 && anything) {
         timer.Restart();
         double x[3] = {p4.x, p4.y, p4.z};
         ceres::GradientProblem problem(
-            new ceres::AutoDiffFirstOrderFunction<RefinedEnergy, 3>(
-                new RefinedEnergy(hull->Vertices(), &samples, map, fitOptions, 1.0 / bestH)),
+            new ceres::AutoDiffFirstOrderFunction<RefinedEnergy, 3>(new RefinedEnergy(
+                hull->Vertices(), &samples, map, fitOptions, 1.0 / bestH, options.energy)),
             new ceres::SphereManifold<3>());
         ceres::GradientProblemSolver::Options solverOptions;
         solverOptions.max_num_iterations = options.refineIterations;
@@ -337,8 +372,10 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
         ceres::Solve(solverOptions, problem, x, &summary);
         const glm::dvec3 refined = glm::normalize(glm::dvec3(x[0], x[1], x[2]));
         if (const std::optional<LightMatrix> m = fit(refined)) {
-            const double h = Energy(*m, samples);
-            if (h < bestH) {
+            const double h = Energy(*m, samples, options.energy);
+            if (h < bestH && Collapses(*best, *m, samples, options.collapseFactor)) {
+                r.refineCollapsed = true;
+            } else if (h < bestH) {
                 bestH = h;
                 best = m;
             }

@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "lexel/spatial/energy.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/samples.h"
 
@@ -38,17 +39,34 @@ struct OptimizerOptions {
     // `optimal-shear`. Combined with `refine`, the Ceres objective differentiates the sheared
     // fit through its locally constant structure (RefinedObjective).
     bool shear = false;
+    // The energy the search, the refinement and every choice among candidates minimize
+    // (energy.h). The default, h alone, is the report's Algorithm 1, bit for bit.
+    EnergyOptions energy;
+    // The collapse guard (energy.h, Collapses): a refined matrix whose mean footprint over the
+    // prior points exceeds collapseFactor times the searched matrix's is not accepted, whatever
+    // its energy. 0: off (today's optimal-refined). kCollapseFactor is the guarded methods'.
+    double collapseFactor = 0.0;
 };
+
+// A refinement may trade the view's texels for its samples' by up to this factor in the mean
+// footprint (readback pixels per texel, a length: 4× in texel area) before it counts as a
+// collapse. Twice the footprint is already a quarter of the resolution over the view, far
+// beyond what moving the axis for a few boundary samples should cost; the collapse
+// (h 784 → 0.14 on 7 samples) changes it by far more.
+inline constexpr double kCollapseFactor = 2.0;
 
 struct OptimizerResult {
     LightMatrix matrix;
-    double h = 0.0;  // eq. (6) over the samples, (texels per pixel)⁻² summed: dimensionless
+    // The chosen energy (OptimizerOptions::energy) of `matrix`: with the default, eq. (6) over the
+    // samples, (texels per pixel)⁻² summed: dimensionless. So are hAfterIteration, hBeforeRefine.
+    double h = 0.0;
     std::vector<double> hAfterIteration;  // [0] the initial axis, then after each iteration
     double hBeforeRefine = 0.0;
     int candidatesTried = 0, candidatesRejected = 0;
     std::size_t hullVertices = 0;
     std::size_t coneGenerators = 0;  // points the per-light hull started from (3D hull vertices)
     bool usedFallback = false;       // no valid candidate: the initial (focused) fit is returned
+    bool refineCollapsed = false;    // the collapse guard rejected the refined matrix
     // Time profile (report Table 3): the per-light 2D hull, the rotation search, the refinement
     // (the per-frame 3D hull is Readback::relevantHullMs).
     double hullMs = 0.0, searchMs = 0.0, refineMs = 0.0;
@@ -80,7 +98,7 @@ glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& unitAxis, double a
 OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
                                     Resolution map, const OptimizerOptions& options = {});
 
-// The refinement's objective, exposed so that tests can hold it to its definition: h of
+// The refinement's objective, exposed so that tests can hold it to its definition: the energy of
 // FitMapToPoints(p4, vertices, map, options), computed by the scalar-generic re-implementation of
 // the fit that the Ceres refinement differentiates (the fit's combinatorial structure, found at
 // p4 in double, held fixed). With `gradient`, also ∂h/∂p4 through the fit by automatic
@@ -89,6 +107,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
 std::optional<double> RefinedObjective(std::span<const glm::dvec3> vertices,
                                        const LightSamples& samples, const glm::dvec3& p4,
                                        Resolution map, const FitOptions& options,
-                                       glm::dvec3* gradient = nullptr);
+                                       glm::dvec3* gradient = nullptr,
+                                       const EnergyOptions& energy = {});
 
 }  // namespace lexel::spatial

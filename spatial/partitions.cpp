@@ -142,7 +142,9 @@ LightMatrix FitPartition(PartitionScheme scheme, const BaselineContext& part,
         case PartitionScheme::kSdsmOptimal: {
             std::vector<OptimizerStart> starts = {{"sdsm", SdsmBox(part, false)}};
             for (OptimizerStart& s : StandardStarts(part)) starts.push_back(std::move(s));
-            return OptimizeFromStarts(partSamples, starts, part.map).result.matrix;
+            OptimizerOptions optimizer;
+            optimizer.energy = options.energy;
+            return OptimizeFromStarts(partSamples, starts, part.map, optimizer).result.matrix;
         }
     }
     throw std::invalid_argument("unknown partition scheme");
@@ -174,6 +176,15 @@ LightSamples SamplesOfCascade(const LightSamples& samples, std::span<const glm::
         out.dXdx2.push_back(samples.dXdx2[s]);
         out.pixel.push_back(samples.pixel[s]);
         out.wsX.push_back(samples.wsX[s]);
+        if (samples.edgeNormal.size() == samples.lsX.size())
+            out.edgeNormal.push_back(samples.edgeNormal[s]);
+    }
+    for (std::size_t k = 0; k < samples.wsPrior.size(); ++k) {
+        if (!serves(samples.wsPrior[k])) continue;
+        out.lsPrior.push_back(samples.lsPrior[k]);
+        out.priorDXdx1.push_back(samples.priorDXdx1[k]);
+        out.priorDXdx2.push_back(samples.priorDXdx2[k]);
+        out.wsPrior.push_back(samples.wsPrior[k]);
     }
     for (std::size_t i = 0; i < wsRelevant.size() && i < samples.lsRelevant.size(); ++i)
         if (serves(wsRelevant[i])) out.lsRelevant.push_back(samples.lsRelevant[i]);

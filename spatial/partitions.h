@@ -28,6 +28,7 @@
 
 #include "lexel/spatial/baselines.h"
 #include "lexel/spatial/cascades.h"
+#include "lexel/spatial/energy.h"
 #include "lexel/spatial/samples.h"
 
 namespace lexel::spatial {
@@ -43,6 +44,10 @@ struct PartitionOptions {
     double lambda = 0.5;  // pssm's blend of the logarithmic and the uniform split
     CascadeAllocation allocation = CascadeAllocation::kEqual;
     bool snap = false;  // sdsm: snap its boxes to whole texels (directional lights)
+    // The energy sdsm-optimal's multi-start minimizes per partition (energy.h; default h, today's
+    // maps). The Lagrange costs stay on h: the allocation's law c_i = h_i N_i assumes an energy
+    // that scales as 1/N_i with the texels, and e scales as N_i^(-1/2).
+    EnergyOptions energy;
 };
 
 // The cascades of `scheme` for the context's light. Their texels add up to context.map's (equal
@@ -55,8 +60,9 @@ std::vector<Cascade> PartitionedLightMatrices(PartitionScheme scheme,
                                               const LightSamples& samples,
                                               const PartitionOptions& options);
 
-// The samples a cascade serves (by their world points), with the relevant points it serves; the
-// relevant points must be context.wsRelevant's, in order (MakeLightSamples keeps that order).
+// The samples a cascade serves (by their world points), with their edge normals, the relevant
+// points and the prior's points it serves; the relevant points must be context.wsRelevant's, in
+// order (MakeLightSamples keeps that order).
 LightSamples SamplesOfCascade(const LightSamples& samples, std::span<const glm::dvec3> wsRelevant,
                               const Camera& camera, std::span<const Cascade> cascades,
                               std::size_t cascade);

@@ -37,14 +37,68 @@ std::vector<std::uint32_t> BoundaryPixels(Resolution resolution, std::span<const
     return pixels;
 }
 
+glm::dvec2 EdgeNormalAt(Resolution resolution, std::span<const Shade> shades, std::uint32_t pixel) {
+    if (shades.size() != resolution.Count())
+        throw std::invalid_argument("EdgeNormalAt: shades do not match the resolution");
+    if (pixel >= shades.size()) throw std::invalid_argument("EdgeNormalAt: pixel outside the image");
+    const int w = resolution.width, h = resolution.height;
+    const int x = static_cast<int>(pixel % static_cast<std::uint32_t>(w));
+    const int y = static_cast<int>(pixel / static_cast<std::uint32_t>(w));
+    const auto indicator = [](Shade s, double fallback) {
+        return s == Shade::kShadowed ? 1.0 : s == Shade::kLit ? 0.0 : fallback;
+    };
+    const double centre = indicator(shades[pixel], 0.0);
+    double s[3][3];
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = std::clamp(x + dx, 0, w - 1), ny = std::clamp(y + dy, 0, h - 1);
+            s[dy + 1][dx + 1] = indicator(shades[static_cast<std::size_t>(ny) * w + nx], centre);
+        }
+    const glm::dvec2 g((s[0][2] + 2.0 * s[1][2] + s[2][2]) - (s[0][0] + 2.0 * s[1][0] + s[2][0]),
+                       (s[2][0] + 2.0 * s[2][1] + s[2][2]) - (s[0][0] + 2.0 * s[0][1] + s[0][2]));
+    const double length = glm::length(g);
+    return length > 0.0 ? g / length : glm::dvec2(0.0);
+}
+
+namespace {
+
+// LightSamples::lsPrior and its derivatives: every `stride`-th eligible pixel in pixel order.
+void AddPriorPoints(const Readback& readback, const LightSpace& lightSpace,
+                    std::span<const Shade> shades, LightSamples* s) {
+    const CameraBuffer& buf = readback.buffer;
+    const auto eligible = [&](std::size_t i) {
+        if (!readback.smooth[i]) return false;
+        return shades.empty() || shades[i] == Shade::kLit || shades[i] == Shade::kShadowed;
+    };
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < buf.resolution.Count(); ++i) count += eligible(i);
+    const std::size_t stride = std::max<std::size_t>(1, (count + kPriorPoints - 1) / kPriorPoints);
+    const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
+    std::size_t seen = 0;
+    for (std::size_t i = 0; i < buf.resolution.Count(); ++i) {
+        if (!eligible(i) || seen++ % stride != 0) continue;
+        s->lsPrior.push_back(lightSpace.ToLight(buf.wsPosition[i]));
+        s->priorDXdx1.push_back(lsFromWs * readback.dWdx1[i]);
+        s->priorDXdx2.push_back(lsFromWs * readback.dWdx2[i]);
+        s->wsPrior.push_back(buf.wsPosition[i]);
+    }
+}
+
+}  // namespace
+
 LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& lightSpace,
-                                  std::span<const std::uint32_t> boundaryPixels) {
+                                  std::span<const std::uint32_t> boundaryPixels,
+                                  std::span<const Shade> shades) {
     const CameraBuffer& buf = readback.buffer;
     for (std::size_t k = 0; k < boundaryPixels.size(); ++k)
         if (boundaryPixels[k] >= buf.resolution.Count() ||
             (k > 0 && boundaryPixels[k] <= boundaryPixels[k - 1]))
             throw std::invalid_argument(
                 "LightSamplesAtPixels: pixels must be ascending and inside the readback");
+    if (!shades.empty() && shades.size() != buf.resolution.Count())
+        throw std::invalid_argument("LightSamplesAtPixels: " + std::to_string(shades.size()) +
+                                    " decisions for " + std::to_string(buf.resolution.Count()) +
+                                    " pixels");
     LightSamples s;
     const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
     s.lsRelevant.reserve(readback.wsRelevant.size());
@@ -60,14 +114,16 @@ LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& li
         s.dXdx2.push_back(lsFromWs * readback.dWdx2[i]);
         s.pixel.push_back(i);
         s.wsX.push_back(buf.wsPosition[i]);
+        if (!shades.empty()) s.edgeNormal.push_back(EdgeNormalAt(buf.resolution, shades, i));
     }
+    AddPriorPoints(readback, lightSpace, shades, &s);
     return s;
 }
 
 LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightSpace,
                               std::span<const Shade> shades) {
     return LightSamplesAtPixels(readback, lightSpace,
-                                BoundaryPixels(readback.buffer.resolution, shades));
+                                BoundaryPixels(readback.buffer.resolution, shades), shades);
 }
 
 void SampleJacobian(const LightMatrix& matrix, const glm::dvec3& lsX, const glm::dvec3& dXdx1,

@@ -32,12 +32,32 @@ struct LightSamples {
     std::vector<glm::dvec3> dXdx1, dXdx2;  // ∂X/∂x¹, ∂X/∂x² at each
     std::vector<std::uint32_t> pixel;      // readback pixel of each
     std::vector<glm::dvec3> wsX;           // the world point of each
-    std::vector<glm::dvec3> lsRelevant;    // every visible point in light space
+    // The unit normal of the shadow edge at each sample in readback pixels (x¹ = column, x² =
+    // row, as ∂X/∂x^j), pointing from lit to shadowed: the Sobel gradient of the shadowed
+    // indicator over the 3×3 neighbourhood (EdgeNormalAt). (0, 0) where that gradient vanishes
+    // (no defined edge direction). Empty when the samples were made without the shades
+    // (LightSamplesAtPixels without them, or by hand): the edge energy (energy.h) then treats
+    // every sample as having no normal.
+    std::vector<glm::dvec2> edgeNormal;
+    std::vector<glm::dvec3> lsRelevant;  // every visible point in light space
     // The readback's wsRelevantHull in light space: generators of the cone of lsRelevant, all
     // the optimizer needs of it (optimizer.h). Empty (samples built by hand): it uses lsRelevant.
     std::vector<glm::dvec3> lsRelevantHull;
     std::size_t boundaryPixels = 0;  // boundary pixels before rejecting non-smooth ones
+    // The footprint prior's points (energy.h): up to kPriorPoints relevant pixels with reliable
+    // derivatives, evenly strided in pixel order, in light space with ∂X/∂x^j as for the
+    // samples. Only receivers that need the map count: with the shades, kLit and kShadowed
+    // pixels (a receiver facing away is in attached shadow under every map); without them,
+    // every smooth covered pixel. Empty for samples built by hand: no prior, no collapse guard.
+    std::vector<glm::dvec3> lsPrior, priorDXdx1, priorDXdx2;
+    std::vector<glm::dvec3> wsPrior;  // their world points (partitions assign them by these)
 };
+
+// The most points the footprint prior keeps per light. The prior only has to rank maps by their
+// footprint over the view, so 64 points spread over it (every k-th in pixel order) suffice; on the
+// walkthrough 256 made optimal-e's searches 2.4 times h's (spatial_bench MultiStartEdge, one
+// core), 64 make them 1.7 times.
+inline constexpr std::size_t kPriorPoints = 64;
 
 // Boundary samples from the readback's shadow decisions `shades` (ShadePixels over
 // readback.buffer with a standard shadow map): LightSamplesAtPixels over BoundaryPixels.
@@ -52,9 +72,24 @@ std::vector<std::uint32_t> BoundaryPixels(Resolution resolution, std::span<const
 // The samples at boundary pixels found elsewhere (a GPU pass): `boundaryPixels` ascending and
 // inside the readback (std::invalid_argument otherwise). Pixels whose derivatives are not reliable
 // (readback.smooth) are dropped and counted in LightSamples::boundaryPixels, as MakeLightSamples
-// does: both give the same samples, bit for bit, from the same pixels.
+// does: both give the same samples, bit for bit, from the same pixels. With `shades` (the
+// readback's decisions the pixels were found in, resolution.Count() entries, else
+// std::invalid_argument) the samples get their edge normals and the prior its lit-or-shadowed
+// points, as MakeLightSamples; without them edgeNormal stays empty and the prior takes every
+// smooth covered pixel.
 LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& lightSpace,
-                                  std::span<const std::uint32_t> boundaryPixels);
+                                  std::span<const std::uint32_t> boundaryPixels,
+                                  std::span<const Shade> shades = {});
+
+// The unit normal of the shadow edge at `pixel` in readback pixels (x¹ = column, x² = row),
+// pointing from lit to shadowed: the Sobel operator (weights 1, 2, 1 across, ±1 along) on the
+// indicator s = 1 for kShadowed, 0 for kLit. A neighbour outside the image is the nearest pixel
+// inside (the border replicated, so an edge meeting the border keeps its direction); one neither
+// lit nor shadowed takes the centre's value (it says nothing about the edge: a one-sided
+// difference). (0, 0) when the gradient vanishes, e.g. a one-pixel-wide line of shadow, whose
+// two sides cancel. std::invalid_argument when `shades` does not have resolution.Count() entries
+// or `pixel` lies outside.
+glm::dvec2 EdgeNormalAt(Resolution resolution, std::span<const Shade> shades, std::uint32_t pixel);
 
 // J = ∂u/∂x at one sample (texels per readback pixel), as (row 1, row 2).
 void SampleJacobian(const LightMatrix& matrix, const glm::dvec3& lsX, const glm::dvec3& dXdx1,

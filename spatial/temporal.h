@@ -9,6 +9,7 @@
 
 #include <optional>
 
+#include "lexel/spatial/energy.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/samples.h"
 
@@ -23,16 +24,22 @@ struct HysteresisDecision {
     double medianCandidate = 0;  // median badness of the candidate
 };
 
-// Median of SampleBadness over the boundary samples (+inf when there are none in front).
-double MedianBadness(const LightMatrix& matrix, const LightSamples& samples);
+// Median of SampleBadness over the boundary samples (+inf when there are none in front). With
+// kEdge, the median of the edge energy's summand ||nᵀJ⁻¹|| (energy.h; +inf behind the plane).
+double MedianBadness(const LightMatrix& matrix, const LightSamples& samples,
+                     EnergyKind kind = EnergyKind::kReport);
 
 // The previous matrix with its affine part rescaled and shifted (not rotated) to cover every
 // relevant point; nullopt when a relevant point is no longer in front of its axis.
 std::optional<LightMatrix> RescaleToCover(const LightMatrix& previous, const LightSamples& samples,
                                           Resolution map, double margin);
 
+// The report's decision on MedianBadness of `kind`. The threshold is kSufficientImprovement on
+// h's squared footprints, and its square root on e's linear ones (√0.8 ≈ 0.894): the same
+// improvement in texel area either way.
 HysteresisDecision ApplyHysteresis(const std::optional<LightMatrix>& previous,
                                    const LightMatrix& candidate, const LightSamples& samples,
-                                   Resolution map, double margin);
+                                   Resolution map, double margin,
+                                   EnergyKind kind = EnergyKind::kReport);
 
 }  // namespace lexel::spatial

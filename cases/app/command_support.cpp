@@ -50,8 +50,16 @@ std::vector<std::string> MethodsOf(std::vector<std::string> methods,
 
 }  // namespace
 
+// What --method may name: every default method and the opt-in ones (run only when named).
+std::vector<std::string> NameableSpatialMethods() {
+    std::vector<std::string> known = spatial::SpatialMethodNames();
+    for (std::string& m : spatial::OptInMethodNames()) known.push_back(std::move(m));
+    return known;
+}
+
 std::vector<std::string> SpatialMethods(std::vector<std::string> methods) {
-    return MethodsOf(std::move(methods), spatial::SpatialMethodNames(), "3D");
+    if (methods.empty()) return spatial::SpatialMethodNames();
+    return MethodsOf(std::move(methods), NameableSpatialMethods(), "3D");
 }
 
 std::vector<std::string> SpatialMethodsOfCase(std::vector<std::string> methods,
@@ -61,6 +69,7 @@ std::vector<std::string> SpatialMethodsOfCase(std::vector<std::string> methods,
         for (std::string& m : CaseMethodNames(scene, forSweep)) known.push_back(std::move(m));
         return known;
     }
+    known = NameableSpatialMethods();
     for (const spatial::CaseMethod& m : scene.methods) known.push_back(m.name);
     return MethodsOf(std::move(methods), known, "3D");
 }

@@ -143,7 +143,7 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
             e.method = m;
             e.sample = s;
             e.pixel = ls.pixel[s];
-            e.normal = spatial::EdgeNormalFromShades(readback, standard, e.pixel);
+            e.normal = spatial::EdgeNormalAt(readback, standard, e.pixel);
             glm::dvec2 row1, row2;
             spatial::SampleJacobian(matrix, ls.lsX[s], ls.dXdx1[s], ls.dXdx2[s], &row1, &row2);
             const double length = spatial::EdgeLengthPerBoundaryPixel(e.normal);

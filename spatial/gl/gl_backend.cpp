@@ -59,14 +59,18 @@ class GlBackend final : public RenderBackend {
     LightSamples BoundarySamples(const Readback& readback, const LightSpace& lightSpace,
                                  const ShadowMap& map) const override {
         std::vector<std::uint32_t> pixels;
+        std::vector<Shade> shades;
         {
             const CurrentContext current(renderer_->context());
             renderer_->UploadCamera(CameraSlot::kReadback, readback.buffer);
             renderer_->UploadShadowMap(0, map);
             renderer_->ShadePass(CameraSlot::kReadback, 0, lightSpace);
             pixels = renderer_->BoundaryPixels(CameraSlot::kReadback);
+            // The decisions too (one byte a pixel): the edge normals and the prior's points
+            // (samples.h) come from them, as MakeLightSamples' do.
+            shades = renderer_->ReadShades(CameraSlot::kReadback);
         }
-        return LightSamplesAtPixels(readback, lightSpace, pixels);
+        return LightSamplesAtPixels(readback, lightSpace, pixels, shades);
     }
 
   private:

@@ -5,8 +5,9 @@
 //   - RenderShadowMap: the GPU map, read back (linear light depth, +inf where empty);
 //   - ShadePixels: the given buffers uploaded (points and normals as float) and shaded on the
 //     GPU with ShadePoint's decision;
-//   - BoundarySamples: the readback shaded and its boundary pixels found on the GPU; only those
-//     pixels come back (LightSamplesAtPixels builds the samples).
+//   - BoundarySamples: the readback shaded and its boundary pixels found on the GPU; those pixels
+//     and the readback's decisions come back (LightSamplesAtPixels builds the samples, their
+//     edge normals and the prior's points from them, as MakeLightSamples does on the CPU).
 //
 // Threads: one context for the process (context.h); every call makes it current on the calling
 // thread under its mutex, so calls from parallel threads (the sweep's lights) run one after

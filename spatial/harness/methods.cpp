@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "lexel/spatial/clip_matrix.h"
+#include "lexel/spatial/harness/oracle.h"
 #include "lexel/spatial/harness/warped_methods.h"
 #include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/tsm.h"
@@ -53,6 +54,10 @@ std::vector<std::string> VirtualMethodNames() { return {"vsm", "vsm-dynamic"}; }
 
 bool IsVirtualMethod(std::string_view name) { return name == "vsm" || name == "vsm-dynamic"; }
 
+std::vector<std::string> OptInMethodNames() {
+    return {"optimal-e", "optimal-refined-e", kOracleMethod};
+}
+
 namespace {
 
 // The registered methods (RegisterMethod): a deque, so that a pointer to one stays valid while
@@ -84,6 +89,13 @@ std::vector<std::string> BuiltInMethodNames() {
     for (const std::string& m : PartitionedMethodNames()) names.push_back(m);
     for (const std::string& m : TsmMethodNames()) names.push_back(m);
     for (const std::string& m : VirtualMethodNames()) names.push_back(m);
+    return names;
+}
+
+// The names RegisterMethod must not take: the built-in ones and the opt-in ones.
+std::vector<std::string> ReservedMethodNames() {
+    std::vector<std::string> names = BuiltInMethodNames();
+    for (std::string& m : OptInMethodNames()) names.push_back(std::move(m));
     return names;
 }
 
@@ -129,7 +141,7 @@ bool RegisterMethod(MethodRegistration method) {
     if (method.description.empty() || !method.compute)
         throw std::invalid_argument("RegisterMethod: '" + method.name +
                                     "' needs a description and a compute function");
-    const std::vector<std::string> builtIn = BuiltInMethodNames();
+    const std::vector<std::string> builtIn = ReservedMethodNames();
     Registry& registry = TheRegistry();
     const std::lock_guard lock(registry.mutex);
     const bool taken =
@@ -177,6 +189,9 @@ constexpr MethodDescription kDescriptions[] = {
     {"tsm-report", "tsm as the paper fits it: the view frustum and scene bounds"},
     {"vsm", "virtual shadow map: 16k² pages at the footprint's level, the single map's texels"},
     {"vsm-dynamic", "vsm with the LOD bias raised until its pages fit the pool (UE5)"},
+    {"optimal-e", "optimal on the edge energy e = sum ||n^T J^-1|| with the footprint prior"},
+    {"optimal-refined-e", "optimal-e, its best start refined on e, collapses rejected"},
+    {kOracleMethod, "bound: the best single matrix by the measured error (scored on the rays)"},
 };
 
 }  // namespace
@@ -190,7 +205,9 @@ std::string_view SpatialMethodDescription(std::string_view name) {
 
 bool IsSpatialMethod(std::string_view name) {
     const std::vector<std::string> names = SpatialMethodNames();
-    return std::find(names.begin(), names.end(), name) != names.end();
+    const std::vector<std::string> optIn = OptInMethodNames();
+    return std::find(names.begin(), names.end(), name) != names.end() ||
+           std::find(optIn.begin(), optIn.end(), name) != optIn.end();
 }
 
 bool IsFrustumFittedMethod(std::string_view name) {
@@ -244,8 +261,13 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
     if (!context.samples) throw std::invalid_argument(std::string(name) + " needs the samples");
     const Resolution map = context.baseline.map;
     OptimizerOptions options;
-    if (name == "optimal" || name == "optimal-refined") {
-        options.refine = name == "optimal-refined";
+    if (name == "optimal-e" || name == "optimal-refined-e") {
+        options.energy = {EnergyKind::kEdge, kDefaultPriorWeight};
+        options.collapseFactor = kCollapseFactor;
+    }
+    if (name == "optimal" || name == "optimal-refined" || name == "optimal-e" ||
+        name == "optimal-refined-e") {
+        options.refine = name == "optimal-refined" || name == "optimal-refined-e";
         const std::vector<OptimizerStart> starts = StandardStarts(context.baseline);
         MultiStartResult r = OptimizeFromStarts(*context.samples, starts, map, options);
         return {r.result.matrix,
@@ -314,13 +336,16 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
                     std::nullopt,
                     {}};
     if (name == "optimal" || name == "optimal-refined" || name == "optimal-report" ||
-        name == "optimal-shear")
+        name == "optimal-shear" || name == "optimal-e" || name == "optimal-refined-e")
         return Optimal(name, context);
     for (const NamedPartition& p : kPartitions)
         if (p.name == name) return Partitioned(p, context);
     if (IsVirtualMethod(name)) return Virtual(name, context);
     if (IsWarpedMethod(name)) return WarpedLightMatrix(name, context);
     if (const MethodRegistration* m = FindRegistered(name)) return m->compute(context);
+    if (name == kOracleMethod)
+        throw std::invalid_argument(std::string(name) +
+                                    " is scored against the truth: Evaluator::Evaluate computes it");
     throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 

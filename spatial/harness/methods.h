@@ -89,6 +89,14 @@ std::vector<std::string> TsmMethodNames();
 // is full; `vsm-dynamic` raises the LOD bias until the requests fit (UE5's dynamic resolution).
 std::vector<std::string> VirtualMethodNames();
 bool IsVirtualMethod(std::string_view name);
+// Methods that run only when asked for by name: not in SpatialMethodNames (so every default list
+// and its outputs stay as they are), yet computed by ComputeLightMatrix and described by
+// SpatialMethodDescription. `optimal-e`: optimal's multi-start on the edge energy e with the
+// footprint prior (energy.h); `optimal-refined-e`: it, its best start refined on e under the
+// collapse guard (kCollapseFactor, optimizer.h); `optimal-oracle` (oracle.h): the bound, which
+// the Evaluator computes against the truth (ComputeLightMatrix refuses it).
+std::vector<std::string> OptInMethodNames();
+// Whether ComputeLightMatrix knows the name: SpatialMethodNames or OptInMethodNames.
 bool IsSpatialMethod(std::string_view name);
 // One line saying what the method is (for `lexel --help`); empty for an unknown name.
 std::string_view SpatialMethodDescription(std::string_view name);

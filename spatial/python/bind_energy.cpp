@@ -4,6 +4,7 @@
 
 #include "bindings.h"
 #include "lexel/solvers/footprint_metrics.h"
+#include "lexel/spatial/energy.h"
 #include "lexel/spatial/energy_gradient.h"
 #include "lexel/spatial/samples.h"
 #include "numpy_convert.h"
@@ -33,6 +34,23 @@ const NamedEnergy kEnergies[] = {
      "plane). What Algorithm 1 minimizes.",
      [](const LightMatrix& m, const LightSamples& s) { return Energy(m, s); },
      &EnergyGradientAnalytic, &EnergyGradientJets, nullptr},
+    {"e",
+     "The edge energy (energy.h): the sum over the boundary samples of ||n^T J^-1||_2, n the "
+     "shadow edge's unit normal in readback pixels (||J^-1||_F/sqrt(2) where it has none), plus "
+     "the footprint prior at weight 1 (one boundary sample's worth of the view's mean "
+     "footprint). Readback pixels per pixel of edge; e/4 models the misclassified band.",
+     [](const LightMatrix& m, const LightSamples& s) {
+         return Energy(m, s, {EnergyKind::kEdge, kDefaultPriorWeight});
+     },
+     [](const LightMatrix& m, const LightSamples& s) {
+         return EnergyGradient(m, s, {EnergyKind::kEdge, kDefaultPriorWeight});
+     },
+     [](const LightMatrix& m, const LightSamples& s) {
+         return EnergyGradientJets(m, s, {EnergyKind::kEdge, kDefaultPriorWeight});
+     },
+     [](OptimizerOptions* o) {
+         o->energy = {EnergyKind::kEdge, kDefaultPriorWeight};
+     }},
 };
 
 const NamedEnergy& FindEnergy(const std::string& name) {

@@ -91,7 +91,7 @@ TEST(ErrorModel, BoundaryPixelsPerEdgeLengthAndSobelNormal) {
             const glm::dvec2 x(p % 400 + 0.5, p / 400 + 0.5);
             if (glm::length(x - glm::dvec2(200.3, 199.6)) > 150.0) continue;
             ++inside;
-            const glm::dvec2 sobel = EdgeNormalFromShades(r, shades, p);
+            const glm::dvec2 sobel = EdgeNormalAt(r, shades, p);
             worstCos = std::min(worstCos, glm::dot(sobel, n));
             sum += sobel;
         }
@@ -112,14 +112,14 @@ TEST(ErrorModel, SobelNormalIgnoresPixelsThatSayNothing) {
     shades[2] = shades[5] = shades[8] = Shade::kShadowed;  // the right column
     shades[0] = Shade::kEmpty;
     shades[6] = Shade::kFacingAway;
-    const glm::dvec2 n = EdgeNormalFromShades(r, shades, 4);
+    const glm::dvec2 n = EdgeNormalAt(r, shades, 4);
     EXPECT_NEAR(n.x, 1.0, 1e-12);
     EXPECT_NEAR(n.y, 0.0, 1e-12);
     // A shadow one pixel thin has no gradient at its centre.
     std::vector<Shade> line(9, Shade::kLit);
     line[3] = line[4] = line[5] = Shade::kShadowed;
-    EXPECT_EQ(EdgeNormalFromShades(r, line, 4), glm::dvec2(0.0));
-    EXPECT_THROW(EdgeNormalFromShades(r, line, 9), std::invalid_argument);
+    EXPECT_EQ(EdgeNormalAt(r, line, 4), glm::dvec2(0.0));
+    EXPECT_THROW(EdgeNormalAt(r, line, 9), std::invalid_argument);
 }
 
 }  // namespace

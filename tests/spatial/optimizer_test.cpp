@@ -294,6 +294,56 @@ TEST(Optimizer, SearchNeverIncreasesHAndRefinementNeverHurts) {
     }
 }
 
+TEST(Optimizer, CollapseGuardRejectsARefinementThatStarvesTheView) {
+    // The case in miniature: a light with a handful of boundary samples (7, from one
+    // end of the edge), where the refinement on h alone can shrink those samples' texels by
+    // turning the axis until the rest of the view's texels blow up.
+    TriangleMesh scene = testing::FloorQuad(20.0);
+    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 2.0, 1.0}));
+    const auto renderer = MakeCpuRenderer(scene);
+    Camera camera;
+    camera.position = {0.0, 1.7, 12.0};
+    camera.target = {0.0, 0.5, 0.0};
+    const Readback rb = RenderReadback(*renderer, camera, {180, 180});
+    const Bounds bounds = scene.ComputeBounds();
+    const Resolution map{400, 400};
+    int collapsed = 0;
+    for (const glm::dvec3 lightPos :
+         {glm::dvec3(-30, 25, -25), glm::dvec3(40, 15, 10), glm::dvec3(5, 60, -5)}) {
+        Light light;
+        light.position = lightPos;
+        const LightSpace ls(light, bounds);
+        LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, map);
+        ASSERT_GT(s.lsX.size(), 7u);
+        for (auto* v : {&s.lsX, &s.dXdx1, &s.dXdx2, &s.wsX}) v->resize(7);
+        s.pixel.resize(7);
+        s.edgeNormal.resize(7);
+        OptimizerOptions options;
+        const OptimizerResult searched = OptimizeLightMatrix(s, {0, 0, 1}, map, options);
+        options.refine = true;
+        const OptimizerResult unguarded = OptimizeLightMatrix(s, {0, 0, 1}, map, options);
+        options.collapseFactor = kCollapseFactor;
+        const OptimizerResult guarded = OptimizeLightMatrix(s, {0, 0, 1}, map, options);
+        const double start = *RelevantFootprint(searched.matrix, s);
+        const double unguardedRatio = *RelevantFootprint(unguarded.matrix, s) / start;
+        const double guardedRatio = *RelevantFootprint(guarded.matrix, s) / start;
+        std::cout << "[   INFO   ] light (" << lightPos.x << ", " << lightPos.y << ", "
+                  << lightPos.z << "): h " << searched.h << " -> refined " << unguarded.h
+                  << ", view footprint x" << unguardedRatio << "; guarded h " << guarded.h << ", x"
+                  << guardedRatio << "\n";
+        EXPECT_LE(guardedRatio, kCollapseFactor);
+        EXPECT_LE(guarded.h, searched.h);
+        EXPECT_EQ(guarded.refineCollapsed, unguardedRatio > kCollapseFactor);
+        if (unguardedRatio > kCollapseFactor) {
+            ++collapsed;
+            EXPECT_EQ(guarded.matrix.p4, searched.matrix.p4);  // the search's matrix is kept
+        } else {
+            EXPECT_EQ(guarded.h, unguarded.h);  // the guard changes nothing else
+        }
+    }
+    EXPECT_GE(collapsed, 1);  // the construction does produce a collapse to reject
+}
+
 // The walkthrough's readback (report §3) and lights of both kinds around it.
 struct WalkthroughFrame {
     Scene scene;

@@ -67,6 +67,53 @@ TEST(LightSamples, BoundarySamplesSitOnTheShadowEdge) {
         EXPECT_TRUE(mixed) << "sample at " << ws.x << "," << ws.z;
     }
 }
+TEST(LightSamples, EdgeNormalsPointFromLitToShadowed) {
+    // On the floor, two readback pixels along the edge normal from a sample is in the box's
+    // analytic shadow and two pixels against it is lit (screen steps through ∂W/∂x^j).
+    TriangleMesh scene = testing::FloorQuad(30.0);
+    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
+    const auto renderer = MakeCpuRenderer(scene);
+    const Camera camera = testing::ReadbackCamera();
+    const Readback rb = RenderReadback(*renderer, camera, camera.resolution);
+    Light light;
+    light.position = {-20.0, 30.0, -10.0};
+    const Bounds bounds = scene.ComputeBounds();
+    const LightSpace ls(light, bounds);
+    const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, {1024, 1024});
+    ASSERT_EQ(s.edgeNormal.size(), s.lsX.size());
+    int checked = 0, agree = 0, undefined = 0;
+    for (std::size_t k = 0; k < s.lsX.size(); ++k) {
+        const glm::dvec2 n = s.edgeNormal[k];
+        if (n == glm::dvec2(0.0)) {
+            ++undefined;
+            continue;
+        }
+        EXPECT_NEAR(glm::length(n), 1.0, 1e-15);
+        const std::size_t i = s.pixel[k];
+        const glm::dvec3 ws = rb.buffer.wsPosition[i];
+        if (std::abs(ws.y) > 1e-9) continue;
+        const glm::dvec3 step = 2.0 * (n.x * rb.dWdx1[i] + n.y * rb.dWdx2[i]);
+        ++checked;
+        agree += testing::SegmentHitsBox(ws + step, light.position, {-1, 0, -1}, {1, 1.5, 1}) &&
+                 !testing::SegmentHitsBox(ws - step, light.position, {-1, 0, -1}, {1, 1.5, 1});
+    }
+    ASSERT_GT(checked, 50);
+    EXPECT_GE(agree, 0.9 * checked) << agree << " of " << checked;
+    EXPECT_LT(undefined, 0.05 * double(s.lsX.size()));
+    // The prior's points: lit or shadowed smooth receivers, at most kPriorPoints, in light space.
+    ASSERT_FALSE(s.lsPrior.empty());
+    EXPECT_LE(s.lsPrior.size(), kPriorPoints);
+    EXPECT_EQ(s.priorDXdx1.size(), s.lsPrior.size());
+    EXPECT_EQ(s.wsPrior.size(), s.lsPrior.size());
+    for (std::size_t k = 0; k < s.lsPrior.size(); ++k)
+        EXPECT_LT(glm::length(ls.ToLight(s.wsPrior[k]) - s.lsPrior[k]), 1e-12);
+    // The same pixels without the shades: no normals, the prior over every smooth pixel.
+    const LightSamples bare = LightSamplesAtPixels(rb, ls, s.pixel);
+    EXPECT_TRUE(bare.edgeNormal.empty());
+    EXPECT_EQ(bare.lsX, s.lsX);
+    EXPECT_FALSE(bare.lsPrior.empty());
+}
+
 TEST(BoundedEnergy, EqualsEnergyBitForBitBelowTheBound) {
     TriangleMesh scene = testing::FloorQuad(30.0);
     scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));

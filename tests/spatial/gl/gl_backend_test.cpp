@@ -95,6 +95,20 @@ TEST_F(GlTest, EvaluationAgreesWithTheCpuBackendPerLight) {
         const std::size_t sampleDiff =
             c.samples.pixel.size() + g.samples.pixel.size() - 2 * common.size();
         EXPECT_LE(sampleDiff, c.samples.pixel.size() / 100) << "light " << l;
+        // The GL backend's samples carry the CPU's edge normals (the same decisions, read back).
+        ASSERT_EQ(g.samples.edgeNormal.size(), g.samples.lsX.size()) << "light " << l;
+        std::size_t sameNormal = 0, compared = 0;
+        for (std::size_t a = 0, b = 0; a < c.samples.pixel.size() && b < g.samples.pixel.size();) {
+            if (c.samples.pixel[a] < g.samples.pixel[b]) {
+                ++a;
+            } else if (g.samples.pixel[b] < c.samples.pixel[a]) {
+                ++b;
+            } else {
+                ++compared;
+                sameNormal += c.samples.edgeNormal[a++] == g.samples.edgeNormal[b++];
+            }
+        }
+        EXPECT_GE(sameNormal + compared / 50, compared) << "light " << l;
         std::cout << "[   INFO   ] light " << l << ": counted " << c.receiverPixels << ", focused "
                   << cf.misclassified << " / " << gf.misclassified << " (cpu / gl), samples "
                   << c.samples.lsX.size() << " / " << g.samples.lsX.size() << '\n';

@@ -201,9 +201,11 @@ TEST_F(GlTest, BoundaryPixelsOnTheGpuAreTheCpuExtractionOfTheSameDecisions) {
             pixels = renderer.BoundaryPixels(gl::CameraSlot::kReadback);
         }
         EXPECT_EQ(pixels, BoundaryPixels(scene.readback, shades));
-        const LightSamples gpu = LightSamplesAtPixels(readback, ls, pixels);
+        const LightSamples gpu = LightSamplesAtPixels(readback, ls, pixels, shades);
         const LightSamples reference = MakeLightSamples(readback, ls, shades);
         EXPECT_EQ(gpu.pixel, reference.pixel);
+        EXPECT_EQ(gpu.edgeNormal, reference.edgeNormal);  // the GL backend's path
+        EXPECT_EQ(gpu.lsPrior, reference.lsPrior);
         EXPECT_EQ(gpu.boundaryPixels, reference.boundaryPixels);
         EXPECT_GT(gpu.lsX.size(), 100u);
         const ShadeDiff d = CompareShades(cpu->ShadePixels(readback.buffer, ls, map), shades);

@@ -1,0 +1,251 @@
+#include "lexel/spatial/energy.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+namespace lexel::spatial {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+glm::dvec2 EdgeNormalOf(const LightSamples& samples, std::size_t k) {
+    return samples.edgeNormal.size() == samples.lsX.size() ? samples.edgeNormal[k]
+                                                           : glm::dvec2(0.0);
+}
+
+// One summand of the chosen energy, no in-front test (NaN: singular).
+double Summand(const LightMatrix& m, EnergyKind kind, const glm::dvec3& X, const glm::dvec3& D1,
+               const glm::dvec3& D2, const glm::dvec2& n) {
+    const double p4[3] = {m.p4.x, m.p4.y, m.p4.z};
+    if (kind == EnergyKind::kReport)
+        return SampleEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4, X, D1, D2);
+    return SampleEdgeEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4, X, D1, D2, n);
+}
+
+// Σ over the boundary samples, stopping at `bound` (every summand ≥ 0 or +inf).
+double SampleSum(const LightMatrix& m, const LightSamples& s, EnergyKind kind, double bound) {
+    double total = 0.0;
+    for (std::size_t k = 0; k < s.lsX.size(); ++k) {
+        if (!InFront(m.p4, s.lsX[k])) return kInf;
+        const double f = Summand(m, kind, s.lsX[k], s.dXdx1[k], s.dXdx2[k], EdgeNormalOf(s, k));
+        total += std::isnan(f) ? kInf : f;
+        if (total >= bound) return total;
+    }
+    return total;
+}
+
+}  // namespace
+
+double PriorEnergy(const LightMatrix& m, const LightSamples& s, const EnergyOptions& options) {
+    if (options.priorWeight == 0.0 || s.lsPrior.empty()) return 0.0;
+    double total = 0.0;
+    for (std::size_t k = 0; k < s.lsPrior.size(); ++k) {
+        if (!InFront(m.p4, s.lsPrior[k])) continue;
+        const double f =
+            Summand(m, options.kind, s.lsPrior[k], s.priorDXdx1[k], s.priorDXdx2[k], {0.0, 0.0});
+        if (std::isfinite(f)) total += f;
+    }
+    return options.priorWeight * total / static_cast<double>(s.lsPrior.size());
+}
+
+double Energy(const LightMatrix& m, const LightSamples& s, const EnergyOptions& options) {
+    if (options.IsReport()) return Energy(m, s);
+    const double samplesPart = SampleSum(m, s, options.kind, kInf);
+    return samplesPart + PriorEnergy(m, s, options);
+}
+
+WeightedPoints BoundaryPoints(const LightSamples& s) {
+    return {s.lsX, s.dXdx1, s.dXdx2,
+            s.edgeNormal.size() == s.lsX.size() ? std::span<const glm::dvec2>(s.edgeNormal)
+                                                : std::span<const glm::dvec2>(),
+            1.0};
+}
+
+WeightedPoints PriorPoints(const LightSamples& s, double priorWeight) {
+    const double weight = s.lsPrior.empty() ? 0.0 : priorWeight / double(s.lsPrior.size());
+    return {s.lsPrior, s.priorDXdx1, s.priorDXdx2, {}, weight};
+}
+
+namespace {
+
+// Σ weight ∂||J⁻¹||_F²/∂p4 over the prior points (h's summand, eq. 10–11).
+glm::dvec3 ReportPriorGradient(const LightMatrix& m, const LightSamples& s, double priorWeight,
+                               bool jets) {
+    if (priorWeight == 0.0 || s.lsPrior.empty()) return glm::dvec3(0.0);
+    LightSamples prior;
+    prior.lsX = s.lsPrior;
+    prior.dXdx1 = s.priorDXdx1;
+    prior.dXdx2 = s.priorDXdx2;
+    const glm::dvec3 g = jets ? EnergyGradientJets(m, prior) : EnergyGradientAnalytic(m, prior);
+    return priorWeight / double(s.lsPrior.size()) * g;
+}
+
+glm::dvec3 Gradient(const LightMatrix& m, const LightSamples& s, const EnergyOptions& options,
+                    bool jets) {
+    if (options.kind == EnergyKind::kReport) {
+        const glm::dvec3 g = jets ? EnergyGradientJets(m, s) : EnergyGradientAnalytic(m, s);
+        if (options.priorWeight == 0.0) return g;
+        return g + ReportPriorGradient(m, s, options.priorWeight, jets);
+    }
+    const auto edge = jets ? &EdgeEnergyGradientJets : &EdgeEnergyGradientAnalytic;
+    glm::dvec3 g = edge(m, BoundaryPoints(s));
+    if (options.priorWeight != 0.0) g += edge(m, PriorPoints(s, options.priorWeight));
+    return g;
+}
+
+}  // namespace
+
+glm::dvec3 EnergyGradient(const LightMatrix& m, const LightSamples& s,
+                          const EnergyOptions& options) {
+    return Gradient(m, s, options, false);
+}
+
+glm::dvec3 EnergyGradientJets(const LightMatrix& m, const LightSamples& s,
+                              const EnergyOptions& options) {
+    return Gradient(m, s, options, true);
+}
+
+namespace {
+
+SearchEnergy::Points ToPoints(std::span<const glm::dvec3> X, std::span<const glm::dvec3> D1,
+                              std::span<const glm::dvec3> D2, std::span<const glm::dvec2> n) {
+    SearchEnergy::Points p;
+    p.count = X.size();
+    for (std::vector<double>& c : p.c) c.resize(p.count);
+    p.hasNormal.resize(p.count);
+    p.frontMargin.resize(p.count);
+    for (std::size_t k = 0; k < p.count; ++k) {
+        const glm::dvec3* v[3] = {&X[k], &D1[k], &D2[k]};
+        for (int a = 0; a < 3; ++a)
+            for (int c = 0; c < 3; ++c) p.c[3 * a + c][k] = (*v[a])[c];
+        const glm::dvec2 normal = n.empty() ? glm::dvec2(0.0) : n[k];
+        p.c[9][k] = normal.x;
+        p.c[10][k] = normal.y;
+        p.hasNormal[k] = normal.x == 0.0 && normal.y == 0.0 ? 0.0 : 1.0;
+        p.frontMargin[k] = 1e-9 * glm::length(X[k]);  // as InFront computes it
+    }
+    return p;
+}
+
+// The summands of points [begin, begin + n) for kind, and their p4·X, without branches: the
+// operations of SampleEnergy and SampleEdgeEnergy in their order (the edge summand squared).
+void Summands(const SearchEnergy::Points& p, std::size_t begin, std::size_t n, EnergyKind kind,
+              const LightMatrix& m, double* w, double* f) {
+    const double* x[3] = {&p.c[0][begin], &p.c[1][begin], &p.c[2][begin]};
+    const double* d1[3] = {&p.c[3][begin], &p.c[4][begin], &p.c[5][begin]};
+    const double* d2[3] = {&p.c[6][begin], &p.c[7][begin], &p.c[8][begin]};
+    const double *n1 = &p.c[9][begin], *n2 = &p.c[10][begin], *has = &p.hasNormal[begin];
+    const double* p1 = glm::value_ptr(m.p1);
+    const double* p2 = glm::value_ptr(m.p2);
+    const double p4[3] = {m.p4.x, m.p4.y, m.p4.z};
+    if (kind == EnergyKind::kReport) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const glm::dvec3 X(x[0][k], x[1][k], x[2][k]);
+            w[k] = glm::dot(m.p4, X);
+            f[k] = SampleEnergy(p1, p2, p4, X, glm::dvec3(d1[0][k], d1[1][k], d1[2][k]),
+                                glm::dvec3(d2[0][k], d2[1][k], d2[2][k]));
+        }
+        return;
+    }
+    const auto dot = [](const double* a, const glm::dvec3& v) {
+        return a[0] * v.x + a[1] * v.y + a[2] * v.z;
+    };
+    for (std::size_t k = 0; k < n; ++k) {  // SampleEdgeEnergy, the branch as a 0/1 factor
+        const glm::dvec3 X(x[0][k], x[1][k], x[2][k]);
+        const glm::dvec3 D1(d1[0][k], d1[1][k], d1[2][k]), D2(d2[0][k], d2[1][k], d2[2][k]);
+        w[k] = glm::dot(m.p4, X);
+        const double wX = dot(p4, X), wD1 = dot(p4, D1), wD2 = dot(p4, D2);
+        const double a1 = dot(p1, X), a2 = dot(p2, X);
+        const double invW = 1.0 / wX;
+        const double j11 = (dot(p1, D1) - a1 * wD1 * invW) * invW;
+        const double j12 = (dot(p1, D2) - a1 * wD2 * invW) * invW;
+        const double j21 = (dot(p2, D1) - a2 * wD1 * invW) * invW;
+        const double j22 = (dot(p2, D2) - a2 * wD2 * invW) * invW;
+        const double det = j11 * j22 - j12 * j21;
+        const double a = n1[k] * j22 - n2[k] * j21, b = n2[k] * j11 - n1[k] * j12;
+        const double qNone = 0.5 * (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22);
+        const double q = has[k] * (a * a + b * b) + (1.0 - has[k]) * qNone;
+        f[k] = q / (det * det);  // squared: the caller takes the root (std::sqrt sets errno,
+                                 // which keeps this loop from vectorizing)
+    }
+}
+
+// A summand of Summands as Energy has it.
+double Finish(EnergyKind kind, double f) { return kind == EnergyKind::kEdge ? std::sqrt(f) : f; }
+
+}  // namespace
+
+SearchEnergy::SearchEnergy(const LightSamples& samples, const EnergyOptions& options)
+    : options_(options) {
+    if (options.IsReport()) {
+        report_.emplace(samples);
+        return;
+    }
+    samples_ = ToPoints(samples.lsX, samples.dXdx1, samples.dXdx2,
+                        samples.edgeNormal.size() == samples.lsX.size()
+                            ? std::span<const glm::dvec2>(samples.edgeNormal)
+                            : std::span<const glm::dvec2>());
+    if (options.priorWeight != 0.0)
+        prior_ = ToPoints(samples.lsPrior, samples.priorDXdx1, samples.priorDXdx2, {});
+}
+
+double SearchEnergy::operator()(const LightMatrix& m, double bound) const {
+    if (report_) return (*report_)(m, bound);
+    constexpr std::size_t kBlock = 64;
+    double w[kBlock], f[kBlock];
+    // The samples: SampleSum's sum, stopping at the bound.
+    double sum = 0.0;
+    for (std::size_t begin = 0; begin < samples_.count; begin += kBlock) {
+        const std::size_t n = std::min(kBlock, samples_.count - begin);
+        Summands(samples_, begin, n, options_.kind, m, w, f);
+        for (std::size_t k = 0; k < n; ++k) {
+            if (!(w[k] > samples_.frontMargin[begin + k])) return kInf;  // !InFront
+            const double fk = Finish(options_.kind, f[k]);
+            sum += std::isnan(fk) ? kInf : fk;
+            if (sum >= bound) return sum;
+        }
+    }
+    if (prior_.count == 0) return sum + 0.0;
+    // The prior: PriorEnergy's sum in its order, checked against the bound after every block
+    // (its partial sums only grow).
+    const double scale = options_.priorWeight / static_cast<double>(prior_.count);
+    double prior = 0.0;
+    for (std::size_t begin = 0; begin < prior_.count; begin += kBlock) {
+        const std::size_t n = std::min(kBlock, prior_.count - begin);
+        Summands(prior_, begin, n, options_.kind, m, w, f);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double fk = Finish(options_.kind, f[k]);
+            if (w[k] > prior_.frontMargin[begin + k] && std::isfinite(fk)) prior += fk;
+        }
+        if (begin + n < prior_.count && sum + scale * prior >= bound)
+            return std::max(sum + scale * prior, bound);
+    }
+    return sum + options_.priorWeight * prior / static_cast<double>(prior_.count);
+}
+
+std::optional<double> RelevantFootprint(const LightMatrix& m, const LightSamples& s) {
+    double total = 0.0;
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < s.lsPrior.size(); ++k) {
+        if (!InFront(m.p4, s.lsPrior[k])) continue;
+        // ||J⁻¹||_F = √2 · f_e without a normal.
+        const double f = Summand(m, EnergyKind::kEdge, s.lsPrior[k], s.priorDXdx1[k],
+                                 s.priorDXdx2[k], glm::dvec2(0.0));
+        if (std::isfinite(f)) total += std::sqrt(2.0) * f, ++count;
+    }
+    if (count == 0) return std::nullopt;
+    return total / static_cast<double>(count);
+}
+
+bool Collapses(const LightMatrix& start, const LightMatrix& refined, const LightSamples& s,
+               double factor) {
+    if (!(factor > 0.0)) return false;
+    const std::optional<double> before = RelevantFootprint(start, s);
+    const std::optional<double> after = RelevantFootprint(refined, s);
+    if (!before || !after) return false;
+    return *after > factor * *before;
+}
+
+}  // namespace lexel::spatial
