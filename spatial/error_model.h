@@ -74,5 +74,4 @@ double EdgeLengthPerBoundaryPixel(glm::dvec2 normal);
 // is empty.
 double FramePixelsFromReadbackArea(double readbackArea, Resolution readback, Resolution frame);
 
-
 }  // namespace lexel::spatial

@@ -40,7 +40,8 @@ std::vector<std::uint32_t> BoundaryPixels(Resolution resolution, std::span<const
 glm::dvec2 EdgeNormalAt(Resolution resolution, std::span<const Shade> shades, std::uint32_t pixel) {
     if (shades.size() != resolution.Count())
         throw std::invalid_argument("EdgeNormalAt: shades do not match the resolution");
-    if (pixel >= shades.size()) throw std::invalid_argument("EdgeNormalAt: pixel outside the image");
+    if (pixel >= shades.size())
+        throw std::invalid_argument("EdgeNormalAt: pixel outside the image");
     const int w = resolution.width, h = resolution.height;
     const int x = static_cast<int>(pixel % static_cast<std::uint32_t>(w));
     const int y = static_cast<int>(pixel / static_cast<std::uint32_t>(w));

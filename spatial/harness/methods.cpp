@@ -344,8 +344,8 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
     if (IsWarpedMethod(name)) return WarpedLightMatrix(name, context);
     if (const MethodRegistration* m = FindRegistered(name)) return m->compute(context);
     if (name == kOracleMethod)
-        throw std::invalid_argument(std::string(name) +
-                                    " is scored against the truth: Evaluator::Evaluate computes it");
+        throw std::invalid_argument(
+            std::string(name) + " is scored against the truth: Evaluator::Evaluate computes it");
     throw std::invalid_argument("unknown 3D method '" + std::string(name) + "'");
 }
 
