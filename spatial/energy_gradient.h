@@ -44,12 +44,15 @@
 
 namespace lexel::spatial {
 
-// ||J⁻¹||_F² of one sample for rows p1, p2 (R) and axis p4 (T), each a pointer to 3 scalars.
-// R and T are double or a Ceres Jet: the gradient differentiates p4 alone (R = double), the
-// refinement also the re-fitted rows (R = T).
+// J = ∂u/∂x of one sample (Appendix A, eq. 9) and det J, for rows p1, p2 (R) and axis p4 (T),
+// each a pointer to 3 scalars: what SampleEnergy and SampleEdgeEnergy take the norm of.
+template <typename T>
+struct SampleJ {
+    T j11, j12, j21, j22, det;
+};
 template <typename R, typename T>
-T SampleEnergy(const R* p1, const R* p2, const T* p4, const glm::dvec3& lsX,
-               const glm::dvec3& dXdx1, const glm::dvec3& dXdx2) {
+SampleJ<T> SampleJacobianOf(const R* p1, const R* p2, const T* p4, const glm::dvec3& lsX,
+                            const glm::dvec3& dXdx1, const glm::dvec3& dXdx2) {
     const auto dot = [](const auto* p, const glm::dvec3& v) {
         return p[0] * v.x + p[1] * v.y + p[2] * v.z;
     };
@@ -63,6 +66,16 @@ T SampleEnergy(const R* p1, const R* p2, const T* p4, const glm::dvec3& lsX,
     const T j21 = (dot(p2, dXdx1) - a2 * wD1 * invW) * invW;
     const T j22 = (dot(p2, dXdx2) - a2 * wD2 * invW) * invW;
     const T det = j11 * j22 - j12 * j21;
+    return {j11, j12, j21, j22, det};
+}
+
+// ||J⁻¹||_F² of one sample for rows p1, p2 (R) and axis p4 (T), each a pointer to 3 scalars.
+// R and T are double or a Ceres Jet: the gradient differentiates p4 alone (R = double), the
+// refinement also the re-fitted rows (R = T).
+template <typename R, typename T>
+T SampleEnergy(const R* p1, const R* p2, const T* p4, const glm::dvec3& lsX,
+               const glm::dvec3& dXdx1, const glm::dvec3& dXdx2) {
+    const auto [j11, j12, j21, j22, det] = SampleJacobianOf(p1, p2, p4, lsX, dXdx1, dXdx2);
     return (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22) / (det * det);
 }
 
@@ -72,19 +85,7 @@ template <typename R, typename T>
 T SampleEdgeEnergy(const R* p1, const R* p2, const T* p4, const glm::dvec3& lsX,
                    const glm::dvec3& dXdx1, const glm::dvec3& dXdx2, const glm::dvec2& edgeNormal) {
     using std::sqrt;
-    const auto dot = [](const auto* p, const glm::dvec3& v) {
-        return p[0] * v.x + p[1] * v.y + p[2] * v.z;
-    };
-    const T w = dot(p4, lsX);
-    const T wD1 = dot(p4, dXdx1);
-    const T wD2 = dot(p4, dXdx2);
-    const R a1 = dot(p1, lsX), a2 = dot(p2, lsX);
-    const T invW = T(1.0) / w;
-    const T j11 = (dot(p1, dXdx1) - a1 * wD1 * invW) * invW;
-    const T j12 = (dot(p1, dXdx2) - a1 * wD2 * invW) * invW;
-    const T j21 = (dot(p2, dXdx1) - a2 * wD1 * invW) * invW;
-    const T j22 = (dot(p2, dXdx2) - a2 * wD2 * invW) * invW;
-    const T det = j11 * j22 - j12 * j21;
+    const auto [j11, j12, j21, j22, det] = SampleJacobianOf(p1, p2, p4, lsX, dXdx1, dXdx2);
     T q;
     if (edgeNormal.x == 0.0 && edgeNormal.y == 0.0) {
         q = T(0.5) * (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22);

@@ -60,23 +60,21 @@ std::vector<std::uint16_t> WrongPerPixel(const spatial::Evaluator& evaluator,
     const spatial::Resolution map = evaluator.scene().shadowMap;
     std::vector<std::uint16_t> wrong(truth.size(), 0);
     *uncoveredWrong = 0;
-    for (const glm::dvec2& phase : spatial::SubTexelPhases(phases)) {
-        const spatial::LightMatrix shifted = matrix.Shifted(phase);
+    *singlePhase = 0;
+    const std::vector<glm::dvec2> shifts = spatial::SubTexelPhases(phases);
+    for (std::size_t k = 0; k < shifts.size(); ++k) {
+        const spatial::LightMatrix shifted = matrix.Shifted(shifts[k]);
         const std::vector<Shade> shades = evaluator.ShadeFrame(light, shifted);
         for (std::size_t p = 0; p < shades.size(); ++p) {
             if (shades[p] != Shade::kLit && shades[p] != Shade::kShadowed) continue;
             if ((shades[p] == Shade::kShadowed) == static_cast<bool>(truth[p])) continue;
+            *singlePhase += k == 0;  // phase 0 is the unshifted map (SubTexelPhases)
             if (MapCovers(lightSpace, shifted, map, evaluator.frame().wsPosition[p]))
                 ++wrong[p];
             else
                 ++*uncoveredWrong;
         }
     }
-    *singlePhase = 0;
-    const std::vector<Shade> shades = evaluator.ShadeFrame(light, matrix);
-    for (std::size_t p = 0; p < shades.size(); ++p)
-        if (shades[p] == Shade::kLit || shades[p] == Shade::kShadowed)
-            *singlePhase += (shades[p] == Shade::kShadowed) != static_cast<bool>(truth[p]);
     return wrong;
 }
 
