@@ -511,13 +511,13 @@ void BM_WalkthroughMultiStart(benchmark::State& state) {
 }
 BENCHMARK(BM_WalkthroughMultiStart)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// `optimal` on the edge energy with its prior (optimal-e, energy.h) against `optimal` on h, per
-// light in one run on one core, from the same starts: ratio = optimal-e / optimal.
+// `optimal` (on the edge energy with its prior, energy.h) against `optimal-h` (on h, the
+// MultiStart benchmark's search), per light in one run on one core, from the same starts:
+// ratio_e_to_h = optimal / optimal-h.
 void BM_WalkthroughMultiStartEdge(benchmark::State& state) {
     tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
     const Walkthrough& w = Case();
-    OptimizerOptions edge;
-    edge.energy = {EnergyKind::kEdge, kDefaultPriorWeight};
+    const OptimizerOptions edge = EdgeOptimizerOptions();
     double reportMs = 0.0, edgeMs = 0.0;
     for (auto _ : state) {
         for (const PerLight& l : w.lights) {

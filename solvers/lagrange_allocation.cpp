@@ -10,13 +10,15 @@
 
 namespace lexel {
 
-double AllocationTerm(double error, int exponent) { return std::pow(error, 1.0 / (exponent + 1)); }
+double AllocationTerm(double error, double exponent) {
+    return std::pow(error, 1.0 / (exponent + 1));
+}
 
-double AllocatedTotal(double termSum, int exponent, double lexels) {
+double AllocatedTotal(double termSum, double exponent, double lexels) {
     return std::pow(termSum, exponent + 1) / std::pow(lexels, exponent);
 }
 
-std::vector<double> AllocateLexelsReal(std::span<const double> errors, int exponent,
+std::vector<double> AllocateLexelsReal(std::span<const double> errors, double exponent,
                                        double lexels) {
     double termSum = 0.0;
     for (double e : errors) termSum += AllocationTerm(e, exponent);
@@ -29,14 +31,18 @@ std::vector<double> AllocateLexelsReal(std::span<const double> errors, int expon
 
 namespace {
 // Error of frustum j with n lexels; n == 0 is allowed only for an empty frustum.
-double Cost(double e, int n, int exponent) {
+double Cost(double e, int n, double exponent) {
     if (e == 0.0) return 0.0;
     if (n <= 0) return std::numeric_limits<double>::infinity();
     return e / std::pow(static_cast<double>(n), exponent);
 }
 }  // namespace
 
-std::vector<int> AllocateLexelsInteger(std::span<const double> errors, int exponent, int lexels) {
+std::vector<int> AllocateLexelsInteger(std::span<const double> errors, double exponent,
+                                       int lexels) {
+    if (!(exponent > 0.0) || !std::isfinite(exponent))
+        throw std::invalid_argument("lexels: the exponent k must be finite and > 0, got " +
+                                    std::to_string(exponent));
     const std::size_t n = errors.size();
     std::size_t occupied = 0;
     for (double e : errors) occupied += e > 0.0;
@@ -102,7 +108,8 @@ std::vector<int> AllocateLexelsInteger(std::span<const double> errors, int expon
     return alloc;
 }
 
-double AllocationError(std::span<const double> errors, std::span<const int> lexels, int exponent) {
+double AllocationError(std::span<const double> errors, std::span<const int> lexels,
+                       double exponent) {
     double total = 0.0;
     for (std::size_t j = 0; j < errors.size(); ++j) total += Cost(errors[j], lexels[j], exponent);
     return total;

@@ -21,15 +21,18 @@
 
 namespace lexel {
 
-// k = 1 (L1) or 2 (L2).
-double AllocationTerm(double error, int exponent);                   // e^(1/(k+1))
-double AllocatedTotal(double termSum, int exponent, double lexels);  // (Σ terms)^(k+1) / L^k
+// k = 1 (L1) or 2 (L2) in flatland; any k > 0 holds the same derivation (3D: k = 1 for h, whose
+// squared footprints fall as 1/N with a map's N texels; k = 1/2 for the edge energy e, a length).
+double AllocationTerm(double error, double exponent);                   // e^(1/(k+1))
+double AllocatedTotal(double termSum, double exponent, double lexels);  // (Σ terms)^(k+1) / L^k
 
-std::vector<double> AllocateLexelsReal(std::span<const double> errors, int exponent, double lexels);
+std::vector<double> AllocateLexelsReal(std::span<const double> errors, double exponent,
+                                       double lexels);
 
 // Throws std::invalid_argument when there are fewer lexels than frusta holding samples.
-std::vector<int> AllocateLexelsInteger(std::span<const double> errors, int exponent, int lexels);
+std::vector<int> AllocateLexelsInteger(std::span<const double> errors, double exponent, int lexels);
 
-double AllocationError(std::span<const double> errors, std::span<const int> lexels, int exponent);
+double AllocationError(std::span<const double> errors, std::span<const int> lexels,
+                       double exponent);
 
 }  // namespace lexel

@@ -74,7 +74,7 @@ Resolution SquarestMap(long long texels) {
 }  // namespace
 
 std::vector<Resolution> AllocateCascadeMaps(Resolution total, std::span<const double> costs,
-                                            CascadeAllocation allocation) {
+                                            CascadeAllocation allocation, double exponent) {
     const std::size_t k = costs.size();
     if (k == 0) throw std::invalid_argument("AllocateCascadeMaps: no cascades");
     for (double c : costs)
@@ -90,13 +90,14 @@ std::vector<Resolution> AllocateCascadeMaps(Resolution total, std::span<const do
         return std::vector<Resolution>(k, each);
     }
     std::vector<Resolution> maps;
-    for (int n : LagrangeCascadeTexels(total, costs)) maps.push_back(SquarestMap(n));
+    for (int n : LagrangeCascadeTexels(total, costs, exponent)) maps.push_back(SquarestMap(n));
     return maps;
 }
 
-std::vector<int> LagrangeCascadeTexels(Resolution total, std::span<const double> costs) {
-    // Σ c_i / N_i is minimized by N_i ∝ √c_i (exponent 1 of the thesis's allocation).
-    return AllocateLexelsInteger(costs, 1, static_cast<int>(total.Count()));
+std::vector<int> LagrangeCascadeTexels(Resolution total, std::span<const double> costs,
+                                       double exponent) {
+    // Σ c_i / N_i^k is minimized by N_i ∝ c_i^(1/(k+1)) (lagrange_allocation.h): √c_i for h.
+    return AllocateLexelsInteger(costs, exponent, static_cast<int>(total.Count()));
 }
 
 LightMatrix RescaleMap(const LightMatrix& matrix, Resolution from, Resolution to) {

@@ -47,22 +47,24 @@ std::size_t CascadeFor(std::span<const Cascade> cascades, double z, const glm::d
 
 enum class CascadeAllocation {
     kEqual,     // k maps of (W/√k) × (H/√k), rounded down (SDSM)
-    kLagrange,  // texels N_i = N √c_i / Σ√c_j for h_i = c_i / N_i (the thesis's allocation)
+    kLagrange,  // N_i = N c_i^(1/(k+1)) / Σ c_j^(1/(k+1)) for E_i = c_i / N_i^k (the thesis's)
 };
 
 // The cascades' resolutions for a budget of total.Count() texels. For kLagrange, costs[i] = c_i ≥
-// 0 (h_i · N_i measured at any resolution: h scales as 1/N for square maps): integer texel counts
-// summing to the budget, each cascade with c_i > 0 at least 1 texel, laid out as the squarest
-// map w × h ≤ N_i. A cascade with c_i = 0 (an empty partition, or one without boundary samples)
-// gets the 1 × 1 map. kEqual ignores costs. std::invalid_argument for no cascades or negative or
-// non-finite costs.
+// 0 (E_i · N_i^k measured at any resolution: h scales as 1/N for square maps, k = 1; the edge
+// energy e as 1/√N, k = 1/2; EnergyExponent): integer texel counts summing to the budget, each
+// cascade with c_i > 0 at least 1 texel, laid out as the squarest map w × h ≤ N_i. A cascade
+// with c_i = 0 (an empty partition, or one without boundary samples and prior) gets the 1 × 1
+// map. kEqual ignores costs. std::invalid_argument for no cascades or negative or non-finite
+// costs.
 std::vector<Resolution> AllocateCascadeMaps(Resolution total, std::span<const double> costs,
-                                            CascadeAllocation allocation);
+                                            CascadeAllocation allocation, double exponent = 1.0);
 
 // kLagrange's integer texel counts before the layout: Σ N_i = total.Count(), N_i = 0 for c_i = 0,
 // and no single texel moved between two cascades lowers Σ c_i / N_i (lagrange_allocation.h).
 // std::invalid_argument as AllocateLexelsInteger (more cascades with c_i > 0 than texels).
-std::vector<int> LagrangeCascadeTexels(Resolution total, std::span<const double> costs);
+std::vector<int> LagrangeCascadeTexels(Resolution total, std::span<const double> costs,
+                                       double exponent = 1.0);
 
 // The same light matrix for a map of another resolution: u' = u · (W'/W, H'/H).
 LightMatrix RescaleMap(const LightMatrix& matrix, Resolution from, Resolution to);

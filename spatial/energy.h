@@ -42,7 +42,7 @@ enum class EnergyKind {
     kEdge,    // e = Σ ||nᵀJ⁻¹||₂, the misclassified band's model
 };
 
-// The prior weight lexel's opt-in methods on e use (optimal-e): one boundary sample's worth.
+// The prior weight of lexel's methods on e (optimal, sdsm-optimal): one boundary sample's worth.
 inline constexpr double kDefaultPriorWeight = 1.0;
 
 struct EnergyOptions {
@@ -51,6 +51,17 @@ struct EnergyOptions {
     // Whether these options give Energy(matrix, samples), h alone, bit for bit.
     bool IsReport() const { return kind == EnergyKind::kReport && priorWeight == 0.0; }
 };
+
+// e with the footprint prior: what `optimal`, `optimal-refined`, `sdsm-optimal` and their
+// hysteresis minimize (issue 25: it orders methods as their measured errors better than h).
+inline constexpr EnergyOptions kEdgeEnergy{EnergyKind::kEdge, kDefaultPriorWeight};
+
+// How the energy falls with a map's texels N at a fixed matrix shape: as N^-k. h sums squared
+// footprints (texel areas), k = 1; e sums footprint lengths, k = 1/2. The Lagrange allocation's
+// exponent (lagrange_allocation.h).
+inline constexpr double EnergyExponent(EnergyKind kind) {
+    return kind == EnergyKind::kEdge ? 0.5 : 1.0;
+}
 
 // The chosen energy over the samples (plus the prior): +inf if a boundary sample is not in front
 // of p4 or has a singular J. Energy(matrix, samples) exactly when options.IsReport().

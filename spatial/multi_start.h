@@ -1,8 +1,8 @@
 // lexel's `optimal`: Chong & Gortler's Algorithm 1 (report §2.3) from several starts. The search is
 // local — it rotates p4 from wherever it starts — so where it starts matters; here it starts from
 // every baseline's axis, and every start's own map is a candidate too (a warped baseline's affine
-// part is not the rectangle fit). The least h (eq. 6) wins, so on its own energy `optimal` never
-// loses to a baseline it started from.
+// part is not the rectangle fit). The least energy wins (e for `optimal`, h of eq. 6 for
+// `optimal-h`), so on its own energy `optimal` never loses to a baseline it started from.
 #pragma once
 
 #include <span>

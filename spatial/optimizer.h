@@ -55,6 +55,15 @@ struct OptimizerOptions {
 // (h 784 → 0.14 on 7 samples) changes it by far more.
 inline constexpr double kCollapseFactor = 2.0;
 
+// `optimal`'s options: the search and the refinement on e with the prior (kEdgeEnergy), the
+// collapse guard on. The default OptimizerOptions are the report's Algorithm 1 on h (optimal-h).
+inline OptimizerOptions EdgeOptimizerOptions() {
+    OptimizerOptions options;
+    options.energy = kEdgeEnergy;
+    options.collapseFactor = kCollapseFactor;
+    return options;
+}
+
 struct OptimizerResult {
     LightMatrix matrix;
     // The chosen energy (OptimizerOptions::energy) of `matrix`: with the default, eq. (6) over the

@@ -225,6 +225,7 @@ std::vector<Cascade> PartitionedLightMatrices(PartitionScheme scheme,
                             CascadeAllocation::kEqual)
             .front();
     std::vector<double> costs(cascades.size(), 0.0);
+    const double exponent = EnergyExponent(options.energy.kind);
     for (std::size_t i = 0; i < cascades.size(); ++i) {
         std::vector<glm::dvec3> wsPoints;
         for (const glm::dvec3& x : context.wsRelevant)
@@ -256,13 +257,14 @@ std::vector<Cascade> PartitionedLightMatrices(PartitionScheme scheme,
         if (scheme == PartitionScheme::kFpLispsm)
             part.camera.target = part.camera.position + bisectors[i];
         c.matrix = FitPartition(scheme, part, partSamples, options);
-        costs[i] = Energy(c.matrix, partSamples) * static_cast<double>(equal.Count());
+        costs[i] = Energy(c.matrix, partSamples, options.energy) *
+                   std::pow(static_cast<double>(equal.Count()), exponent);
     }
     if (options.allocation == CascadeAllocation::kLagrange) {
         for (double& c : costs)
             if (!std::isfinite(c)) c = 0.0;  // no usable energy: it keeps the least texels
         const std::vector<Resolution> maps =
-            AllocateCascadeMaps(context.map, costs, CascadeAllocation::kLagrange);
+            AllocateCascadeMaps(context.map, costs, CascadeAllocation::kLagrange, exponent);
         for (std::size_t i = 0; i < cascades.size(); ++i) {
             cascades[i].matrix = RescaleMap(cascades[i].matrix, equal, maps[i]);
             cascades[i].map = maps[i];

@@ -44,15 +44,16 @@ struct PartitionOptions {
     double lambda = 0.5;  // pssm's blend of the logarithmic and the uniform split
     CascadeAllocation allocation = CascadeAllocation::kEqual;
     bool snap = false;  // sdsm: snap its boxes to whole texels (directional lights)
-    // The energy sdsm-optimal's multi-start minimizes per partition (energy.h; default h, today's
-    // maps). The Lagrange costs stay on h: the allocation's law c_i = h_i N_i assumes an energy
-    // that scales as 1/N_i with the texels, and e scales as N_i^(-1/2).
-    EnergyOptions energy;
+    // The energy sdsm-optimal's multi-start minimizes per partition (energy.h) and, for every
+    // scheme, the Lagrange allocation's cost: e with the prior, as `optimal` (c_i = e_i √N_i,
+    // N_i ∝ c_i^(2/3)); EnergyOptions{} is h (`sdsm-optimal-h`; c_i = h_i N_i, N_i ∝ √c_i).
+    EnergyOptions energy = kEdgeEnergy;
 };
 
 // The cascades of `scheme` for the context's light. Their texels add up to context.map's (equal
 // allocation: k maps of (W/√k) × (H/√k), rounded down); kLagrange moves texels toward the
-// partitions with the larger cost c_i = h_i N_i. An empty partition (no visible point) is kept,
+// partitions with the larger cost (c_i = e_i √N_i, or h_i N_i on h: PartitionOptions::energy).
+// An empty partition (no visible point) is kept,
 // with visiblePoints = 0 and the whole view's focused-tight map at its resolution. Throws
 // DomainError as the baselines do; std::invalid_argument for count outside [1, kMaxCascades].
 std::vector<Cascade> PartitionedLightMatrices(PartitionScheme scheme,

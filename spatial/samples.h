@@ -55,7 +55,7 @@ struct LightSamples {
 
 // The most points the footprint prior keeps per light. The prior only has to rank maps by their
 // footprint over the view, so 64 points spread over it (every k-th in pixel order) suffice; on the
-// walkthrough 256 made optimal-e's searches 2.4 times h's (spatial_bench MultiStartEdge, one
+// walkthrough 256 made optimal's searches on e 2.4 times h's (spatial_bench MultiStartEdge, one
 // core), 64 make them 1.7 times.
 inline constexpr std::size_t kPriorPoints = 64;
 

@@ -94,7 +94,7 @@ std::string MethodsHelp(bool flatland, bool spatial) {
         help += std::string(flatland ? "\n" : "") +
                 "3D methods (default: all, and a case's own \"methods\", cases/README.md):\n" +
                 MethodLines(spatial::SpatialMethodNames(), &spatial::SpatialMethodDescription) +
-                "3D methods run only when named (--method):\n" +
+                "\n3D methods run only when named (--method):\n" +
                 MethodLines(spatial::OptInMethodNames(), &spatial::SpatialMethodDescription);
     return help;
 }

@@ -199,7 +199,8 @@ Command RegisterTiming(CLI::App& app) {
         ->add_option(
             "--optimizer", flags->optimizer,
             "The optimal frames' method (default optimal-report: Algorithm 1 as published)")
-        ->check(CLI::IsMember({"optimal-report", "optimal", "optimal-refined", "optimal-shear"}));
+        ->check(CLI::IsMember(
+            {"optimal-report", "optimal", "optimal-refined", "optimal-h", "optimal-shear"}));
     timing->add_option("--format", flags->format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
     return [flags] { return cases::TimingCommand(*flags); };

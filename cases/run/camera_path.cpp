@@ -81,7 +81,8 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
         std::unique_ptr<spatial::Evaluator> evaluator;
         spatial::LightOutcome o = EvaluatePose(poseScene, backend, l, k, options, &evaluator);
         const spatial::HysteresisDecision d = spatial::ApplyHysteresis(
-            previous, o.methods[optimal].matrix, o.samples, scene.shadowMap, margin);
+            previous, o.methods[optimal].matrix, o.samples, scene.shadowMap, margin,
+            spatial::kEdgeEnergy.kind);  // optimal's energy (issue 25)
         PoseOutcome pose;
         pose.changed = d.changed;
         pose.medianKept = d.medianPrevious;

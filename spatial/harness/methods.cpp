@@ -14,7 +14,7 @@
 namespace lexel::spatial {
 
 std::vector<std::string> FairMethodNames() {
-    return {"optimal",       "optimal-refined", "focused-tight", "lispsm-tight",
+    return {"optimal",       "optimal-refined", "optimal-h",     "focused-tight", "lispsm-tight",
             "lispsm-engine", "psm-tight",       "plane-optimal", "normal"};
 }
 
@@ -38,13 +38,15 @@ constexpr NamedPartition kPartitions[] = {
     {"zp-lispsm", PartitionScheme::kZpLispsm, false},
     {"fp-lispsm", PartitionScheme::kFpLispsm, false},
     {"sdsm-optimal", PartitionScheme::kSdsmOptimal, false},
+    {"sdsm-optimal-h", PartitionScheme::kSdsmOptimal, false},  // opt-in: on h (eq. 6)
 };
 
 }  // namespace
 
 std::vector<std::string> PartitionedMethodNames() {
     std::vector<std::string> names;
-    for (const NamedPartition& p : kPartitions) names.emplace_back(p.name);
+    for (const NamedPartition& p : kPartitions)
+        if (p.name != "sdsm-optimal-h") names.emplace_back(p.name);
     return names;
 }
 
@@ -55,7 +57,7 @@ std::vector<std::string> VirtualMethodNames() { return {"vsm", "vsm-dynamic"}; }
 bool IsVirtualMethod(std::string_view name) { return name == "vsm" || name == "vsm-dynamic"; }
 
 std::vector<std::string> OptInMethodNames() {
-    return {"optimal-e", "optimal-refined-e", kOracleMethod};
+    return {"optimal-refined-h", "sdsm-optimal-h", kOracleMethod};
 }
 
 namespace {
@@ -162,8 +164,9 @@ struct MethodDescription {
 
 // One line per method of SpatialMethodNames (cases/README.md, "3D methods", says more).
 constexpr MethodDescription kDescriptions[] = {
-    {"optimal", "Algorithm 1 from every baseline's start, the least h wins (fair reference)"},
-    {"optimal-refined", "optimal, its best start refined by Ceres LBFGS on the unit sphere"},
+    {"optimal", "Algorithm 1 from every baseline's start on the edge energy e (fair reference)"},
+    {"optimal-refined", "optimal, its best start refined on e by Ceres LBFGS, collapses rejected"},
+    {"optimal-h", "Algorithm 1 from every baseline's start on the report's h (eq. 6)"},
     {"focused-tight", "focused's axis, minimum-area rectangle around the visible points"},
     {"lispsm-tight", "LiSPSM (Wimmer et al. 2004) fitted to the visible points"},
     {"lispsm-engine", "lispsm-tight with the engines' n (z1 = z0 + d sin γ: Filament, OGRE)"},
@@ -184,13 +187,13 @@ constexpr MethodDescription kDescriptions[] = {
     {"sdsm-rect", "sdsm's partitions, each fitted with the minimum-area rectangle"},
     {"zp-lispsm", "cascades: Lloyd et al. 2006's log z-partitions, LiSPSM in each"},
     {"fp-lispsm", "Lloyd et al. 2006's face partitioning: a LiSPSM map per face wedge"},
-    {"sdsm-optimal", "sdsm's partitions, Algorithm 1 (multi-start) in each"},
+    {"sdsm-optimal", "sdsm's partitions, optimal (multi-start on e) in each"},
     {"tsm", "Martin & Tan 2004: the trapezoid around the visible points, 80% focus rule"},
     {"tsm-report", "tsm as the paper fits it: the view frustum and scene bounds"},
     {"vsm", "virtual shadow map: 16k² pages at the footprint's level, the single map's texels"},
     {"vsm-dynamic", "vsm with the LOD bias raised until its pages fit the pool (UE5)"},
-    {"optimal-e", "optimal on the edge energy e = sum ||n^T J^-1|| with the footprint prior"},
-    {"optimal-refined-e", "optimal-e, its best start refined on e, collapses rejected"},
+    {"optimal-refined-h", "optimal-h, its best start refined on h by Ceres LBFGS"},
+    {"sdsm-optimal-h", "sdsm's partitions, optimal-h (multi-start on h) in each"},
     {kOracleMethod, "bound: the best single matrix by the measured error (scored on the rays)"},
 };
 
@@ -261,13 +264,10 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
     if (!context.samples) throw std::invalid_argument(std::string(name) + " needs the samples");
     const Resolution map = context.baseline.map;
     OptimizerOptions options;
-    if (name == "optimal-e" || name == "optimal-refined-e") {
-        options.energy = {EnergyKind::kEdge, kDefaultPriorWeight};
-        options.collapseFactor = kCollapseFactor;
-    }
-    if (name == "optimal" || name == "optimal-refined" || name == "optimal-e" ||
-        name == "optimal-refined-e") {
-        options.refine = name == "optimal-refined" || name == "optimal-refined-e";
+    if (name == "optimal" || name == "optimal-refined") options = EdgeOptimizerOptions();
+    if (name == "optimal" || name == "optimal-refined" || name == "optimal-h" ||
+        name == "optimal-refined-h") {
+        options.refine = name == "optimal-refined" || name == "optimal-refined-h";
         const std::vector<OptimizerStart> starts = StandardStarts(context.baseline);
         MultiStartResult r = OptimizeFromStarts(*context.samples, starts, map, options);
         return {r.result.matrix,
@@ -291,6 +291,7 @@ MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& c
         throw std::invalid_argument(std::string(partition.name) + " needs the samples");
     PartitionOptions options = context.partitions;
     options.snap = partition.snap;
+    if (partition.name == "sdsm-optimal-h") options.energy = EnergyOptions{};
     MethodMatrix m;
     m.cascades =
         PartitionedLightMatrices(partition.scheme, context.baseline, *context.samples, options);
@@ -336,7 +337,7 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
                     std::nullopt,
                     {}};
     if (name == "optimal" || name == "optimal-refined" || name == "optimal-report" ||
-        name == "optimal-shear" || name == "optimal-e" || name == "optimal-refined-e")
+        name == "optimal-shear" || name == "optimal-h" || name == "optimal-refined-h")
         return Optimal(name, context);
     for (const NamedPartition& p : kPartitions)
         if (p.name == name) return Partitioned(p, context);

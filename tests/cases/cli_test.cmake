@@ -80,9 +80,9 @@ file(WRITE "${WORK}/badhtml/index.html" "${head}<img src=\"there.png\">${tail}")
 check_html_links("${WORK}/badhtml/index.html" ALL_IMAGES)
 
 # --help lists every method with one line (issue 24).
-expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all, and a case's own \"methods\", cases/README\\.md\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n.*\n  vsm-dynamic +[^\n]+\n+$"
+expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all, and a case's own \"methods\", cases/README\\.md\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n.*\n  vsm-dynamic +[^\n]+\n\n3D methods run only when named \\(--method\\):\n  optimal-refined-h +optimal-h, [^\n]+\n.*\n  optimal-oracle +bound: [^\n]+\n+$"
            "^$" run --help)
-expect_run(0 "\n3D methods \\(default: all, and a case's own \"methods\", cases/README\\.md\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  vsm +virtual shadow map[^\n]*\n  vsm-dynamic +[^\n]+\n+$"
+expect_run(0 "\n3D methods \\(default: all, and a case's own \"methods\", cases/README\\.md\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  vsm +virtual shadow map[^\n]*\n  vsm-dynamic +[^\n]+\n\n3D methods run only when named \\(--method\\):\n.*\n  optimal-oracle +[^\n]+\n+$"
            "^$" sweep --help)
 
 # Bad input: one line naming the field and the reason, exit 2, no output files.
@@ -331,7 +331,7 @@ set(LEXEL "${sourceLexel}")
 
 # ---- 3D cases: lexel run and lexel sweep on a small floor-and-box scene ----
 set(small "${DATA}/spatial_small.json")
-set(methods3d optimal optimal-refined focused-tight lispsm-tight lispsm-engine psm-tight
+set(methods3d optimal optimal-refined optimal-h focused-tight lispsm-tight lispsm-engine psm-tight
     plane-optimal normal optimal-report focused lispsm psm optimal-shear rtw rtw-lagrange logpsm pssm
     sdsm sdsm-snap sdsm-rect zp-lispsm fp-lispsm sdsm-optimal tsm tsm-report vsm vsm-dynamic)
 set(partitioned3d pssm sdsm sdsm-snap sdsm-rect zp-lispsm fp-lispsm sdsm-optimal)
@@ -344,7 +344,7 @@ function(expect_count json what)
 endfunction()
 
 # The table lists every method, in the registry's order.
-expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\n  the report's focused 4000² truth map disagrees with the rays on [0-9]+ pixels?[^\n]*\n[^\n]*\nmethod +misclassified +shadow +light +uncovered[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\nlispsm-engine [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\nrtw [^\n]*\nrtw-lagrange [^\n]*\nlogpsm [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal [^\n]*\ntsm [^\n]*\ntsm-report [^\n]*\nvsm [^\n]*\nvsm-dynamic "
+expect_run(0 "^light 0: point \\(8, 8, 2\\)[^\n]*\n  the report's focused 4000² truth map disagrees with the rays on [0-9]+ pixels?[^\n]*\n[^\n]*\nmethod +misclassified +shadow +light +uncovered[^\n]*\n-+\noptimal [^\n]*\noptimal-refined [^\n]*\noptimal-h [^\n]*\nfocused-tight [^\n]*\nlispsm-tight [^\n]*\nlispsm-engine [^\n]*\npsm-tight [^\n]*\nplane-optimal [^\n]*\nnormal [^\n]*\noptimal-report [^\n]*\nfocused [^\n]*\nlispsm [^\n]*\npsm [^\n]*\noptimal-shear [^\n]*\nrtw [^\n]*\nrtw-lagrange [^\n]*\nlogpsm [^\n]*\npssm [^\n]*\nsdsm [^\n]*\nsdsm-snap [^\n]*\nsdsm-rect [^\n]*\nzp-lispsm [^\n]*\nfp-lispsm [^\n]*\nsdsm-optimal [^\n]*\ntsm [^\n]*\ntsm-report [^\n]*\nvsm [^\n]*\nvsm-dynamic "
            "^$" run "${small}")
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" run "${small}" --format json)
 string(JSON nLights LENGTH "${lastStdout}" lights)
@@ -352,7 +352,7 @@ string(JSON nMethods LENGTH "${lastStdout}" lights 0 methods)
 string(JSON method0 GET "${lastStdout}" lights 0 methods 0 method)
 string(JSON wrong0 GET "${lastStdout}" lights 0 methods 0 misclassified)
 string(JSON receivers GET "${lastStdout}" lights 0 receiver_pixels)
-if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 27 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
+if(NOT nLights EQUAL 1 OR NOT nMethods EQUAL 28 OR NOT method0 STREQUAL "optimal" OR receivers LESS 1)
     message(FATAL_ERROR "unexpected 3D JSON document:\n${lastStdout}")
 endif()
 math(EXPR last "${nMethods} - 1")
@@ -373,9 +373,9 @@ expect_run(0 "^light,method,[^\n]*\n0,vsm,[0-9]+,[0-9]+,[0-9]+,[^\n]*,[0-9.e+-]+
            "^$" run "${small}" --format csv --method vsm --no-map-truth)
 
 # --out writes the report and three images per light and method (a partitioned method: a map
-# image per cascade; fp-lispsm has 3 face wedges here): 20 single maps × 3 (vsm and vsm-dynamic:
-# frame, errors and the page pool) + 6 × 6 + 5 = 101.
-expect_run(0 "^light 0" "^lexel: wrote 101 images, index.html and spatial_small.json/.csv to [^\n]*\n$"
+# image per cascade; fp-lispsm has 3 face wedges here): 21 single maps × 3 (vsm and vsm-dynamic:
+# frame, errors and the page pool) + 6 × 6 + 5 = 104.
+expect_run(0 "^light 0" "^lexel: wrote 104 images, index.html and spatial_small.json/.csv to [^\n]*\n$"
            run "${small}" --out "${WORK}/out3d")
 # index.html shows every image and links both data files (issue 24: 154 loose PNGs, no index).
 check_html_links("${WORK}/out3d/index.html" ALL_IMAGES)
@@ -442,7 +442,7 @@ expect_run(0 "\ncamera path, light 1: P changed in 2 of 8 poses [^\n]*\n" "^$"
 
 # lexel sweep: Table 1 as published and the fair comparison, as JSON, Markdown, CSV and text.
 set(reportMethods optimal-report focused lispsm plane-optimal normal psm tsm-report)
-set(fairMethods optimal optimal-refined focused-tight lispsm-tight lispsm-engine psm-tight
+set(fairMethods optimal optimal-refined optimal-h focused-tight lispsm-tight lispsm-engine psm-tight
     plane-optimal normal optimal-shear rtw rtw-lagrange logpsm tsm)
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" sweep "${small}" --lights 3 --format json)
 string(JSON sweepCase GET "${lastStdout}" case)

@@ -94,11 +94,11 @@ TEST(SpatialImages, EveryImageIsListedWithItsLightMethodAndKind) {
     std::size_t calls = 0;
     const std::vector<SpatialImageFile> files =
         WriteSpatialImages(dir, scene, run, [&] { ++calls; });
-    // 20 single-map methods (rtw, rtw-lagrange and logpsm among them) × 3 (vsm and vsm-dynamic:
+    // 21 single-map methods (rtw, rtw-lagrange and logpsm among them) × 3 (vsm and vsm-dynamic:
     // frame, errors and the page pool), 6 partitioned × (2 + 4 cascades), fp-lispsm 2 + 3 wedges.
-    EXPECT_EQ(files.size(), 101u);
-    EXPECT_EQ(SpatialImageCount(run), 101u);
-    EXPECT_EQ(calls, 101u);
+    EXPECT_EQ(files.size(), 104u);
+    EXPECT_EQ(SpatialImageCount(run), 104u);
+    EXPECT_EQ(calls, 104u);
     std::set<std::string> names;
     for (const SpatialImageFile& f : files) {
         EXPECT_TRUE(fs::is_regular_file(dir / f.file)) << f.file;

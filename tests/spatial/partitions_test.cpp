@@ -52,58 +52,66 @@ TEST(PssmSplits, LambdaOneIsLogarithmicAndZeroUniform) {
     EXPECT_THROW(PssmSplits(1.0, 2.0, 4, 1.5), std::invalid_argument);
 }
 
-double AllocationCost(std::span<const double> costs, std::span<const int> texels) {
+// Σ c_i / N_i^k over the cascades that have a cost.
+double AllocationCost(std::span<const double> costs, std::span<const int> texels, double k) {
     double total = 0.0;
     for (std::size_t i = 0; i < costs.size(); ++i)
-        if (costs[i] > 0.0) total += costs[i] / texels[i];
+        if (costs[i] > 0.0) total += costs[i] / std::pow(texels[i], k);
     return total;
 }
 
+// k = 1: h's law (squared footprints, 1/N); k = 1/2: the edge energy e's (lengths, 1/√N).
 TEST(LagrangeCascadeTexels, NoSingleTexelExchangeLowersTheTotal) {
     const Resolution budget{400, 400};
     const std::vector<std::vector<double>> cases = {
         {1.0, 1.0, 1.0, 1.0}, {5.0, 1.0, 0.2, 0.01}, {3.0, 0.0, 7.0}, {1e6, 1.0}, {2.5}};
-    for (const std::vector<double>& costs : cases) {
-        std::ostringstream what;
-        for (double c : costs) what << c << " ";
-        const std::vector<int> texels = LagrangeCascadeTexels(budget, costs);
-        long long sum = 0;
-        for (int n : texels) sum += n;
-        EXPECT_EQ(sum, budget.Count()) << what.str();
-        const double best = AllocationCost(costs, texels);
-        for (std::size_t i = 0; i < costs.size(); ++i) {
-            if (costs[i] == 0.0) {
-                EXPECT_EQ(texels[i], 0) << what.str();
+    for (const double k : {1.0, 0.5})
+        for (const std::vector<double>& costs : cases) {
+            std::ostringstream what;
+            what << "k " << k << ", costs ";
+            for (double c : costs) what << c << " ";
+            const std::vector<int> texels = LagrangeCascadeTexels(budget, costs, k);
+            long long sum = 0;
+            for (int n : texels) sum += n;
+            EXPECT_EQ(sum, budget.Count()) << what.str();
+            const double best = AllocationCost(costs, texels, k);
+            for (std::size_t i = 0; i < costs.size(); ++i) {
+                if (costs[i] == 0.0) {
+                    EXPECT_EQ(texels[i], 0) << what.str();
+                }
+                for (std::size_t j = 0; j < costs.size(); ++j) {
+                    if (i == j || texels[i] <= 1 || costs[j] == 0.0) continue;
+                    std::vector<int> moved = texels;
+                    --moved[i];
+                    ++moved[j];
+                    EXPECT_LE(best, AllocationCost(costs, moved, k)) << what.str() << i << "→" << j;
+                }
             }
-            for (std::size_t j = 0; j < costs.size(); ++j) {
-                if (i == j || texels[i] <= 1 || costs[j] == 0.0) continue;
-                std::vector<int> moved = texels;
-                --moved[i];
-                ++moved[j];
-                EXPECT_LE(best, AllocationCost(costs, moved)) << what.str() << i << "→" << j;
+            // The real Lagrange solution N_i = N c_i^(1/(k+1)) / Σ c_j^(1/(k+1)) (√c_i for h,
+            // c_i^(2/3) for e) is within one texel.
+            double rootSum = 0.0;
+            for (double c : costs) rootSum += std::pow(c, 1.0 / (k + 1.0));
+            for (std::size_t i = 0; i < costs.size(); ++i)
+                EXPECT_NEAR(texels[i],
+                            budget.Count() * std::pow(costs[i], 1.0 / (k + 1.0)) / rootSum, 1.0)
+                    << what.str();
+            // The maps are the squarest layouts of those counts: w h ≤ N_i, less than one row lost.
+            const std::vector<Resolution> maps =
+                AllocateCascadeMaps(budget, costs, CascadeAllocation::kLagrange, k);
+            for (std::size_t i = 0; i < costs.size(); ++i) {
+                if (texels[i] == 0) {
+                    EXPECT_EQ(maps[i].Count(), 1) << what.str();
+                    continue;
+                }
+                EXPECT_LE(maps[i].Count(), texels[i]) << what.str();
+                EXPECT_GT(maps[i].Count(), texels[i] - maps[i].width) << what.str();
             }
         }
-        // The real Lagrange solution N_i = N √c_i / Σ √c_j is within one texel.
-        double rootSum = 0.0;
-        for (double c : costs) rootSum += std::sqrt(c);
-        for (std::size_t i = 0; i < costs.size(); ++i)
-            EXPECT_NEAR(texels[i], budget.Count() * std::sqrt(costs[i]) / rootSum, 1.0)
-                << what.str();
-        // The maps are the squarest layouts of those counts: w h ≤ N_i, less than one row lost.
-        const std::vector<Resolution> maps =
-            AllocateCascadeMaps(budget, costs, CascadeAllocation::kLagrange);
-        for (std::size_t i = 0; i < costs.size(); ++i) {
-            if (texels[i] == 0) {
-                EXPECT_EQ(maps[i].Count(), 1) << what.str();
-                continue;
-            }
-            EXPECT_LE(maps[i].Count(), texels[i]) << what.str();
-            EXPECT_GT(maps[i].Count(), texels[i] - maps[i].width) << what.str();
-        }
-    }
     EXPECT_THROW(
         AllocateCascadeMaps(budget, std::vector<double>{1.0, -1.0}, CascadeAllocation::kLagrange),
         std::invalid_argument);
+    EXPECT_THROW(LagrangeCascadeTexels(budget, std::vector<double>{1.0, 2.0}, 0.0),
+                 std::invalid_argument);
     const std::vector<Resolution> equal =
         AllocateCascadeMaps(budget, std::vector<double>(4, 0.0), CascadeAllocation::kEqual);
     for (const Resolution& r : equal) EXPECT_EQ(r.width, 200);
@@ -241,34 +249,58 @@ TEST(Partitions, EveryVisiblePointLiesInItsCascadesMap) {
     }
 }
 
+// Σ over the cascades of the energy of the samples (and prior points) each serves.
+double CascadeEnergySum(std::span<const Cascade> cascades, const LightSamples& samples,
+                        std::span<const glm::dvec3> wsRelevant, const Camera& camera,
+                        const EnergyOptions& energy) {
+    double total = 0.0;
+    for (std::size_t i = 0; i < cascades.size(); ++i)
+        total += Energy(cascades[i].matrix,
+                        SamplesOfCascade(samples, wsRelevant, camera, cascades, i), energy);
+    return total;
+}
+
+// On e (sdsm-optimal) and on h (sdsm-optimal-h), with either allocation: each cascade's energy,
+// and their sum, at most SDSM's (the Lagrange allocation on the same energy's law).
 TEST(Partitions, SdsmOptimalNeverHasALargerEnergyThanSdsm) {
     const Walkthrough& w = SharedWalkthrough();
     for (const Light& light : w.lights) {
         const PartitionRun run = RunLight(w, light);
-        for (CascadeAllocation allocation :
-             {CascadeAllocation::kEqual, CascadeAllocation::kLagrange}) {
-            PartitionOptions options;
-            options.allocation = allocation;
-            const auto sdsm = PartitionedLightMatrices(PartitionScheme::kSdsm, run.context,
-                                                       run.outcome.samples, options);
-            const auto optimal = PartitionedLightMatrices(
-                PartitionScheme::kSdsmOptimal, run.context, run.outcome.samples, options);
-            const auto& relevant = run.context.wsRelevant;
-            const double hSdsm =
-                PartitionedEnergy(sdsm, run.outcome.samples, relevant, w.scene.camera);
-            const double hOptimal =
-                PartitionedEnergy(optimal, run.outcome.samples, relevant, w.scene.camera);
-            ASSERT_TRUE(std::isfinite(hSdsm) && std::isfinite(hOptimal));
-            if (allocation == CascadeAllocation::kEqual)  // the same maps: cascade by cascade
-                for (std::size_t i = 0; i < sdsm.size(); ++i) {
-                    const LightSamples part =
-                        SamplesOfCascade(run.outcome.samples, relevant, w.scene.camera, sdsm, i);
-                    EXPECT_LE(Energy(optimal[i].matrix, part), Energy(sdsm[i].matrix, part))
-                        << cases::LightLabel(light) << " cascade " << i;
+        for (const EnergyOptions& energy : {kEdgeEnergy, EnergyOptions{}})
+            for (CascadeAllocation allocation :
+                 {CascadeAllocation::kEqual, CascadeAllocation::kLagrange}) {
+                PartitionOptions options;
+                options.allocation = allocation;
+                options.energy = energy;
+                const std::string what = cases::LightLabel(light) +
+                                         (energy.IsReport() ? " h" : " e") + " allocation " +
+                                         std::to_string(int(allocation));
+                const auto sdsm = PartitionedLightMatrices(PartitionScheme::kSdsm, run.context,
+                                                           run.outcome.samples, options);
+                const auto optimal = PartitionedLightMatrices(
+                    PartitionScheme::kSdsmOptimal, run.context, run.outcome.samples, options);
+                const auto& relevant = run.context.wsRelevant;
+                const double eSdsm =
+                    CascadeEnergySum(sdsm, run.outcome.samples, relevant, w.scene.camera, energy);
+                const double eOptimal = CascadeEnergySum(optimal, run.outcome.samples, relevant,
+                                                         w.scene.camera, energy);
+                ASSERT_TRUE(std::isfinite(eSdsm) && std::isfinite(eOptimal)) << what;
+                if (energy.IsReport()) {  // h's sum is what the harness reports
+                    EXPECT_DOUBLE_EQ(eOptimal, PartitionedEnergy(optimal, run.outcome.samples,
+                                                                 relevant, w.scene.camera))
+                        << what;
                 }
-            EXPECT_LE(hOptimal, hSdsm)
-                << cases::LightLabel(light) << " allocation " << int(allocation);
-        }
+                if (allocation == CascadeAllocation::kEqual) {  // the same maps: cascade by cascade
+                    for (std::size_t i = 0; i < sdsm.size(); ++i) {
+                        const LightSamples part = SamplesOfCascade(run.outcome.samples, relevant,
+                                                                   w.scene.camera, sdsm, i);
+                        EXPECT_LE(Energy(optimal[i].matrix, part, energy),
+                                  Energy(sdsm[i].matrix, part, energy))
+                            << what << " cascade " << i;
+                    }
+                }
+                EXPECT_LE(eOptimal, eSdsm) << what;
+            }
     }
 }
 

@@ -76,9 +76,13 @@ struct CaseCounts {
 };
 
 inline const std::vector<std::string>& ScaleTestMethods() {
-    // A baseline, Algorithm 1, a warp, the floor-plane method (a construction in world space),
-    // a tight fit and a partitioned method.
-    static const std::vector<std::string> methods = {"focused",       "optimal",   "lispsm",
+    // A baseline, Algorithm 1 (multi-start on h), a warp, the floor-plane method (a construction
+    // in world space), a tight fit and a partitioned method. `optimal` (on e) is not exact here:
+    // on the second light its search from plane-optimal's start (an axis a texel above the
+    // visible points' horizon) finds e's gradient ill-conditioned, and perturbations of 1e-9
+    // turn it another way (e 11.305 or 11.257; 7 or 8 misclassified pixels). h's search from the
+    // same start happens not to branch.
+    static const std::vector<std::string> methods = {"focused",       "optimal-h", "lispsm",
                                                      "plane-optimal", "psm-tight", "pssm"};
     return methods;
 }
