@@ -96,6 +96,7 @@ SweepCell ParseCell(const JsonField& f, const nlohmann::json& value) {
     c.lodBias = RecordNumber(x[13], value[13]);
     c.misclassifiedMean = x[14].NumberIn(0.0, static_cast<double>(kMaxCount), false, false);
     c.misclassifiedError = x[15].NumberIn(0.0, static_cast<double>(kMaxCount), false, false);
+    c.e = RecordNumber(x[16], value[16]);
     return c;
 }
 

@@ -31,7 +31,7 @@ json CellJson(const SweepCell& c) {
                         Number(c.footprintMean), Number(c.footprintMax), c.uncovered, c.cascades,
                         c.emptyPartitions, Number(c.storageFactor), c.pagesRequested,
                         c.pagesResident, c.pagesDropped, Number(c.lodBias),
-                        Number(c.misclassifiedMean), Number(c.misclassifiedError)});
+                        Number(c.misclassifiedMean), Number(c.misclassifiedError), Number(c.e)});
 }
 
 json LightJson(const SweepLightRecord& light) {

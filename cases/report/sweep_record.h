@@ -11,16 +11,25 @@
 namespace lexel::cases {
 
 // The record's format tag and the names of a cell's fields, in the order of its array.
-inline constexpr const char* kSweepRecordFormat = "lexel-sweep-record/2";
-inline constexpr const char* kSweepJournalFormat = "lexel-sweep-journal/2";
-inline constexpr const char* kSweepCellFields[] = {"misclassified",      "h",
-                                                   "h_grazing",          "winner",
-                                                   "footprint_mean",     "footprint_max",
-                                                   "uncovered",          "cascades",
-                                                   "empty_partitions",   "storage_factor",
-                                                   "pages_requested",    "pages_resident",
-                                                   "pages_dropped",      "lod_bias",
-                                                   "misclassified_mean", "misclassified_error"};
+inline constexpr const char* kSweepRecordFormat = "lexel-sweep-record/3";
+inline constexpr const char* kSweepJournalFormat = "lexel-sweep-journal/3";
+inline constexpr const char* kSweepCellFields[] = {"misclassified",
+                                                   "h",
+                                                   "h_grazing",
+                                                   "winner",
+                                                   "footprint_mean",
+                                                   "footprint_max",
+                                                   "uncovered",
+                                                   "cascades",
+                                                   "empty_partitions",
+                                                   "storage_factor",
+                                                   "pages_requested",
+                                                   "pages_resident",
+                                                   "pages_dropped",
+                                                   "lod_bias",
+                                                   "misclassified_mean",
+                                                   "misclassified_error",
+                                                   "e"};
 
 // sweep-record.json: the identity and header fields one per line, then one line per light (its
 // cells per method, their times apart in "ms", the study's counts per extra k).

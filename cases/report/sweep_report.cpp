@@ -209,6 +209,7 @@ struct MethodSummary {
     // phase: by 2% and a pixel) and in h on which h orders this method and the reference the same
     // way (is h the right proxy?); NaN for the reference itself or when no light qualifies.
     double hAgreesPercent = std::numeric_limits<double>::quiet_NaN();
+    double eAgreesPercent = std::numeric_limits<double>::quiet_NaN();  // the same for e
     // Mean over the lights with 0 < h < inf of the part of h from grazing samples.
     double grazingShare = 0.0;
     double meanFootprint = 0.0;        // mean over lights of the per-pixel mean σ₁(J⁻¹)
@@ -230,8 +231,24 @@ struct MethodSummary {
 
 // Whether h ranks two cells at all: both finite and not equal (a tie at h = 0, lights without
 // boundary samples, orders nothing).
-bool HOrders(const SweepCell& a, const SweepCell& b) {
-    return std::isfinite(a.h) && std::isfinite(b.h) && a.h != b.h;
+bool Orders(double a, double b) { return std::isfinite(a) && std::isfinite(b) && a != b; }
+
+// Of the lights where the energy ranks the two cells and their misclassified pixels differ beyond
+// the noise (one phase: by 2% and a pixel), the % on which it ranks them as their errors; NaN
+// for none.
+double AgreesPercent(const SweepResult& r, std::size_t m, std::size_t reference,
+                     double SweepCell::*energy) {
+    std::size_t differ = 0, agree = 0;
+    for (const auto& light : r.cells) {
+        const SweepCell& c = light[m];
+        const SweepCell& ref = light[reference];
+        if (m == reference || !Orders(c.*energy, ref.*energy) ||
+            !DiffersBeyondNoise(c, ref, r.phases, Unmeasured::kTwoPercent))
+            continue;
+        ++differ;
+        agree += (c.*energy < ref.*energy) == (c.misclassifiedMean < ref.misclassifiedMean);
+    }
+    return differ ? 100.0 * agree / differ : std::numeric_limits<double>::quiet_NaN();
 }
 
 // The means over lights, their 95% half-width, and the paired difference against the reference.
@@ -256,16 +273,11 @@ void SummarizeMeans(const SweepResult& r, std::size_t m, std::size_t reference,
 MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t reference) {
     MethodSummary out;
     SummarizeMeans(r, m, reference, &out);
-    std::size_t finite = 0, positive = 0, beating = 0, losing = 0, differ = 0, agree = 0;
+    std::size_t finite = 0, positive = 0, beating = 0, losing = 0;
     for (const auto& light : r.cells) {
         const SweepCell& c = light[m];
         const SweepCell& ref = light[reference];
         const bool beyond = DiffersBeyondNoise(c, ref, r.phases, Unmeasured::kAnyDifference);
-        if (m != reference && HOrders(c, ref) &&
-            DiffersBeyondNoise(c, ref, r.phases, Unmeasured::kTwoPercent)) {
-            ++differ;
-            agree += (c.h < ref.h) == (c.misclassifiedMean < ref.misclassifiedMean);
-        }
         if (std::isfinite(c.h) && c.h > 0.0) {
             out.grazingShare += c.hGrazing / c.h;
             ++positive;
@@ -303,7 +315,8 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
     out.meanUncovered /= lights;
     out.beatingPercent = 100.0 * beating / lights;
     out.losingPercent = 100.0 * losing / lights;
-    if (differ) out.hAgreesPercent = 100.0 * agree / differ;
+    out.hAgreesPercent = AgreesPercent(r, m, reference, &SweepCell::h);
+    out.eAgreesPercent = AgreesPercent(r, m, reference, &SweepCell::e);
     out.grazingShare = positive ? out.grazingShare / positive : 0.0;
     if (!r.cells.empty() && r.cells.front()[m].pagesRequested >= 0) {
         double requested = 0.0, resident = 0.0, dropped = 0.0, bias = 0.0;
@@ -368,8 +381,8 @@ std::string PairedCell(double pct, double ci95, bool isReference) {
 TextTable SummaryTable(const SweepResult& r, const View& view) {
     TextTable table({"method", "mean\nmisclassified\n(95% CI)", "% more\nthan ref\n(95% CI)",
                      "% lights\nbeating\nref", "% lights\nref\nbeats", "mean h\n(eq. 6)",
-                     "lights\nwith\nh = inf", "h orders\nas errors", "grazing\nshare\nof h",
-                     "median\nstorage\nfactor", "mean ms\nper light"});
+                     "lights\nwith\nh = inf", "h orders\nas errors", "e orders\nas errors",
+                     "grazing\nshare\nof h", "median\nstorage\nfactor", "mean ms\nper light"});
     const MethodSummary reference = Summarize(r, view.reference, view.reference);
     for (std::size_t m : view.methods) {
         const MethodSummary s = Summarize(r, m, view.reference);
@@ -381,6 +394,7 @@ TextTable SummaryTable(const SweepResult& r, const View& view) {
                       isReference ? "–" : Fixed(s.losingPercent, 0) + "%", Significant(s.meanH, 5),
                       std::to_string(s.infiniteH),
                       std::isnan(s.hAgreesPercent) ? "–" : Fixed(s.hAgreesPercent, 0) + "%",
+                      std::isnan(s.eAgreesPercent) ? "–" : Fixed(s.eAgreesPercent, 0) + "%",
                       Fixed(100.0 * s.grazingShare, 0) + "%", Significant(s.medianStorage, 4),
                       Fixed(s.meanMs, 3)});
     }
@@ -453,7 +467,8 @@ constexpr const char* kSummaryColumns =
     "below); the mean energy h of the report's eq. (6), which Algorithm 1 minimizes (over the "
     "lights where it is finite), and the lights where it is infinite; h orders as errors: of "
     "the lights where the method and the reference differ in h and in misclassified pixels "
-    "beyond the noise, the % on which h ranks them the same way (is h the right proxy?); the "
+    "beyond the noise, the % on which h ranks them the same way (is h the right proxy?); e "
+    "orders as errors: the same for the edge energy e that `optimal` minimizes; the "
     "part of h from boundary samples the light grazes (mean over the lights with 0 < h < inf); "
     "Lloyd et al. 2006's storage factor as measured (median over the lights); the time to "
     "compute the light matrix.";
@@ -611,6 +626,7 @@ nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) 
              {"mean_h", FiniteOrNull(s.meanH)},
              {"lights_with_infinite_h", s.infiniteH},
              {"percent_lights_h_ranks_as_misclassified", FiniteOrNull(s.hAgreesPercent)},
+             {"percent_lights_e_ranks_as_misclassified", FiniteOrNull(s.eAgreesPercent)},
              {"h_share_at_grazing_samples", s.grazingShare},
              {"maps", s.cascades},
              {"mean_footprint", s.meanFootprint},
@@ -718,7 +734,8 @@ std::string SweepLightsCsv(const SweepResult& r) {
     };
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
         const std::string& name = r.methods[m];
-        perLight << ',' << name << "_misclassified," << name << "_h," << name << "_ms";
+        perLight << ',' << name << "_misclassified," << name << "_h," << name << "_e," << name
+                 << "_ms";
         if (r.phases > 1)
             perLight << ',' << name << "_misclassified_mean," << name << "_misclassified_se";
         if (hasWinner(m)) perLight << ',' << name << "_winner";
@@ -736,7 +753,8 @@ std::string SweepLightsCsv(const SweepResult& r) {
                  << r.receiverPixels[l];
         for (std::size_t m = 0; m < r.methods.size(); ++m) {
             const SweepCell& c = r.cells[l][m];
-            perLight << ',' << c.misclassified << ',' << CsvNumber(c.h) << ',' << CsvNumber(c.ms);
+            perLight << ',' << c.misclassified << ',' << CsvNumber(c.h) << ',' << CsvNumber(c.e)
+                     << ',' << CsvNumber(c.ms);
             if (r.phases > 1)
                 perLight << ',' << CsvNumber(c.misclassifiedMean) << ','
                          << CsvNumber(c.misclassifiedError);

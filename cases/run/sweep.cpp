@@ -112,6 +112,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                                  o.storageFactor};
                 r.cells[l][m].misclassifiedMean = o.misclassifiedMean;
                 r.cells[l][m].misclassifiedError = o.misclassifiedError;
+                r.cells[l][m].e = o.e;
                 if (o.pages) {
                     SweepCell& c = r.cells[l][m];
                     c.cascades = static_cast<int>(o.pages->resident);

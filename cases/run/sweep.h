@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,8 @@ struct SweepCell {
     // Over the scene's sub-texel phases (MethodOutcome::misclassifiedMean): the mean misclassified
     // pixels and its standard error (0 for one phase); `misclassified` is phase 0's count.
     double misclassifiedMean = 0.0, misclassifiedError = 0.0;
+    // The edge energy e (MethodOutcome::e; NaN for warped and virtual maps).
+    double e = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SweepResult {

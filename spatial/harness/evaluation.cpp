@@ -471,6 +471,7 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     } else if (cascades.empty()) {
         const ShadowMap& map = shading.maps.front();
         m->h = computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
+        if (!computed.warp) m->e = Energy(m->matrix, samples, kEdgeEnergy);
         for (std::size_t s = 0; s < grazing.size(); ++s)
             if (grazing[s])
                 m->hGrazing +=
@@ -485,6 +486,12 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
             if (shading.shades[i] == Shade::kLit || shading.shades[i] == Shade::kShadowed)
                 ++m->cascades[shading.cascade[i]].pixels;
         MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
+        m->e = 0.0;
+        for (std::size_t i = 0; i < cascades.size(); ++i)
+            m->e += Energy(
+                cascades[i].matrix,
+                SamplesOfCascade(samples, context.baseline.wsRelevant, scene_.camera, cascades, i),
+                kEdgeEnergy);
     }
     if (keepBuffers && computed.virtualMap) {
         m->shades = std::move(shading.shades);

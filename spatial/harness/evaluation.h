@@ -24,6 +24,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -100,7 +101,11 @@ struct MethodOutcome {
     // mean misclassified and false-shadow pixels, and the standard error of the first mean
     // (MeanOverPhases; 0 for one phase). What the tables compare.
     double misclassifiedMean = 0.0, falseShadowMean = 0.0, misclassifiedError = 0.0;
-    double h = 0.0;                       // eq. (6) over the boundary samples
+    double h = 0.0;  // eq. (6) over the boundary samples
+    // The edge energy e with the footprint prior (kEdgeEnergy, energy.h) that `optimal`
+    // minimizes: of the map, or summed over the cascades (each over the samples and prior points
+    // it serves); NaN for a warped or virtual map (not a light matrix).
+    double e = std::numeric_limits<double>::quiet_NaN();
     double hGrazing = 0.0;                // ... of which from grazing samples (kGrazingCos)
     std::vector<double> hAfterIteration;  // optimal*: h after each Algorithm 1 iteration
     double hBeforeRefine = 0.0;           // optimal-refined: h after the rotation search

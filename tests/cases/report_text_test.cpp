@@ -371,6 +371,27 @@ TEST(SweepReport, GrazingShareAndHOrderingsSkipLightsWithoutOrder) {
     EXPECT_DOUBLE_EQ(lispsm["percent_lights_reference_beats"].get<double>(), 50.0);
 }
 
+// "e orders as errors" counts as "h orders" does, on the edge energy: here h orders every light
+// wrongly and e two of three rightly; a NaN e (a warped map) orders nothing.
+TEST(SweepReport, EOrderingsCountLikeHOrderings) {
+    SweepResult r = FairSweep({{{{100, 0, 10.0, 0.0}, {150, 0, 5.0, 0.0}}},
+                               {{{100, 0, 10.0, 0.0}, {50, 0, 20.0, 0.0}}},
+                               {{{100, 0, 10.0, 0.0}, {80, 0, 20.0, 0.0}}},
+                               {{{100, 0, 10.0, 0.0}, {60, 0, 20.0, 0.0}}}},
+                              1);
+    const double e[4][2] = {
+        {1.0, 2.0}, {1.0, 0.5}, {1.0, 2.0}, {1.0, std::numeric_limits<double>::quiet_NaN()}};
+    for (std::size_t l = 0; l < 4; ++l)
+        for (std::size_t m = 0; m < 2; ++m) r.cells[l][m].e = e[l][m];
+    const nlohmann::json doc = SweepJson(r);
+    const nlohmann::json& lispsm = FairEntry(doc, "lispsm-tight");
+    EXPECT_DOUBLE_EQ(lispsm["percent_lights_h_ranks_as_misclassified"].get<double>(), 0.0);
+    EXPECT_NEAR(lispsm["percent_lights_e_ranks_as_misclassified"].get<double>(), 200.0 / 3.0,
+                1e-12);
+    const std::string text = SweepTable(r, PublishedTable1());
+    EXPECT_NE(text.find("e orders"), std::string::npos) << text;
+}
+
 // With phases, a win counts only beyond 1.96 standard errors of the difference.
 TEST(SweepReport, WinsCountOnlyBeyondThePhaseNoise) {
     // Differences 10 with errors (3, 4): 10 > 1.96 · 5 = 9.8, a win; 9 is not; 20 is a loss.
