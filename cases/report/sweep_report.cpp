@@ -69,11 +69,14 @@ std::optional<View> FairView(const SweepResult& r) {
 std::optional<View> EqualTexelView(const SweepResult& r) {
     std::vector<std::string> partitioned = spatial::PartitionedMethodNames();
     for (const std::string& m : spatial::VirtualMethodNames()) partitioned.push_back(m);
-    if (std::none_of(r.methods.begin(), r.methods.end(),
-                     [&](const std::string& m) { return Contains(partitioned, m); }))
+    if (std::none_of(r.methods.begin(), r.methods.end(), [](const std::string& m) {
+            return spatial::IsPartitionedMethod(m) || spatial::IsVirtualMethod(m);
+        }))
         return std::nullopt;
     std::vector<std::string> names = {"optimal"};
     names.insert(names.end(), partitioned.begin(), partitioned.end());
+    for (const std::string& m : r.methods)  // the opt-in ones (sdsm-optimal-h) too
+        if (spatial::IsPartitionedMethod(m) && !Contains(names, m)) names.push_back(m);
     return ViewOf(r, names, "optimal");
 }
 
