@@ -45,9 +45,10 @@ struct PartitionOptions {
     CascadeAllocation allocation = CascadeAllocation::kEqual;
     bool snap = false;  // sdsm: snap its boxes to whole texels (directional lights)
     // The energy sdsm-optimal's multi-start minimizes per partition (energy.h) and, for every
-    // scheme, the Lagrange allocation's cost: e with the prior, as `optimal` (c_i = e_i √N_i,
-    // N_i ∝ c_i^(2/3)); EnergyOptions{} is h (`sdsm-optimal-h`; c_i = h_i N_i, N_i ∝ √c_i).
-    EnergyOptions energy = kEdgeEnergy;
+    // scheme, the Lagrange allocation's cost: h by default (c_i = h_i N_i, N_i ∝ √c_i); with
+    // kEdgeEnergy (`sdsm-optimal-e`) e with the prior (c_i = e_i √N_i, N_i ∝ c_i^(2/3)). h is the
+    // default because per partition e measured worse (RESULTS.md, issue 25).
+    EnergyOptions energy;
 };
 
 // The cascades of `scheme` for the context's light. Their texels add up to context.map's (equal

@@ -38,7 +38,7 @@ constexpr NamedPartition kPartitions[] = {
     {"zp-lispsm", PartitionScheme::kZpLispsm, false},
     {"fp-lispsm", PartitionScheme::kFpLispsm, false},
     {"sdsm-optimal", PartitionScheme::kSdsmOptimal, false},
-    {"sdsm-optimal-h", PartitionScheme::kSdsmOptimal, false},  // opt-in: on h (eq. 6)
+    {"sdsm-optimal-e", PartitionScheme::kSdsmOptimal, false},  // opt-in: on e
 };
 
 }  // namespace
@@ -46,7 +46,7 @@ constexpr NamedPartition kPartitions[] = {
 std::vector<std::string> PartitionedMethodNames() {
     std::vector<std::string> names;
     for (const NamedPartition& p : kPartitions)
-        if (p.name != "sdsm-optimal-h") names.emplace_back(p.name);
+        if (p.name != "sdsm-optimal-e") names.emplace_back(p.name);
     return names;
 }
 
@@ -57,7 +57,7 @@ std::vector<std::string> VirtualMethodNames() { return {"vsm", "vsm-dynamic"}; }
 bool IsVirtualMethod(std::string_view name) { return name == "vsm" || name == "vsm-dynamic"; }
 
 std::vector<std::string> OptInMethodNames() {
-    return {"optimal-refined-h", "sdsm-optimal-h", kOracleMethod};
+    return {"optimal-refined-h", "sdsm-optimal-e", kOracleMethod};
 }
 
 namespace {
@@ -187,13 +187,13 @@ constexpr MethodDescription kDescriptions[] = {
     {"sdsm-rect", "sdsm's partitions, each fitted with the minimum-area rectangle"},
     {"zp-lispsm", "cascades: Lloyd et al. 2006's log z-partitions, LiSPSM in each"},
     {"fp-lispsm", "Lloyd et al. 2006's face partitioning: a LiSPSM map per face wedge"},
-    {"sdsm-optimal", "sdsm's partitions, optimal (multi-start on e) in each"},
+    {"sdsm-optimal", "sdsm's partitions, optimal-h (multi-start on h) in each"},
     {"tsm", "Martin & Tan 2004: the trapezoid around the visible points, 80% focus rule"},
     {"tsm-report", "tsm as the paper fits it: the view frustum and scene bounds"},
     {"vsm", "virtual shadow map: 16k² pages at the footprint's level, the single map's texels"},
     {"vsm-dynamic", "vsm with the LOD bias raised until its pages fit the pool (UE5)"},
     {"optimal-refined-h", "optimal-h, its best start refined on h by Ceres LBFGS"},
-    {"sdsm-optimal-h", "sdsm's partitions, optimal-h (multi-start on h) in each"},
+    {"sdsm-optimal-e", "sdsm's partitions, optimal (multi-start on e) in each"},
     {kOracleMethod, "bound: the best single matrix by the measured error (scored on the rays)"},
 };
 
@@ -291,7 +291,7 @@ MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& c
         throw std::invalid_argument(std::string(partition.name) + " needs the samples");
     PartitionOptions options = context.partitions;
     options.snap = partition.snap;
-    if (partition.name == "sdsm-optimal-h") options.energy = EnergyOptions{};
+    if (partition.name == "sdsm-optimal-e") options.energy = kEdgeEnergy;
     MethodMatrix m;
     m.cascades =
         PartitionedLightMatrices(partition.scheme, context.baseline, *context.samples, options);

@@ -260,7 +260,7 @@ double CascadeEnergySum(std::span<const Cascade> cascades, const LightSamples& s
     return total;
 }
 
-// On e (sdsm-optimal) and on h (sdsm-optimal-h), with either allocation: each cascade's energy,
+// On e (sdsm-optimal-e) and on h (sdsm-optimal), with either allocation: each cascade's energy,
 // and their sum, at most SDSM's (the Lagrange allocation on the same energy's law).
 TEST(Partitions, SdsmOptimalNeverHasALargerEnergyThanSdsm) {
     const Walkthrough& w = SharedWalkthrough();
