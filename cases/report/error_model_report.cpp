@@ -67,6 +67,9 @@ ErrorModelSummary Summarize(const ErrorModelStudy& study, const std::string& nam
         s.explained += study.totals[m].explained;
         s.singlePhase += study.totals[m].singlePhase;
         s.uncovered += study.totals[m].uncovered;
+        s.falseShadow += study.totals[m].falseShadow;
+        s.onFloor += study.totals[m].onFloor;
+        s.falseShadowOffFloor += study.totals[m].falseShadowOffFloor;
     }
     return s;
 }
@@ -198,7 +201,10 @@ nlohmann::json ErrorModelJson(const ErrorModelStudy& study) {
                            {"explained_share", FiniteOrNull(s.ExplainedShare())},
                            {"uncovered_pixels", FiniteOrNull(s.uncovered)},
                            {"uncovered_share", FiniteOrNull(s.UncoveredShare())},
-                           {"single_phase_pixels", FiniteOrNull(s.singlePhase)}});
+                           {"single_phase_pixels", FiniteOrNull(s.singlePhase)},
+                           {"false_shadow_pixels", FiniteOrNull(s.falseShadow)},
+                           {"floor_pixels", FiniteOrNull(s.onFloor)},
+                           {"off_floor_false_shadow_pixels", FiniteOrNull(s.falseShadowOffFloor)}});
     std::size_t withSamples = 0;
     for (std::size_t n : study.samplesPerLight) withSamples += n > 0;
     nlohmann::json bins = nlohmann::json::array();
@@ -238,6 +244,15 @@ std::string ErrorModelText(const ErrorModelStudy& study) {
             << std::setw(10) << Fixed(100.0 * s.ExplainedShare(), 1) << "%" << std::setw(10)
             << Fixed(100.0 * s.UncoveredShare(), 1) << "%" << std::setw(13)
             << Fixed(s.fitPerLight.slope, 3) << std::setw(9) << Fixed(s.fitPerLight.r, 3) << '\n';
+    out << "where the misclassified pixels lie (phase means summed over the lights):\n"
+        << std::left << std::setw(18) << "method" << std::right << std::setw(14) << "misclassified"
+        << std::setw(10) << "on floor" << std::setw(11) << "off floor" << std::setw(15)
+        << "false shadow" << std::setw(24) << "false shadow off floor" << '\n';
+    for (const ErrorModelSummary& s : SummarizeErrorModel(study))
+        out << std::left << std::setw(18) << s.method << std::right << std::setw(14)
+            << Fixed(s.misclassified, 1) << std::setw(10) << Fixed(s.onFloor, 1) << std::setw(11)
+            << Fixed(s.misclassified - s.onFloor, 1) << std::setw(15) << Fixed(s.falseShadow, 1)
+            << std::setw(24) << Fixed(s.falseShadowOffFloor, 1) << '\n';
     out << "all methods binned by prediction (frame pixels):\n"
         << std::right << std::setw(20) << "predicted in" << std::setw(9) << "samples"
         << std::setw(11) << "predicted" << std::setw(10) << "measured" << std::setw(8) << "ratio"

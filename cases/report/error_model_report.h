@@ -35,6 +35,7 @@ struct ErrorModelSummary {
     double predicted = 0.0, measured = 0.0;  // Σ over the fitted samples (frame pixels)
     double misclassified = 0.0, explained = 0.0, singlePhase = 0.0;  // ErrorModelTotals summed
     double uncovered = 0.0;
+    double falseShadow = 0.0, onFloor = 0.0, falseShadowOffFloor = 0.0;  // ErrorModelTotals summed
     double ExplainedShare() const;  // explained / misclassified (NaN for 0)
     double UncoveredShare() const;  // uncovered / misclassified (NaN for 0)
 };

@@ -48,19 +48,24 @@ bool MapCovers(const spatial::LightSpace& lightSpace, const spatial::LightMatrix
     return u.x >= 0.0 && u.y >= 0.0 && u.x < map.width && u.y < map.height;
 }
 
-// Per frame pixel: in how many of the phases it is a misclassified counted pixel the phase's map
-// covers; the phase-summed count of misclassified pixels it does not cover (a shifted tight map
-// loses up to half a texel at its border: not the model's band), and the unshifted map's count.
-std::vector<std::uint16_t> WrongPerPixel(const spatial::Evaluator& evaluator,
-                                         const spatial::Light& light,
-                                         const spatial::LightMatrix& matrix,
-                                         std::span<const std::uint8_t> truth, int phases,
-                                         std::int64_t* uncoveredWrong, std::int64_t* singlePhase) {
+// Per frame pixel, summed over the phases: how often it is a misclassified counted pixel the
+// phase's map covers, how often one it does not cover (a shifted tight map loses up to half a
+// texel at its border: not the model's band), and how often the map shadows it where the rays
+// light it (false shadow, covered or not); and the unshifted map's count.
+struct PixelErrors {
+    std::vector<std::uint16_t> wrong, uncovered, falseShadow;
+    std::int64_t singlePhase = 0;
+};
+
+PixelErrors WrongPerPixel(const spatial::Evaluator& evaluator, const spatial::Light& light,
+                          const spatial::LightMatrix& matrix, std::span<const std::uint8_t> truth,
+                          int phases) {
     const spatial::LightSpace lightSpace(light, evaluator.bounds());
     const spatial::Resolution map = evaluator.scene().shadowMap;
-    std::vector<std::uint16_t> wrong(truth.size(), 0);
-    *uncoveredWrong = 0;
-    *singlePhase = 0;
+    PixelErrors e;
+    e.wrong.assign(truth.size(), 0);
+    e.uncovered.assign(truth.size(), 0);
+    e.falseShadow.assign(truth.size(), 0);
     const std::vector<glm::dvec2> shifts = spatial::SubTexelPhases(phases);
     for (std::size_t k = 0; k < shifts.size(); ++k) {
         const spatial::LightMatrix shifted = matrix.Shifted(shifts[k]);
@@ -68,14 +73,35 @@ std::vector<std::uint16_t> WrongPerPixel(const spatial::Evaluator& evaluator,
         for (std::size_t p = 0; p < shades.size(); ++p) {
             if (shades[p] != Shade::kLit && shades[p] != Shade::kShadowed) continue;
             if ((shades[p] == Shade::kShadowed) == static_cast<bool>(truth[p])) continue;
-            *singlePhase += k == 0;  // phase 0 is the unshifted map (SubTexelPhases)
+            e.singlePhase += k == 0;  // phase 0 is the unshifted map (SubTexelPhases)
+            e.falseShadow[p] += shades[p] == Shade::kShadowed;
             if (MapCovers(lightSpace, shifted, map, evaluator.frame().wsPosition[p]))
-                ++wrong[p];
+                ++e.wrong[p];
             else
-                ++*uncoveredWrong;
+                ++e.uncovered[p];
         }
     }
-    return wrong;
+    return e;
+}
+
+// Whether a frame pixel shows the scene's floor plane (Scene::floorPlane; none: no pixel): its
+// point on the plane within kFloorTolerance world units per unit of distance from the origin, its
+// normal the plane's within kFloorCosine.
+constexpr double kFloorTolerance = 1e-6;  // world units per world unit (double-precision points)
+constexpr double kFloorCosine = 1.0 - 1e-9;
+std::vector<std::uint8_t> FloorPixels(const spatial::Scene& scene,
+                                      const spatial::CameraBuffer& frame) {
+    std::vector<std::uint8_t> floor(frame.wsPosition.size(), 0);
+    if (!scene.floorPlane) return floor;
+    const glm::dvec3 n(*scene.floorPlane);
+    const double d = scene.floorPlane->w;
+    for (std::size_t p = 0; p < floor.size(); ++p) {
+        if (!frame.Covered(p)) continue;
+        const glm::dvec3& x = frame.wsPosition[p];
+        floor[p] = std::abs(glm::dot(n, x) + d) <= kFloorTolerance * (1.0 + glm::length(x)) &&
+                   std::abs(glm::dot(n, frame.wsNormal[p])) >= kFloorCosine;
+    }
+    return floor;
 }
 
 struct LightResult {
@@ -129,6 +155,7 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
     const spatial::Resolution readback = evaluator.readback().buffer.resolution;
     const spatial::Resolution frame = evaluator.frame().resolution;
     const double phases = phaseCount;
+    const std::vector<std::uint8_t> floor = FloorPixels(evaluator.scene(), evaluator.frame());
     LightResult r;
     r.sampleCount = ls.lsX.size();
     for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -154,19 +181,20 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
             e.inRange = std::isfinite(g) && 2.0 + 0.5 * g <= kMaxAssignRadius;
             radius[s] = e.inRange ? 2.0 + 0.5 * g : kMaxAssignRadius;
         }
-        std::int64_t single = 0, uncovered = 0;
-        const std::vector<std::uint16_t> wrong =
-            WrongPerPixel(evaluator, light, matrix, truth, phaseCount, &uncovered, &single);
+        const PixelErrors errors = WrongPerPixel(evaluator, light, matrix, truth, phaseCount);
         const std::vector<std::int32_t> owner = AssignPixels(frame, readback, samples, radius);
         ErrorModelTotals t;
-        t.singlePhase = static_cast<double>(single);
-        t.uncovered = static_cast<double>(uncovered) / phases;
-        t.misclassified = t.uncovered;
-        for (std::size_t p = 0; p < wrong.size(); ++p) {
-            if (wrong[p] == 0) continue;
-            const double w = wrong[p] / phases;
-            t.misclassified += w;
-            if (owner[p] < 0) continue;
+        t.singlePhase = static_cast<double>(errors.singlePhase);
+        for (std::size_t p = 0; p < errors.wrong.size(); ++p) {
+            const double all = (errors.wrong[p] + errors.uncovered[p]) / phases;
+            if (all == 0.0) continue;
+            const double w = errors.wrong[p] / phases;
+            t.misclassified += all;
+            t.uncovered += errors.uncovered[p] / phases;
+            t.falseShadow += errors.falseShadow[p] / phases;
+            if (floor[p]) t.onFloor += all;
+            if (!floor[p]) t.falseShadowOffFloor += errors.falseShadow[p] / phases;
+            if (owner[p] < 0 || w == 0.0) continue;
             t.explained += w;
             samples[static_cast<std::size_t>(owner[p])].measured += w;
         }
@@ -218,6 +246,9 @@ ErrorModelStudy RunErrorModelStudy(const spatial::Scene& scene,
             study.totals[m].explained += r.totals[m].explained;
             study.totals[m].singlePhase += r.totals[m].singlePhase;
             study.totals[m].uncovered += r.totals[m].uncovered;
+            study.totals[m].falseShadow += r.totals[m].falseShadow;
+            study.totals[m].onFloor += r.totals[m].onFloor;
+            study.totals[m].falseShadowOffFloor += r.totals[m].falseShadowOffFloor;
         }
     }
     study.seconds = timer.Ms() / 1000.0;

@@ -57,6 +57,13 @@ struct ErrorModelTotals {
     // ... of `misclassified`, the pixels the phase's map does not cover (shaded lit: a shifted
     // map loses up to half a texel at its border), never assigned to a sample.
     double uncovered = 0.0;
+    // ... the pixels the map shadows where the rays light them (the rest it lights in shadow).
+    double falseShadow = 0.0;
+    // ... the pixels on the scene's floor plane (Scene::floorPlane; 0 without one): a planar
+    // receiver of cast shadows, the model's own case. Off it lie the receivers the model leaves
+    // out (curved and tessellated surfaces, which the map can shadow by themselves).
+    double onFloor = 0.0;
+    double falseShadowOffFloor = 0.0;  // ... false shadows off the floor plane
 };
 
 struct ErrorModelStudy {

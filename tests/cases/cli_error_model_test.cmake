@@ -49,6 +49,25 @@ if(NOT pooled STREQUAL "all" OR points LESS 500 OR slope LESS 0.6 OR slope GREAT
     message(FATAL_ERROR "error_model.json: the pooled fit is off: ${pooled} slope ${slope} r ${r} explained ${share} over ${points} samples")
 endif()
 
+# Where the errors lie: the floor's share and the false shadows are parts of the misclassified.
+string(JSON wrong GET "${json}" methods ${last} misclassified_pixels)
+string(JSON onFloor GET "${json}" methods ${last} floor_pixels)
+string(JSON falseShadow GET "${json}" methods ${last} false_shadow_pixels)
+string(JSON offFloorShadow GET "${json}" methods ${last} off_floor_false_shadow_pixels)
+foreach(v wrong onFloor falseShadow offFloorShadow)
+    if(NOT "${${v}}" MATCHES "^[0-9]+(\\.[0-9]+)?([eE][-+]?[0-9]+)?$")
+        message(FATAL_ERROR "error_model.json: ${v} is not a finite number: ${${v}}")
+    endif()
+endforeach()
+if(onFloor GREATER wrong OR falseShadow GREATER wrong OR offFloorShadow GREATER falseShadow
+   OR NOT onFloor GREATER 0)
+    message(FATAL_ERROR "error_model.json: floor ${onFloor}, false shadow ${falseShadow} (off the floor ${offFloorShadow}) of ${wrong} misclassified")
+endif()
+file(READ "${WORK}/good/error_model.txt" text)
+if(NOT text MATCHES "where the misclassified pixels lie")
+    message(FATAL_ERROR "error_model.txt lacks the table of where the errors lie")
+endif()
+
 # ---- Bad input: one line naming the flag, exit 2, nothing written ----
 expect_run(2 "^$" "^lexel: error: --phases: Value 257 not in range 1 to 256\n$"
            error-model "${case}" --out "${WORK}/bad" --lights 2 --phases 257)
