@@ -194,10 +194,17 @@ LightSamples SamplesOfCascade(const LightSamples& samples, std::span<const glm::
 
 double PartitionedEnergy(std::span<const Cascade> cascades, const LightSamples& samples,
                          std::span<const glm::dvec3> wsRelevant, const Camera& camera) {
-    double h = 0.0;
+    return PartitionedEnergy(cascades, samples, wsRelevant, camera, EnergyOptions{});
+}
+
+double PartitionedEnergy(std::span<const Cascade> cascades, const LightSamples& samples,
+                         std::span<const glm::dvec3> wsRelevant, const Camera& camera,
+                         const EnergyOptions& energy) {
+    double total = 0.0;
     for (std::size_t i = 0; i < cascades.size(); ++i)
-        h += Energy(cascades[i].matrix, SamplesOfCascade(samples, wsRelevant, camera, cascades, i));
-    return h;
+        total += Energy(cascades[i].matrix,
+                        SamplesOfCascade(samples, wsRelevant, camera, cascades, i), energy);
+    return total;
 }
 
 std::vector<Cascade> PartitionedLightMatrices(PartitionScheme scheme,

@@ -72,5 +72,10 @@ LightSamples SamplesOfCascade(const LightSamples& samples, std::span<const glm::
 // h (eq. 6) of a partitioned method: Σ over cascades of h of its matrix over the samples it serves.
 double PartitionedEnergy(std::span<const Cascade> cascades, const LightSamples& samples,
                          std::span<const glm::dvec3> wsRelevant, const Camera& camera);
+// The same sum of any energy of the family (energy.h), each cascade's prior over the prior points
+// it serves: the 4-argument form exactly when energy.IsReport().
+double PartitionedEnergy(std::span<const Cascade> cascades, const LightSamples& samples,
+                         std::span<const glm::dvec3> wsRelevant, const Camera& camera,
+                         const EnergyOptions& energy);
 
 }  // namespace lexel::spatial

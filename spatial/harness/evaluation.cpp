@@ -486,12 +486,8 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
             if (shading.shades[i] == Shade::kLit || shading.shades[i] == Shade::kShadowed)
                 ++m->cascades[shading.cascade[i]].pixels;
         MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
-        m->e = 0.0;
-        for (std::size_t i = 0; i < cascades.size(); ++i)
-            m->e += Energy(
-                cascades[i].matrix,
-                SamplesOfCascade(samples, context.baseline.wsRelevant, scene_.camera, cascades, i),
-                kEdgeEnergy);
+        m->e = PartitionedEnergy(cascades, samples, context.baseline.wsRelevant, scene_.camera,
+                                 kEdgeEnergy);
     }
     if (keepBuffers && computed.virtualMap) {
         m->shades = std::move(shading.shades);

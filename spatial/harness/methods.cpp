@@ -27,18 +27,21 @@ namespace {
 struct NamedPartition {
     std::string_view name;
     PartitionScheme scheme;
-    bool snap;
+    bool snap = false;
+    // sdsm-optimal's energy: e with the prior (kEdgeEnergy) instead of the case's (h by default).
+    bool onEdgeEnergy = false;
+    bool optIn = false;  // run only when named (OptInMethodNames)
 };
 
 constexpr NamedPartition kPartitions[] = {
-    {"pssm", PartitionScheme::kPssm, false},
-    {"sdsm", PartitionScheme::kSdsm, false},
+    {"pssm", PartitionScheme::kPssm},
+    {"sdsm", PartitionScheme::kSdsm},
     {"sdsm-snap", PartitionScheme::kSdsm, true},
-    {"sdsm-rect", PartitionScheme::kSdsmRect, false},
-    {"zp-lispsm", PartitionScheme::kZpLispsm, false},
-    {"fp-lispsm", PartitionScheme::kFpLispsm, false},
-    {"sdsm-optimal", PartitionScheme::kSdsmOptimal, false},
-    {"sdsm-optimal-e", PartitionScheme::kSdsmOptimal, false},  // opt-in: on e
+    {"sdsm-rect", PartitionScheme::kSdsmRect},
+    {"zp-lispsm", PartitionScheme::kZpLispsm},
+    {"fp-lispsm", PartitionScheme::kFpLispsm},
+    {"sdsm-optimal", PartitionScheme::kSdsmOptimal},
+    {"sdsm-optimal-e", PartitionScheme::kSdsmOptimal, false, true, true},
 };
 
 }  // namespace
@@ -46,7 +49,7 @@ constexpr NamedPartition kPartitions[] = {
 std::vector<std::string> PartitionedMethodNames() {
     std::vector<std::string> names;
     for (const NamedPartition& p : kPartitions)
-        if (p.name != "sdsm-optimal-e") names.emplace_back(p.name);
+        if (!p.optIn) names.emplace_back(p.name);
     return names;
 }
 
@@ -291,7 +294,7 @@ MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& c
         throw std::invalid_argument(std::string(partition.name) + " needs the samples");
     PartitionOptions options = context.partitions;
     options.snap = partition.snap;
-    if (partition.name == "sdsm-optimal-e") options.energy = kEdgeEnergy;
+    if (partition.onEdgeEnergy) options.energy = kEdgeEnergy;
     MethodMatrix m;
     m.cascades =
         PartitionedLightMatrices(partition.scheme, context.baseline, *context.samples, options);
