@@ -60,8 +60,8 @@ struct ErrorModelTotals {
     // ... the pixels the map shadows where the rays light them (the rest it lights in shadow).
     double falseShadow = 0.0;
     // ... the pixels on the scene's floor plane (Scene::floorPlane; 0 without one): a planar
-    // receiver of cast shadows, the model's own case. Off it lie the receivers the model leaves
-    // out (curved and tessellated surfaces, which the map can shadow by themselves).
+    // receiver of cast shadows, the model's own case. Off it lie walls and objects, among them
+    // the curved and tessellated receivers the model leaves out (error_model.h).
     double onFloor = 0.0;
     double falseShadowOffFloor = 0.0;  // ... false shadows off the floor plane
 };
