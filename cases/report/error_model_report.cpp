@@ -61,16 +61,8 @@ ErrorModelSummary Summarize(const ErrorModelStudy& study, const std::string& nam
         perLightY.push_back(lightY[i]);
     }
     s.fitPerLight = FitLine(perLightX, perLightY);
-    for (std::size_t m = 0; m < study.totals.size(); ++m) {
-        if (!all && m != method) continue;
-        s.misclassified += study.totals[m].misclassified;
-        s.explained += study.totals[m].explained;
-        s.singlePhase += study.totals[m].singlePhase;
-        s.uncovered += study.totals[m].uncovered;
-        s.falseShadow += study.totals[m].falseShadow;
-        s.onFloor += study.totals[m].onFloor;
-        s.falseShadowOffFloor += study.totals[m].falseShadowOffFloor;
-    }
+    for (std::size_t m = 0; m < study.totals.size(); ++m)
+        if (all || m == method) s.totals += study.totals[m];
     return s;
 }
 
@@ -128,11 +120,11 @@ LineFit FitLine(std::span<const double> x, std::span<const double> y) {
 }
 
 double ErrorModelSummary::ExplainedShare() const {
-    return misclassified > 0.0 ? explained / misclassified : kNaN;
+    return totals.misclassified > 0.0 ? totals.explained / totals.misclassified : kNaN;
 }
 
 double ErrorModelSummary::UncoveredShare() const {
-    return misclassified > 0.0 ? uncovered / misclassified : kNaN;
+    return totals.misclassified > 0.0 ? totals.uncovered / totals.misclassified : kNaN;
 }
 
 std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study) {
@@ -186,25 +178,26 @@ std::string ErrorModelCsv(const ErrorModelStudy& study) {
 nlohmann::json ErrorModelJson(const ErrorModelStudy& study) {
     nlohmann::json methods = nlohmann::json::array();
     for (const ErrorModelSummary& s : SummarizeErrorModel(study))
-        methods.push_back({{"method", s.method},
-                           {"fit", FitJson(s.fit)},
-                           {"fit_isotropic", FitJson(s.fitIsotropic)},
-                           {"fit_per_light", FitJson(s.fitPerLight)},
-                           {"samples", s.samples},
-                           {"samples_without_normal", s.withoutNormal},
-                           {"samples_out_of_range", s.outOfRange},
-                           {"measured_pixels_out_of_range", FiniteOrNull(s.measuredOutOfRange)},
-                           {"predicted_pixels", FiniteOrNull(s.predicted)},
-                           {"measured_pixels", FiniteOrNull(s.measured)},
-                           {"misclassified_pixels", FiniteOrNull(s.misclassified)},
-                           {"explained_pixels", FiniteOrNull(s.explained)},
-                           {"explained_share", FiniteOrNull(s.ExplainedShare())},
-                           {"uncovered_pixels", FiniteOrNull(s.uncovered)},
-                           {"uncovered_share", FiniteOrNull(s.UncoveredShare())},
-                           {"single_phase_pixels", FiniteOrNull(s.singlePhase)},
-                           {"false_shadow_pixels", FiniteOrNull(s.falseShadow)},
-                           {"floor_pixels", FiniteOrNull(s.onFloor)},
-                           {"off_floor_false_shadow_pixels", FiniteOrNull(s.falseShadowOffFloor)}});
+        methods.push_back(
+            {{"method", s.method},
+             {"fit", FitJson(s.fit)},
+             {"fit_isotropic", FitJson(s.fitIsotropic)},
+             {"fit_per_light", FitJson(s.fitPerLight)},
+             {"samples", s.samples},
+             {"samples_without_normal", s.withoutNormal},
+             {"samples_out_of_range", s.outOfRange},
+             {"measured_pixels_out_of_range", FiniteOrNull(s.measuredOutOfRange)},
+             {"predicted_pixels", FiniteOrNull(s.predicted)},
+             {"measured_pixels", FiniteOrNull(s.measured)},
+             {"misclassified_pixels", FiniteOrNull(s.totals.misclassified)},
+             {"explained_pixels", FiniteOrNull(s.totals.explained)},
+             {"explained_share", FiniteOrNull(s.ExplainedShare())},
+             {"uncovered_pixels", FiniteOrNull(s.totals.uncovered)},
+             {"uncovered_share", FiniteOrNull(s.UncoveredShare())},
+             {"single_phase_pixels", FiniteOrNull(s.totals.singlePhase)},
+             {"false_shadow_pixels", FiniteOrNull(s.totals.falseShadow)},
+             {"floor_pixels", FiniteOrNull(s.totals.onFloor)},
+             {"off_floor_false_shadow_pixels", FiniteOrNull(s.totals.falseShadowOffFloor)}});
     std::size_t withSamples = 0;
     for (std::size_t n : study.samplesPerLight) withSamples += n > 0;
     nlohmann::json bins = nlohmann::json::array();
@@ -250,9 +243,10 @@ std::string ErrorModelText(const ErrorModelStudy& study) {
         << "false shadow" << std::setw(24) << "false shadow off floor" << '\n';
     for (const ErrorModelSummary& s : SummarizeErrorModel(study))
         out << std::left << std::setw(18) << s.method << std::right << std::setw(14)
-            << Fixed(s.misclassified, 1) << std::setw(10) << Fixed(s.onFloor, 1) << std::setw(11)
-            << Fixed(s.misclassified - s.onFloor, 1) << std::setw(15) << Fixed(s.falseShadow, 1)
-            << std::setw(24) << Fixed(s.falseShadowOffFloor, 1) << '\n';
+            << Fixed(s.totals.misclassified, 1) << std::setw(10) << Fixed(s.totals.onFloor, 1)
+            << std::setw(11) << Fixed(s.totals.misclassified - s.totals.onFloor, 1) << std::setw(15)
+            << Fixed(s.totals.falseShadow, 1) << std::setw(24)
+            << Fixed(s.totals.falseShadowOffFloor, 1) << '\n';
     out << "all methods binned by prediction (frame pixels):\n"
         << std::right << std::setw(20) << "predicted in" << std::setw(9) << "samples"
         << std::setw(11) << "predicted" << std::setw(10) << "measured" << std::setw(8) << "ratio"

@@ -33,11 +33,9 @@ struct ErrorModelSummary {
     std::size_t samples = 0, withoutNormal = 0, outOfRange = 0;
     double measuredOutOfRange = 0.0;         // pixels assigned to out-of-range samples
     double predicted = 0.0, measured = 0.0;  // Σ over the fitted samples (frame pixels)
-    double misclassified = 0.0, explained = 0.0, singlePhase = 0.0;  // ErrorModelTotals summed
-    double uncovered = 0.0;
-    double falseShadow = 0.0, onFloor = 0.0, falseShadowOffFloor = 0.0;  // ErrorModelTotals summed
-    double ExplainedShare() const;  // explained / misclassified (NaN for 0)
-    double UncoveredShare() const;  // uncovered / misclassified (NaN for 0)
+    ErrorModelTotals totals;                 // the method's (or every method's) summed
+    double ExplainedShare() const;           // totals: explained / misclassified (NaN for 0)
+    double UncoveredShare() const;           // totals: uncovered / misclassified (NaN for 0)
 };
 std::vector<ErrorModelSummary> SummarizeErrorModel(const ErrorModelStudy& study);
 

@@ -206,6 +206,17 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
 
 }  // namespace
 
+ErrorModelTotals& ErrorModelTotals::operator+=(const ErrorModelTotals& o) {
+    misclassified += o.misclassified;
+    explained += o.explained;
+    singlePhase += o.singlePhase;
+    uncovered += o.uncovered;
+    falseShadow += o.falseShadow;
+    onFloor += o.onFloor;
+    falseShadowOffFloor += o.falseShadowOffFloor;
+    return *this;
+}
+
 ErrorModelStudy RunErrorModelStudy(const spatial::Scene& scene,
                                    const std::vector<std::string>& methods,
                                    const std::vector<spatial::Light>& lights, int phases,
@@ -241,15 +252,7 @@ ErrorModelStudy RunErrorModelStudy(const spatial::Scene& scene,
     for (const LightResult& r : results) {
         study.samplesPerLight.push_back(r.sampleCount);
         study.samples.insert(study.samples.end(), r.samples.begin(), r.samples.end());
-        for (std::size_t m = 0; m < methods.size(); ++m) {
-            study.totals[m].misclassified += r.totals[m].misclassified;
-            study.totals[m].explained += r.totals[m].explained;
-            study.totals[m].singlePhase += r.totals[m].singlePhase;
-            study.totals[m].uncovered += r.totals[m].uncovered;
-            study.totals[m].falseShadow += r.totals[m].falseShadow;
-            study.totals[m].onFloor += r.totals[m].onFloor;
-            study.totals[m].falseShadowOffFloor += r.totals[m].falseShadowOffFloor;
-        }
+        for (std::size_t m = 0; m < methods.size(); ++m) study.totals[m] += r.totals[m];
     }
     study.seconds = timer.Ms() / 1000.0;
     return study;

@@ -64,6 +64,7 @@ struct ErrorModelTotals {
     // the curved and tessellated receivers the model leaves out (error_model.h).
     double onFloor = 0.0;
     double falseShadowOffFloor = 0.0;  // ... false shadows off the floor plane
+    ErrorModelTotals& operator+=(const ErrorModelTotals& o);  // field by field
 };
 
 struct ErrorModelStudy {
