@@ -42,6 +42,11 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
                                     std::span<const OptimizerStart> starts, Resolution map,
                                     const OptimizerOptions& options) {
     if (starts.empty()) throw std::invalid_argument("OptimizeFromStarts: no starts");
+    if (options.maxSamples != 0 && samples.lsX.size() > options.maxSamples) {
+        OptimizerOptions every = options;  // thinned once: every start is judged on the same
+        every.maxSamples = 0;
+        return OptimizeFromStarts(ThinSamples(samples, options.maxSamples), starts, map, every);
+    }
     MultiStartResult out;
     OptimizerOptions searchOptions = options;
     searchOptions.refine = false;

@@ -38,7 +38,8 @@ struct MultiStartResult {
 // (options.energy: h by default; startH and searchH hold it) among the starts' maps and the
 // searches wins. With options.refine, the best search's axis is also
 // refined (optimal-refined) and competes too. `starts` must not be empty (std::invalid_argument).
-// Throws DomainError as OptimizeLightMatrix does.
+// With options.maxSamples, everything (startH too) runs on the same thinned samples. Throws
+// DomainError as OptimizeLightMatrix does.
 MultiStartResult OptimizeFromStarts(const LightSamples& samples,
                                     std::span<const OptimizerStart> starts, Resolution map,
                                     const OptimizerOptions& options = {});

@@ -282,6 +282,11 @@ glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& k, double angle) {
 
 OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
                                     Resolution map, const OptimizerOptions& options) {
+    if (options.maxSamples != 0 && samples.lsX.size() > options.maxSamples) {
+        OptimizerOptions every = options;
+        every.maxSamples = 0;
+        return OptimizeLightMatrix(ThinSamples(samples, options.maxSamples), initialP4, map, every);
+    }
     if (samples.lsRelevant.empty())
         throw DomainError(Subject::kCamera, "the camera sees nothing: no relevant points");
     OptimizerResult r;

@@ -144,6 +144,7 @@ LightMatrix FitPartition(PartitionScheme scheme, const BaselineContext& part,
             for (OptimizerStart& s : StandardStarts(part)) starts.push_back(std::move(s));
             OptimizerOptions optimizer;
             optimizer.energy = options.energy;
+            optimizer.maxSamples = options.maxSamples;
             return OptimizeFromStarts(partSamples, starts, part.map, optimizer).result.matrix;
         }
     }

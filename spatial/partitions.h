@@ -49,6 +49,8 @@ struct PartitionOptions {
     // kEdgeEnergy (`sdsm-optimal-e`) e with the prior (c_i = e_i √N_i, N_i ∝ c_i^(2/3)). h is the
     // default because per partition e measured worse (RESULTS.md, issue 25).
     EnergyOptions energy;
+    // sdsm-optimal's sample budget per partition (OptimizerOptions::maxSamples; 0: all).
+    std::size_t maxSamples = 0;
 };
 
 // The cascades of `scheme` for the context's light. Their texels add up to context.map's (equal

@@ -85,7 +85,31 @@ void AddPriorPoints(const Readback& readback, const LightSpace& lightSpace,
     }
 }
 
+// Every `stride`-th entry of `values`, when it holds one per sample (samples built by hand may
+// leave the pixels, world points or normals empty: those stay as they are).
+template <typename T>
+void KeepEvery(std::vector<T>& values, std::size_t count, std::size_t stride) {
+    if (values.size() != count) return;
+    std::size_t kept = 0;
+    for (std::size_t s = 0; s < count; s += stride) values[kept++] = values[s];
+    values.resize(kept);
+}
+
 }  // namespace
+
+LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples) {
+    const std::size_t n = samples.lsX.size();
+    if (maxSamples == 0 || n <= maxSamples) return samples;
+    const std::size_t stride = (n + maxSamples - 1) / maxSamples;
+    LightSamples out = samples;
+    KeepEvery(out.lsX, n, stride);
+    KeepEvery(out.dXdx1, n, stride);
+    KeepEvery(out.dXdx2, n, stride);
+    KeepEvery(out.pixel, n, stride);
+    KeepEvery(out.wsX, n, stride);
+    KeepEvery(out.edgeNormal, n, stride);
+    return out;
+}
 
 LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& lightSpace,
                                   std::span<const std::uint32_t> boundaryPixels,

@@ -64,6 +64,15 @@ inline constexpr std::size_t kPriorPoints = 64;
 LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightSpace,
                               std::span<const Shade> shades);
 
+// At most `maxSamples` of the boundary samples: every k-th in their order (pixel order for
+// MakeLightSamples), k = ⌈n / maxSamples⌉, starting with the first, each with its derivatives,
+// pixel, world point and edge normal. The relevant points, their hull and the prior's points are
+// kept whole, as is boundaryPixels. All of them when n ≤ maxSamples or maxSamples = 0. A finer
+// readback resolves the shadow edges better, but its boundary samples grow with its width and the
+// optimizer's time with them; thinned to a budget, the samples keep where the edges lie
+// (OptimizerOptions::maxSamples; RESULTS.md, issue 25).
+LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples);
+
 // The boundary pixels of an image of shadow decisions, ascending: a kLit or kShadowed pixel with
 // an 8-neighbour that is kShadowed or kLit the other way. `shades` is row-major with
 // resolution.Count() entries (std::invalid_argument otherwise).

@@ -367,9 +367,9 @@ void CheckSceneExtent(const std::string& field, const spatial::Bounds& wsBounds)
 spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
                                     const std::filesystem::path& baseDir) {
     const JsonField root(document, "");
-    root.ExpectObject({"camera"},
-                      {"name", "description", "lights", "shadow_map", "readback", "geometry",
-                       "generator", "light_sweep", "camera_path", "cascades", "methods", "phases"});
+    root.ExpectObject({"camera"}, {"name", "description", "lights", "shadow_map", "readback",
+                                   "geometry", "generator", "light_sweep", "camera_path",
+                                   "cascades", "methods", "phases", "optimizer"});
     spatial::Scene scene;
     scene.name = CaseNameOf(root, fallbackName);
     if (root.Has("description")) root["description"].String();
@@ -397,6 +397,13 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
         scene.lightSweep = lightSweep;
     }
     if (root.Has("cascades")) scene.partitions = ReadPartitions(root["cascades"]);
+    if (root.Has("optimizer")) {
+        const JsonField optimizer = root["optimizer"];
+        optimizer.ExpectObject({}, {"max_samples"});
+        if (optimizer.Has("max_samples"))
+            scene.optimizerMaxSamples =
+                static_cast<std::size_t>(optimizer["max_samples"].Integer(1, kMaxOptimizerSamples));
+    }
     if (root.Has("phases"))
         scene.phases = static_cast<int>(root["phases"].Integer(1, spatial::kMaxPhases));
     if (root.Has("lights")) {

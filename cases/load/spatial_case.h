@@ -21,6 +21,9 @@ namespace lexel::cases {
 
 // Screen, readback and shadow-map sides are at most this many pixels or texels.
 inline constexpr long long kMaxSide = 16384;
+// optimizer.max_samples is at most this: every readback pixel of the largest readback (a budget
+// never thins beyond the samples there are, so a larger one would mean no budget).
+inline constexpr long long kMaxOptimizerSamples = kMaxSide * kMaxSide;
 
 // The range of 3D scenes lexel accepts (world units). Every coordinate of the camera, its targets,
 // the point lights and the transformed geometry is at most kMaxCoordinate in magnitude; the

@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Write a copy of a 3D case file with its readback (or shadow map) resolution changed.
+"""Write a copy of a 3D case file with its readback, shadow map or sample budget changed.
 
-Usage: case_variant.py CASE.json OUT.json [--readback W H] [--shadow-map W H] [--name NAME]
+Usage: case_variant.py CASE.json OUT.json [--readback W H] [--shadow-map W H]
+                       [--max-samples N] [--name NAME]
 
-lexel takes the readback and the map size from the case file, so a study of either (RESULTS.md,
+lexel takes the readback, the map size and the optimizer's sample budget (`optimizer.max_samples`)
+from the case file, so a study of any of them (RESULTS.md,
 "What the edge energy misses") runs on a variant of a shipped case. The copy is the case with
 those fields replaced, its name suffixed (default: "<name>-readback<W>x<H>"), and every relative
 `geometry[].mesh` path made absolute, so the copy may live anywhere. The sweep's record tells the
@@ -38,10 +40,13 @@ def main():
     parser.add_argument("out")
     parser.add_argument("--readback", nargs=2, type=int, metavar=("W", "H"))
     parser.add_argument("--shadow-map", nargs=2, type=int, metavar=("W", "H"))
+    parser.add_argument("--max-samples", type=int, metavar="N")
     parser.add_argument("--name")
     args = parser.parse_args()
-    if not args.readback and not args.shadow_map:
-        fail("give --readback W H or --shadow-map W H (nothing to change)")
+    if not args.readback and not args.shadow_map and args.max_samples is None:
+        fail("give --readback W H, --shadow-map W H or --max-samples N (nothing to change)")
+    if args.max_samples is not None and not 1 <= args.max_samples <= 16384 * 16384:
+        fail(f"--max-samples: must be in [1, 16384²], got {args.max_samples}")
     if os.path.abspath(args.out) == os.path.abspath(args.case):
         fail("OUT.json: must not be the case file itself")
     try:
@@ -58,6 +63,13 @@ def main():
     if args.shadow_map:
         case["shadow_map"] = resolution(args.shadow_map, "--shadow-map")
         suffix += "-map{}x{}".format(*args.shadow_map)
+    if args.max_samples is not None:
+        optimizer = case.get("optimizer", {})
+        if not isinstance(optimizer, dict):
+            fail(f"{args.case}: /optimizer must be an object")
+        optimizer["max_samples"] = args.max_samples
+        case["optimizer"] = optimizer
+        suffix += f"-samples{args.max_samples}"
     case["name"] = args.name or str(case.get("name", "case")) + suffix
     base = os.path.dirname(os.path.abspath(args.case))
     for item in case.get("geometry", []):

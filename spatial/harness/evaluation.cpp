@@ -330,6 +330,8 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     MethodContext context;
     context.given = options.given;
     context.partitions = scene_.partitions;
+    context.partitions.maxSamples = scene_.optimizerMaxSamples;
+    context.maxSamples = scene_.optimizerMaxSamples;
     context.baseline = MakeBaselineContext(scene_, lightSpace, bounds_, readback_.wsRelevant,
                                            readback_.wsRelevantHull);
 

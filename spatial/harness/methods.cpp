@@ -268,6 +268,7 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
     const Resolution map = context.baseline.map;
     OptimizerOptions options;
     if (name == "optimal" || name == "optimal-refined") options = EdgeOptimizerOptions();
+    options.maxSamples = context.maxSamples;
     if (name == "optimal" || name == "optimal-refined" || name == "optimal-h" ||
         name == "optimal-refined-h") {
         options.refine = name == "optimal-refined" || name == "optimal-refined-h";

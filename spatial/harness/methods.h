@@ -62,6 +62,8 @@ struct MethodContext {
     Resolution frame;  // the final frame's size (rtw's sampling rates)
     // The case's own methods for this light (looked up by name before the registry); may be empty.
     std::span<const GivenMatrix> given;
+    // The optimal* methods' sample budget (OptimizerOptions::maxSamples; 0: every sample).
+    std::size_t maxSamples = 0;
 };
 
 // The matrices for light `light` (an index into the fixed lights, or into the sweep's lights when

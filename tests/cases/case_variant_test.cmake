@@ -27,6 +27,23 @@ if(NOT code EQUAL 0 OR NOT out MATCHES "focused-tight")
     message(FATAL_ERROR "lexel run on the variant: exit ${code}: ${err}")
 endif()
 
+# The optimizer's sample budget: optimizer.max_samples, and the variant runs `optimal` on it.
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${DATA}/spatial_small.json" "${WORK}/budget.json"
+                        --max-samples 5
+                RESULT_VARIABLE code ERROR_VARIABLE err)
+file(READ "${WORK}/budget.json" json)
+string(JSON budget GET "${json}" optimizer max_samples)
+string(JSON name GET "${json}" name)
+if(NOT code EQUAL 0 OR NOT budget EQUAL 5 OR NOT name MATCHES "-samples5$")
+    message(FATAL_ERROR "case_variant.py --max-samples 5: budget ${budget}, name ${name} "
+                        "(exit ${code}: ${err})")
+endif()
+execute_process(COMMAND "${LEXEL}" run "${WORK}/budget.json" --method optimal --no-map-truth
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "optimal")
+    message(FATAL_ERROR "lexel run on the budgeted variant: exit ${code}: ${err}")
+endif()
+
 # A relative mesh path is made absolute against the case file's directory.
 execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${DATA}/spatial_missing_mesh.json"
                         "${WORK}/mesh.json" --readback 90 90
@@ -38,7 +55,7 @@ if(NOT code EQUAL 0 OR NOT IS_ABSOLUTE "${mesh}" OR NOT mesh MATCHES "^${DATA}/"
 endif()
 
 # Bad input: one line naming the flag or file, exit 2, nothing written.
-foreach(bad "--readback;0;90" "" "--readback;90;90;--name")
+foreach(bad "--readback;0;90" "" "--readback;90;90;--name" "--max-samples;0")
     execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${DATA}/spatial_small.json" "${WORK}/bad.json"
                             ${bad}
                     RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -171,7 +171,7 @@ TEST(SpatialCase, BadFieldsAreNamed) {
     EXPECT_EQ(add("/colour", "1"),
               "/colour: unknown key (allowed here: camera, name, description, lights, shadow_map, "
               "readback, geometry, generator, light_sweep, camera_path, cascades, methods, "
-              "phases)");
+              "phases, optimizer)");
     EXPECT_EQ(add("/phases", "0"), "/phases: must be in [1, 256], got 0");
     EXPECT_EQ(add("/phases", "257"), "/phases: must be in [1, 256], got 257");
     EXPECT_EQ(add("/phases", "2.5"), "/phases: must be an integer, got 2.5");
@@ -368,6 +368,23 @@ TEST(SpatialCase, CascadesBlockSetsThePartitionDefaults) {
     EXPECT_EQ(add(R"({"splits": 2})"),
               "/cascades/splits: unknown key (allowed here: count, lambda, allocation)");
     EXPECT_EQ(add("4"), "/cascades: must be an object, got an integer");
+}
+
+TEST(SpatialCase, OptimizerBlockSetsTheSampleBudget) {
+    EXPECT_EQ(FromPatch("[]").optimizerMaxSamples, 0u);  // every sample
+    const spatial::Scene scene =
+        FromPatch(R"([{"op": "add", "path": "/optimizer", "value": {"max_samples": 1024}}])");
+    EXPECT_EQ(scene.optimizerMaxSamples, 1024u);
+    auto add = [](const std::string& value) {
+        return ErrorFor(R"([{"op": "add", "path": "/optimizer", "value": )" + value + "}]");
+    };
+    EXPECT_EQ(add(R"({"max_samples": 0})"),
+              "/optimizer/max_samples: must be in [1, 268435456], got 0");
+    EXPECT_EQ(add(R"({"max_samples": 1.5})"),
+              "/optimizer/max_samples: must be an integer, got 1.5");
+    EXPECT_EQ(add(R"({"iterations": 2})"),
+              "/optimizer/iterations: unknown key (allowed here: max_samples)");
+    EXPECT_EQ(add("[]"), "/optimizer: must be an object, got an array");
 }
 
 TEST(SpatialCase, FilesResolveMeshesAndPrefixErrors) {

@@ -71,6 +71,36 @@ TEST(TightBaselines, CoverEveryVisiblePointAndOptimalNeverLosesInItsEnergy) {
     }
 }
 
+TEST(SampleBudget, TheCasesBudgetReachesOptimal) {
+    // Scene::optimizerMaxSamples (the case's optimizer.max_samples): `optimal` in the evaluator
+    // is the multi-start on the thinned samples, bit for bit, while h and e are still reported
+    // over every sample (each method is measured on the same samples).
+    Fixture f("walkthrough.json", 3);
+    const Light light = f.lights.front();
+    const LightOutcome all = f.evaluator.Evaluate(light, {});
+    const std::size_t budget = all.samples.lsX.size() / 4;
+    ASSERT_GT(budget, 20u) << Describe(light);
+    Scene budgeted = f.scene;
+    budgeted.optimizerMaxSamples = budget;
+    const Evaluator evaluator(budgeted, *f.backend);
+    EvaluationOptions options;
+    options.methods = {"optimal"};
+    const LightOutcome o = evaluator.Evaluate(light, options);
+    const LightSpace lightSpace(light, evaluator.bounds());
+    BaselineContext context =
+        MakeBaselineContext(budgeted, lightSpace, evaluator.bounds(),
+                            evaluator.readback().wsRelevant, evaluator.readback().wsRelevantHull);
+    context.samples = &o.samples;  // plane-optimal's, as in the evaluator: every sample
+    const MultiStartResult byHand =
+        OptimizeFromStarts(ThinSamples(o.samples, budget), StandardStarts(context),
+                           budgeted.shadowMap, EdgeOptimizerOptions());
+    const MethodOutcome& optimal = o.methods.front();
+    EXPECT_EQ(optimal.matrix.p4, byHand.result.matrix.p4) << Describe(light);
+    EXPECT_EQ(optimal.matrix.p1, byHand.result.matrix.p1) << Describe(light);
+    EXPECT_EQ(o.samples.lsX.size(), all.samples.lsX.size());
+    EXPECT_EQ(optimal.h, Energy(optimal.matrix, o.samples));
+}
+
 TEST(PlaneOptimal, FallbackKeepsEveryVisiblePointATexelAboveTheHorizon) {
     const Fixture f("walkthrough.json", 50);
     EvaluationOptions options;

@@ -15,6 +15,7 @@
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/solvers/min_area_parallelogram.h"
 #include "lexel/spatial/energy_gradient.h"
+#include "lexel/spatial/multi_start.h"
 #include "spatial/spatial_test_scenes.h"
 
 namespace lexel::spatial {
@@ -292,6 +293,52 @@ TEST(Optimizer, SearchNeverIncreasesHAndRefinementNeverHurts) {
                   << r.hAfterIteration.front() << " -> " << r.hBeforeRefine << " -> refined " << r.h
                   << "\n";
     }
+}
+
+TEST(Optimizer, SampleBudgetSearchesOnTheThinnedSamples) {
+    // OptimizerOptions::maxSamples: the same matrix, bit for bit, as the search on ThinSamples
+    // itself, for one start and for every start; a budget at or above the count changes nothing.
+    TriangleMesh scene = testing::FloorQuad(20.0);
+    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 2.0, 1.0}));
+    const auto renderer = MakeCpuRenderer(scene);
+    Camera camera;
+    camera.position = {0.0, 1.7, 12.0};
+    camera.target = {0.0, 0.5, 0.0};
+    const Readback rb = RenderReadback(*renderer, camera, {180, 180});
+    const Bounds bounds = scene.ComputeBounds();
+    Light light;
+    light.position = {-30, 25, -25};
+    const LightSpace ls(light, bounds);
+    const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, {400, 400});
+    ASSERT_GT(s.lsX.size(), 60u);
+    const std::size_t budget = s.lsX.size() / 3;
+    OptimizerOptions options = EdgeOptimizerOptions();
+    const OptimizerResult all = OptimizeLightMatrix(s, {0, 0, 1}, {400, 400}, options);
+    const OptimizerResult thinnedByHand =
+        OptimizeLightMatrix(ThinSamples(s, budget), {0, 0, 1}, {400, 400}, options);
+    options.maxSamples = s.lsX.size();
+    EXPECT_EQ(OptimizeLightMatrix(s, {0, 0, 1}, {400, 400}, options).matrix.p4, all.matrix.p4);
+    options.maxSamples = budget;
+    const OptimizerResult thinned = OptimizeLightMatrix(s, {0, 0, 1}, {400, 400}, options);
+    EXPECT_EQ(thinned.matrix.p4, thinnedByHand.matrix.p4);
+    EXPECT_EQ(thinned.matrix.p1, thinnedByHand.matrix.p1);
+    EXPECT_EQ(thinned.h, thinnedByHand.h);
+    // The energy is over the kept third: about a third of the full search's.
+    EXPECT_LT(thinned.h, 0.6 * all.h);
+
+    BaselineContext context;
+    context.lightSpace = &ls;
+    context.camera = camera;
+    context.map = {400, 400};
+    context.wsBounds = bounds;
+    context.wsRelevant = rb.wsRelevant;
+    const std::vector<OptimizerStart> starts = StandardStarts(context);
+    const MultiStartResult byHand =
+        OptimizeFromStarts(ThinSamples(s, budget), starts, {400, 400}, EdgeOptimizerOptions());
+    const MultiStartResult budgeted = OptimizeFromStarts(s, starts, {400, 400}, options);
+    EXPECT_EQ(budgeted.result.matrix.p4, byHand.result.matrix.p4);
+    EXPECT_EQ(budgeted.winner, byHand.winner);
+    EXPECT_EQ(budgeted.startH, byHand.startH);
 }
 
 TEST(Optimizer, CollapseGuardRejectsARefinementThatStarvesTheView) {

@@ -114,6 +114,50 @@ TEST(LightSamples, EdgeNormalsPointFromLitToShadowed) {
     EXPECT_FALSE(bare.lsPrior.empty());
 }
 
+TEST(ThinSamples, KeepsEveryKthSampleAndEverythingElse) {
+    // Ten samples, distinguishable by their x: a budget of 4 keeps every ⌈10/4⌉ = 3rd from the
+    // first (0, 3, 6, 9); a budget of 5 every 2nd; 0 or ≥ 10 keeps all.
+    LightSamples s;
+    for (int i = 0; i < 10; ++i) {
+        s.lsX.push_back({double(i), 0.0, 1.0});
+        s.dXdx1.push_back({1.0, double(i), 0.0});
+        s.dXdx2.push_back({0.0, 1.0, double(i)});
+        s.pixel.push_back(static_cast<std::uint32_t>(100 + i));
+        s.wsX.push_back({double(i), 1.0, 2.0});
+        s.edgeNormal.push_back({double(i), 1.0});
+    }
+    s.lsRelevant = {{1, 2, 3}, {4, 5, 6}};
+    s.lsPrior = {{7, 8, 9}};
+    s.boundaryPixels = 12;
+    const LightSamples t = ThinSamples(s, 4);
+    ASSERT_EQ(t.lsX.size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const double i = 3.0 * k;
+        EXPECT_EQ(t.lsX[k].x, i);
+        EXPECT_EQ(t.dXdx1[k].y, i);
+        EXPECT_EQ(t.dXdx2[k].z, i);
+        EXPECT_EQ(t.pixel[k], 100u + 3 * k);
+        EXPECT_EQ(t.wsX[k].x, i);
+        EXPECT_EQ(t.edgeNormal[k].x, i);
+    }
+    EXPECT_EQ(t.lsRelevant, s.lsRelevant);
+    EXPECT_EQ(t.lsPrior, s.lsPrior);
+    EXPECT_EQ(t.boundaryPixels, 12u);
+    EXPECT_EQ(ThinSamples(s, 5).lsX.size(), 5u);
+    EXPECT_EQ(ThinSamples(s, 5).lsX[4].x, 8.0);
+    EXPECT_EQ(ThinSamples(s, 0).lsX, s.lsX);
+    EXPECT_EQ(ThinSamples(s, 10).lsX, s.lsX);
+    EXPECT_EQ(ThinSamples(s, 1).lsX.size(), 1u);
+    // Samples made by hand without normals or pixels keep those empty.
+    LightSamples bare = s;
+    bare.edgeNormal.clear();
+    bare.pixel.clear();
+    const LightSamples b = ThinSamples(bare, 4);
+    EXPECT_EQ(b.lsX.size(), 4u);
+    EXPECT_TRUE(b.edgeNormal.empty());
+    EXPECT_TRUE(b.pixel.empty());
+}
+
 TEST(BoundedEnergy, EqualsEnergyBitForBitBelowTheBound) {
     TriangleMesh scene = testing::FloorQuad(30.0);
     scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
