@@ -28,6 +28,8 @@
 //     (amortized over Table 3's 4 lights; timed once per 4 profiled lights), then per light
 //     sampling ms (step 1: standard map + readback shading + samples), hull_ms (the 2D hull),
 //     search_ms, refine_ms; optimal_with_hull3d_ms = optimal_ms + hull3d_ms_per_light_of_4;
+//   - BM_WalkthroughFineReadbackBudget: `optimal` per light at a 720² readback, all samples and
+//     with the sample budget (OptimizerOptions::maxSamples), against 180², in one run;
 //   - BM_WalkthroughRunMemory: bytes per camera pixel that a run of the first light holds at
 //     its peak (issue 16; the flatland counterpart is flatland_bench's BM_RunMemory).
 //
@@ -43,6 +45,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -278,26 +281,29 @@ struct Walkthrough {
     }
 };
 
+// The walkthrough with its readback at `readback` (the case's own, 180², when empty).
+Walkthrough LoadWalkthrough(std::optional<Resolution> readback) {
+    Walkthrough w;
+    w.scene = lexel::cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
+    if (readback) w.scene.readback = *readback;
+    w.backend = MakeCpuRenderer(w.scene.geometry);
+    w.bounds = w.scene.geometry.ComputeBounds();
+    w.frame = w.backend->RenderCamera(w.scene.camera, w.scene.camera.resolution);
+    w.readback = RenderReadback(*w.backend, w.scene.camera, w.scene.readback);
+    // As Evaluator::Evaluate does (Algorithm 1 step 1): boundary samples from the focused map.
+    for (const Light& light : lexel::cases::SweepLightsOf(w.scene, kProfileLights)) {
+        const LightSpace lightSpace(light, w.bounds);
+        const LightMatrix focused = FocusedLightMatrix(w.Context(lightSpace));
+        const ShadowMap map = w.backend->RenderShadowMap(lightSpace, focused, w.scene.shadowMap);
+        LightSamples samples = MakeLightSamples(
+            w.readback, lightSpace, w.backend->ShadePixels(w.readback.buffer, lightSpace, map));
+        w.lights.push_back({lightSpace, focused, std::move(samples)});
+    }
+    return w;
+}
+
 const Walkthrough& Case() {
-    static const Walkthrough w = [] {
-        Walkthrough w;
-        w.scene = lexel::cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
-        w.backend = MakeCpuRenderer(w.scene.geometry);
-        w.bounds = w.scene.geometry.ComputeBounds();
-        w.frame = w.backend->RenderCamera(w.scene.camera, w.scene.camera.resolution);
-        w.readback = RenderReadback(*w.backend, w.scene.camera, w.scene.readback);
-        // As Evaluator::Evaluate does (Algorithm 1 step 1): boundary samples from the focused map.
-        for (const Light& light : lexel::cases::SweepLightsOf(w.scene, kProfileLights)) {
-            const LightSpace lightSpace(light, w.bounds);
-            const LightMatrix focused = FocusedLightMatrix(w.Context(lightSpace));
-            const ShadowMap map =
-                w.backend->RenderShadowMap(lightSpace, focused, w.scene.shadowMap);
-            LightSamples samples = MakeLightSamples(
-                w.readback, lightSpace, w.backend->ShadePixels(w.readback.buffer, lightSpace, map));
-            w.lights.push_back({lightSpace, focused, std::move(samples)});
-        }
-        return w;
-    }();
+    static const Walkthrough w = LoadWalkthrough(std::nullopt);
     return w;
 }
 
@@ -540,6 +546,58 @@ void BM_WalkthroughMultiStartEdge(benchmark::State& state) {
     state.counters["ratio_e_to_h"] = edgeMs / reportMs;
 }
 BENCHMARK(BM_WalkthroughMultiStartEdge)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// `optimal` at a finer readback with the sample budget (OptimizerOptions::maxSamples, issue 25),
+// per light in one run on one core against `optimal` at the case's 180²: the same lights, the
+// same starts' kinds, the boundary samples of a 720² readback (about one frame pixel per readback
+// pixel, against 17 at 180²) all searched, or thinned to 1024 or 512. Counters: ms per light of
+// each and ratio_* to 180²'s; samples_* the mean samples per light; hull3d_ms_* the readback's
+// per-frame 3D hull at each size, which grows with the readback's pixels, not with the budget.
+void BM_WalkthroughFineReadbackBudget(benchmark::State& state) {
+    tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
+    const Walkthrough& coarse = Case();
+    static const Walkthrough fine = LoadWalkthrough(Resolution{720, 720});
+    OptimizerOptions options = EdgeOptimizerOptions();
+    const auto msPerLight = [&](const Walkthrough& w, std::size_t budget) {
+        options.maxSamples = budget;
+        double ms = 0.0;
+        for (const PerLight& l : w.lights) {
+            BaselineContext context = w.Context(l.lightSpace);
+            context.samples = &l.samples;
+            const std::vector<OptimizerStart> starts = StandardStarts(context);
+            const auto start = std::chrono::steady_clock::now();
+            MultiStartResult r = OptimizeFromStarts(l.samples, starts, w.scene.shadowMap, options);
+            benchmark::DoNotOptimize(r);
+            ms += MsSince(start);
+        }
+        return ms / static_cast<double>(w.lights.size());
+    };
+    double coarseMs = 0.0, fineMs = 0.0, fine1024Ms = 0.0, fine512Ms = 0.0;
+    for (auto _ : state) {
+        coarseMs += msPerLight(coarse, 0);
+        fineMs += msPerLight(fine, 0);
+        fine1024Ms += msPerLight(fine, 1024);
+        fine512Ms += msPerLight(fine, 512);
+    }
+    const double n = static_cast<double>(state.iterations());
+    state.counters["optimal_180_ms"] = coarseMs / n;
+    state.counters["optimal_720_ms"] = fineMs / n;
+    state.counters["optimal_720_budget1024_ms"] = fine1024Ms / n;
+    state.counters["optimal_720_budget512_ms"] = fine512Ms / n;
+    state.counters["ratio_720"] = fineMs / coarseMs;
+    state.counters["ratio_720_budget1024"] = fine1024Ms / coarseMs;
+    state.counters["ratio_720_budget512"] = fine512Ms / coarseMs;
+    const auto meanSamples = [](const Walkthrough& w) {
+        double total = 0.0;
+        for (const PerLight& l : w.lights) total += static_cast<double>(l.samples.lsX.size());
+        return total / static_cast<double>(w.lights.size());
+    };
+    state.counters["samples_180"] = meanSamples(coarse);
+    state.counters["samples_720"] = meanSamples(fine);
+    state.counters["hull3d_ms_180"] = coarse.readback.relevantHullMs;
+    state.counters["hull3d_ms_720"] = fine.readback.relevantHullMs;
+}
+BENCHMARK(BM_WalkthroughFineReadbackBudget)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The partitioned methods (issue 14): per light, the cascades of one scheme at the default k = 4
 // against `optimal` (every start, Algorithm 1 from each) in the same run on one core; ratio =
