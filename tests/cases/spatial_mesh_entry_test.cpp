@@ -12,9 +12,12 @@
 namespace lexel::cases {
 namespace {
 
-// A Z-up tetrahedron in centimetres: its apex (0, 0, 300) is 3 m up.
+// A Z-up tetrahedron in centimetres: its apex (0, 0, 300) is 3 m up. One file per test (CTest
+// runs the tests of this file as parallel processes, and each removes its file at the end).
 std::filesystem::path TetraPly() {
-    const auto path = std::filesystem::temp_directory_path() / "lexel_mesh_entry_tetra.ply";
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const auto path =
+        std::filesystem::temp_directory_path() / ("lexel_mesh_entry_" + test + ".ply");
     std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty "
                            "float y\nproperty float z\nelement face 4\nproperty list uchar int "
                            "vertex_indices\nend_header\n0 0 0\n100 0 0\n0 200 0\n0 0 300\n"
