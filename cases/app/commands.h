@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lexel/cases/run/fit_thesis.h"
+#include "lexel/spatial/harness/methods.h"
 
 namespace lexel::cases {
 
@@ -63,8 +64,9 @@ struct TimingFlags {
     int frames = 8;
     int updateEvery = 1;    // optimal: Algorithm 1 every U frames (the report: 3)
     int standardEvery = 1;  // optimal: step 1 from a standard map every S updates (the report: 2)
-    std::string optimizer = "optimal-report";  // optimal frames: optimal-report | optimal | ...
-    std::string format = "table";              // table | json | csv
+    // The optimal frames' optimizer: one of spatial::OptimizerMethodNames.
+    std::string optimizer = spatial::kReportOptimalMethod;
+    std::string format = "table";  // table | json | csv
 };
 int TimingCommand(const TimingFlags& flags);
 

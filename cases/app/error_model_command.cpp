@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // The single-map methods compared by default: the fair baselines' best two and `optimal`.
-const std::vector<std::string> kDefaultMethods = {"focused-tight", "lispsm-tight", "optimal"};
+const std::vector<std::string> kDefaultMethods = {"focused-tight", "lispsm-tight",
+                                                  spatial::kOptimalMethod};
 const std::vector<std::string> kOutputs = {"error_model.csv", "error_model.json", "error_model.txt",
                                            "error_model.png"};
 

@@ -37,6 +37,7 @@
 #include "lexel/cases/app/error_model_command.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
 #include "lexel/spatial/partitions.h"
 
@@ -199,8 +200,7 @@ Command RegisterTiming(CLI::App& app) {
         ->add_option(
             "--optimizer", flags->optimizer,
             "The optimal frames' method (default optimal-report: Algorithm 1 as published)")
-        ->check(CLI::IsMember(
-            {"optimal-report", "optimal", "optimal-refined", "optimal-h", "optimal-shear"}));
+        ->check(CLI::IsMember(lexel::spatial::OptimizerMethodNames()));
     timing->add_option("--format", flags->format, "Output format")
         ->check(CLI::IsMember({"table", "json", "csv"}));
     return [flags] { return cases::TimingCommand(*flags); };

@@ -49,7 +49,7 @@ std::optional<View> ReportView(const SweepResult& r) {
     std::vector<std::string> names = spatial::ReportMethodNames();
     for (const std::string& m : r.methods)
         if (!Contains(names, m) && spatial::IsFrustumFittedMethod(m)) names.push_back(m);
-    return ViewOf(r, names, "optimal-report");
+    return ViewOf(r, names, spatial::kReportOptimalMethod);
 }
 
 // The fair comparison, against optimal: its methods, then any other single map that is not
@@ -61,7 +61,7 @@ std::optional<View> FairView(const SweepResult& r) {
             !spatial::IsFrustumFittedMethod(m) && !spatial::IsPartitionedMethod(m) &&
             !spatial::IsVirtualMethod(m))
             names.push_back(m);
-    return ViewOf(r, names, "optimal");
+    return ViewOf(r, names, spatial::kOptimalMethod);
 }
 
 // The equal-texel table: optimal (one map) against the partitioned methods and the virtual
@@ -73,11 +73,11 @@ std::optional<View> EqualTexelView(const SweepResult& r) {
             return spatial::IsPartitionedMethod(m) || spatial::IsVirtualMethod(m);
         }))
         return std::nullopt;
-    std::vector<std::string> names = {"optimal"};
+    std::vector<std::string> names = {spatial::kOptimalMethod};
     names.insert(names.end(), partitioned.begin(), partitioned.end());
     for (const std::string& m : r.methods)  // the opt-in ones (sdsm-optimal-e) too
         if (spatial::IsPartitionedMethod(m) && !Contains(names, m)) names.push_back(m);
-    return ViewOf(r, names, "optimal");
+    return ViewOf(r, names, spatial::kOptimalMethod);
 }
 
 // The lights in a method's worst 10% (at least one), ties broken by light index.
@@ -135,7 +135,7 @@ std::string Cell(double value, double reference, bool isReference) {
 
 // Our name of a method in the report's Table 1: its optimal is our optimal-report.
 std::string PublishedName(const std::string& ours) {
-    return ours == "optimal-report" ? "optimal" : ours;
+    return ours == spatial::kReportOptimalMethod ? spatial::kOptimalMethod : ours;
 }
 
 // The report's cells for our set and methods, or empty where it has none.
@@ -151,9 +151,10 @@ std::vector<std::string> ReportCells(const ReportTable1& report, const std::stri
             cells.push_back("");
             continue;
         }
-        cells.push_back(
-            Fixed(row->misclassified[*c], 0) +
-            (name == "optimal" ? " (0)" : " (+" + Fixed(row->percentMore[*c], 2) + "%)"));
+        cells.push_back(Fixed(row->misclassified[*c], 0) +
+                        (name == spatial::kOptimalMethod
+                             ? " (0)"
+                             : " (+" + Fixed(row->percentMore[*c], 2) + "%)"));
     }
     return cells;
 }
@@ -349,7 +350,7 @@ TextTable MisclassifiedTable(const SweepResult& r, const View& view, const Repor
     std::vector<std::string> header = {"lights"};
     for (std::size_t m : view.methods) header.push_back(r.methods[m]);
     TextTable table(header);
-    const bool compareToReport = r.methods[view.reference] == "optimal-report";
+    const bool compareToReport = r.methods[view.reference] == spatial::kReportOptimalMethod;
     for (const Row& row : Table1Rows(r, view)) {
         std::vector<std::string> cells = {SetLabel(row.set)};
         for (std::size_t m : view.methods)
@@ -520,7 +521,7 @@ std::vector<ReportSection> ReportSections(const SweepResult& r, const View& view
             ". Lower is better.",
         MisclassifiedTable(r, view, report),
         {}};
-    if (ref == "optimal-report" && report.Find("all"))
+    if (ref == spatial::kReportOptimalMethod && report.Find("all"))
         table1.notes.push_back(
             "Rows \"published (report)\" are the report's own Table 1 as printed: absolute "
             "counts summed over its 500 lights on its own scene and frame, while ours are means "
@@ -677,7 +678,7 @@ std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
            "mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor,"
            "mean_misclassified_ci95,percent_more_ci95,percent_lights_reference_beats,phases\n";
     const auto write = [&](const char* table, const View& view, const std::vector<Row>& rows) {
-        const bool published = r.methods[view.reference] == "optimal-report";
+        const bool published = r.methods[view.reference] == spatial::kReportOptimalMethod;
         for (const Row& row : rows) {
             const ReportTable1::Row* reportRow = report.Find(PublishedName(row.set));
             for (std::size_t m : view.methods) {

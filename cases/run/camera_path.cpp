@@ -7,6 +7,7 @@
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/run/evaluator_setup.h"
 #include "lexel/spatial/harness/evaluation.h"
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/temporal.h"
 
@@ -60,11 +61,11 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
     spatial::EvaluationOptions options;
     options.methods = methods;
     if (onMethodDone) options.onMethodDone = [&](std::string_view) { onMethodDone(); };
-    if (std::find(methods.begin(), methods.end(), "optimal") == methods.end())
-        options.methods.push_back("optimal");
+    if (std::find(methods.begin(), methods.end(), spatial::kOptimalMethod) == methods.end())
+        options.methods.push_back(spatial::kOptimalMethod);
     options.keepBuffers = true;
     const std::size_t optimal =
-        std::find(options.methods.begin(), options.methods.end(), "optimal") -
+        std::find(options.methods.begin(), options.methods.end(), spatial::kOptimalMethod) -
         options.methods.begin();
     const double margin = spatial::OptimizerOptions{}.margin;
     CameraPathStudy study;
@@ -133,7 +134,8 @@ std::vector<CameraPathStudy> RunCameraPathStudy(const spatial::Scene& scene,
 }
 
 std::size_t CameraPathSteps(const spatial::Scene& scene, const std::vector<std::string>& methods) {
-    const bool hasOptimal = std::find(methods.begin(), methods.end(), "optimal") != methods.end();
+    const bool hasOptimal =
+        std::find(methods.begin(), methods.end(), spatial::kOptimalMethod) != methods.end();
     return scene.lights.size() * scene.cameraPath.size() * (methods.size() + (hasOptimal ? 0 : 1));
 }
 

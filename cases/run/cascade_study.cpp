@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <iterator>
 
+#include "lexel/spatial/harness/methods.h"
+
 namespace lexel::cases {
 
 namespace {
@@ -50,7 +52,7 @@ CascadeCountStudy CascadeStudyOf(const SweepResult& sweep, int sweepCount,
     CascadeCountStudy study;
     study.methods = CascadeStudyMethods(sweep.methods);
     study.counts = CascadeStudyCounts(sweepCount);
-    if (const auto optimal = IndexOf(sweep.methods, "optimal"))
+    if (const auto optimal = IndexOf(sweep.methods, spatial::kOptimalMethod))
         study.optimalMean = MeanMisclassified(sweep, *optimal);
     study.meanMisclassified.assign(study.methods.size(), {});
     std::size_t next = 0;  // the next of `extra`

@@ -9,6 +9,7 @@
 
 #include "lexel/cases/run/backend.h"
 #include "lexel/spatial/harness/frame_pipeline.h"
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/scene.h"
 
 namespace lexel::cases {
@@ -23,7 +24,7 @@ struct TimingOptions {
     // report's: 3, 2.
     int updateEvery = 1;
     int standardEvery = 1;
-    std::string optimal = "optimal-report";  // FrameOptions::optimal
+    std::string optimal = spatial::kReportOptimalMethod;  // FrameOptions::optimal
     // Called after each frame (the warm-up one too: frames + 1 calls), both methods rendered; a
     // progress bar. May be empty.
     std::function<void()> onFrameDone;

@@ -6,13 +6,11 @@
 
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/frame_schedule.h"
+#include "lexel/spatial/harness/methods.h"
 
 namespace lexel::spatial {
 
-bool IsFrameOptimizer(std::string_view method) {
-    return method == "optimal-report" || method == "optimal" || method == "optimal-refined" ||
-           method == "optimal-shear";
-}
+bool IsFrameOptimizer(std::string_view method) { return IsOptimizerMethod(method); }
 
 namespace {
 

@@ -21,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
 
@@ -31,9 +32,9 @@ enum class FrameMethod { kFocused, kOptimal };
 // What an optimal frame does (focused frames ignore it). A light that has no previous matrix or
 // map (the first frame, or other lights than last frame) gets the full Algorithm 1.
 struct FrameOptions {
-    // The optimizer (methods.h): `optimal-report`, Algorithm 1 from focused's axis as the report
-    // ran it, or `optimal` (from every baseline's start), `optimal-refined`, `optimal-shear`.
-    std::string optimal = "optimal-report";
+    // The optimizer, one of OptimizerMethodNames (methods.h): by default `optimal-report`,
+    // Algorithm 1 from focused's axis as the report ran it.
+    std::string optimal = kReportOptimalMethod;
     bool optimize = true;     // run it; false: keep each light's previous matrix
     bool standardMap = true;  // step 1 from a standard (focused) map; false: the previous map
     // Time the GPU passes one by one. On a software renderer that brackets each pass with
@@ -42,7 +43,8 @@ struct FrameOptions {
     bool timePasses = true;
 };
 
-// Whether `method` is one a FrameOptions::optimal can name.
+// Whether `method` is one a FrameOptions::optimal can name: every optimizer method
+// (IsOptimizerMethod, methods.h).
 bool IsFrameOptimizer(std::string_view method);
 
 // Milliseconds. GPU passes are GPU time (timer queries) on a GPU pipeline and wall time on the CPU

@@ -14,12 +14,12 @@
 namespace lexel::spatial {
 
 std::vector<std::string> FairMethodNames() {
-    return {"optimal",       "optimal-refined", "optimal-h",     "focused-tight", "lispsm-tight",
+    return {kOptimalMethod,  "optimal-refined", "optimal-h",     "focused-tight", "lispsm-tight",
             "lispsm-engine", "psm-tight",       "plane-optimal", "normal"};
 }
 
 std::vector<std::string> ReportMethodNames() {
-    return {"optimal-report", "focused", "lispsm", "plane-optimal", "normal", "psm"};
+    return {kReportOptimalMethod, "focused", "lispsm", "plane-optimal", "normal", "psm"};
 }
 
 namespace {
@@ -167,7 +167,8 @@ struct MethodDescription {
 
 // One line per method of SpatialMethodNames (cases/README.md, "3D methods", says more).
 constexpr MethodDescription kDescriptions[] = {
-    {"optimal", "Algorithm 1 from every baseline's start on the edge energy e (fair reference)"},
+    {kOptimalMethod,
+     "Algorithm 1 from every baseline's start on the edge energy e (fair reference)"},
     {"optimal-refined", "optimal, its best start refined on e by Ceres LBFGS, collapses rejected"},
     {"optimal-h", "Algorithm 1 from every baseline's start on the report's h (eq. 6)"},
     {"focused-tight", "focused's axis, minimum-area rectangle around the visible points"},
@@ -176,7 +177,8 @@ constexpr MethodDescription kDescriptions[] = {
     {"psm-tight", "PSM (Stamminger & Drettakis 2002) fitted to the visible points"},
     {"plane-optimal", "Chong & Gortler 2004: the floor plane's optimum, refitted to the view"},
     {"normal", "the light's frustum over the scene bounds"},
-    {"optimal-report", "Algorithm 1 as published: from focused's axis only (Table 1's optimal)"},
+    {kReportOptimalMethod,
+     "Algorithm 1 as published: from focused's axis only (Table 1's optimal)"},
     {"focused", "the report's focused map: view frustum and scene bounds on the light's plane"},
     {"lispsm", "LiSPSM for the view frustum and scene bounds, as the report ran it"},
     {"psm", "PSM with Kozlov's fixes for the view frustum and scene bounds"},
@@ -218,6 +220,23 @@ bool IsSpatialMethod(std::string_view name) {
 
 bool IsFrustumFittedMethod(std::string_view name) {
     return name == "focused" || name == "lispsm" || name == "psm" || name == "tsm-report";
+}
+
+namespace {
+
+constexpr std::string_view kOptimizerMethods[] = {kReportOptimalMethod, kOptimalMethod,
+                                                  "optimal-refined",    "optimal-h",
+                                                  "optimal-refined-h",  "optimal-shear"};
+
+}  // namespace
+
+std::vector<std::string> OptimizerMethodNames() {
+    return {std::begin(kOptimizerMethods), std::end(kOptimizerMethods)};
+}
+
+bool IsOptimizerMethod(std::string_view name) {
+    return std::find(std::begin(kOptimizerMethods), std::end(kOptimizerMethods), name) !=
+           std::end(kOptimizerMethods);
 }
 
 bool IsPartitionedMethod(std::string_view name) {
@@ -267,9 +286,9 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
     if (!context.samples) throw std::invalid_argument(std::string(name) + " needs the samples");
     const Resolution map = context.baseline.map;
     OptimizerOptions options;
-    if (name == "optimal" || name == "optimal-refined") options = EdgeOptimizerOptions();
+    if (name == kOptimalMethod || name == "optimal-refined") options = EdgeOptimizerOptions();
     options.maxSamples = context.maxSamples;
-    if (name == "optimal" || name == "optimal-refined" || name == "optimal-h" ||
+    if (name == kOptimalMethod || name == "optimal-refined" || name == "optimal-h" ||
         name == "optimal-refined-h") {
         options.refine = name == "optimal-refined" || name == "optimal-refined-h";
         const std::vector<OptimizerStart> starts = StandardStarts(context.baseline);
@@ -340,9 +359,7 @@ MethodMatrix ComputeLightMatrix(std::string_view name, const MethodContext& cont
                     std::nullopt,
                     std::nullopt,
                     {}};
-    if (name == "optimal" || name == "optimal-refined" || name == "optimal-report" ||
-        name == "optimal-shear" || name == "optimal-h" || name == "optimal-refined-h")
-        return Optimal(name, context);
+    if (IsOptimizerMethod(name)) return Optimal(name, context);
     for (const NamedPartition& p : kPartitions)
         if (p.name == name) return Partitioned(p, context);
     if (IsVirtualMethod(name)) return Virtual(name, context);

@@ -40,6 +40,11 @@
 
 namespace lexel::spatial {
 
+// The two method names the library itself refers to (every other name lives in methods.cpp's
+// list only): Table 1's optimal as published, and the fair comparison's reference.
+inline constexpr const char* kReportOptimalMethod = "optimal-report";
+inline constexpr const char* kOptimalMethod = "optimal";
+
 // The baselines' context for a scene: its camera, shadow-map resolution and floor plane, the
 // visible points and their hull, and Algorithm 1's margin.
 BaselineContext MakeBaselineContext(const Scene& scene, const LightSpace& lightSpace,
@@ -105,6 +110,11 @@ bool IsSpatialMethod(std::string_view name);
 // One line saying what the method is (for `lexel --help`); empty for an unknown name.
 std::string_view SpatialMethodDescription(std::string_view name);
 bool IsPartitionedMethod(std::string_view name);
+// The methods that run Algorithm 1 for one map (optimizer.h, multi_start.h): optimal-report,
+// optimal, optimal-refined, optimal-h, optimal-refined-h, optimal-shear. The one list the
+// evaluator, the frame pipeline and `lexel timing --optimizer` take them from.
+std::vector<std::string> OptimizerMethodNames();
+bool IsOptimizerMethod(std::string_view name);
 // Whether the method fits the view frustum ∩ scene bounds as the report's baselines do (focused,
 // lispsm, psm, tsm-report) rather than the visible points: such a method belongs beside Table 1
 // as published, not in the fair comparison.

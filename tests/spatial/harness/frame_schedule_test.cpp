@@ -5,11 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/run/sweep.h"
+#include "lexel/spatial/harness/methods.h"
 
 namespace lexel::spatial {
 namespace {
@@ -145,6 +148,35 @@ TEST(FrameSchedule, CpuPipelineRunsTheReportsScheduleFrameByFrame) {
     log.clear();
     pipeline->RenderFrame(scene, scene.camera, lights, FrameMethod::kOptimal, report.At(1));
     EXPECT_EQ(log, fromStandard);
+}
+
+TEST(FrameSchedule, EveryOptimizerMethodDrivesTheOptimalFrames) {
+    // The pipeline takes its optimizer from the one list the evaluator uses (methods.h): each of
+    // them runs Algorithm 1 for every light of an updating frame; a method that is no optimizer
+    // is refused with the reason.
+    const Scene scene =
+        cases::LoadSpatialScene(LEXEL_CASES_DIR "/../tests/cases/data/spatial_small.json");
+    const std::vector<Light> lights = cases::SweepLightsOf(scene, 2);
+    std::string log;
+    const RecordingBackend backend(scene.geometry, &log);
+    const std::vector<std::string> names = OptimizerMethodNames();
+    ASSERT_EQ(names.size(), 6u);
+    for (const std::string& name : names) {
+        SCOPED_TRACE(name);
+        EXPECT_TRUE(IsSpatialMethod(name));
+        const auto pipeline = MakeBackendFramePipeline(backend, scene.geometry);
+        const FrameTimes t = pipeline->RenderFrame(scene, scene.camera, lights,
+                                                   FrameMethod::kOptimal, {.optimal = name});
+        EXPECT_GT(t.search, 0.0);
+        ASSERT_EQ(pipeline->Matrices().size(), lights.size());
+        for (const LightMatrix& m : pipeline->Matrices())
+            EXPECT_TRUE(std::isfinite(m.p4.x) && std::isfinite(m.p4.y) && std::isfinite(m.p4.z));
+    }
+    EXPECT_FALSE(IsOptimizerMethod("focused-tight"));
+    const auto pipeline = MakeBackendFramePipeline(backend, scene.geometry);
+    EXPECT_THROW(pipeline->RenderFrame(scene, scene.camera, lights, FrameMethod::kOptimal,
+                                       {.optimal = "focused-tight"}),
+                 std::invalid_argument);
 }
 
 }  // namespace
