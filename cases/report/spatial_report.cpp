@@ -65,11 +65,11 @@ TextTable SpatialMethodTable(const spatial::LightOutcome& o) {
 std::vector<std::string> IterationLines(const spatial::LightOutcome& o) {
     std::vector<std::string> lines;
     for (const auto& m : o.methods) {
-        if (m.hAfterIteration.empty()) continue;
+        if (m.trace.hAfterIteration.empty()) continue;
         std::string line = m.method + ": h by Algorithm 1 iteration";
-        for (std::size_t i = 0; i < m.hAfterIteration.size(); ++i)
-            line += (i ? " → " : " ") + Significant(m.hAfterIteration[i], 6);
-        if (m.h < m.hBeforeRefine) line += "; refined " + Significant(m.h, 6);
+        for (std::size_t i = 0; i < m.trace.hAfterIteration.size(); ++i)
+            line += (i ? " → " : " ") + Significant(m.trace.hAfterIteration[i], 6);
+        if (m.h < m.trace.hBeforeRefine) line += "; refined " + Significant(m.h, 6);
         lines.push_back(line);
     }
     return lines;
@@ -221,7 +221,8 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                 method["misclassified_standard_error"] = m.misclassifiedError;
                 method["false_shadow_mean"] = m.falseShadowMean;
             }
-            if (!m.hAfterIteration.empty()) method["h_after_iteration"] = m.hAfterIteration;
+            if (!m.trace.hAfterIteration.empty())
+                method["h_after_iteration"] = m.trace.hAfterIteration;
             const spatial::Resolution map =
                 m.pages ? spatial::Resolution{m.pages->pageTexels, m.pages->pageTexels}
                         : scene.shadowMap;
@@ -378,15 +379,16 @@ ImageFigure MapFigure(const std::string& title, const std::string& what,
 
 // A virtual shadow map's pool: its resident pages tiled in the order of their requests.
 ImageFigure PoolFigure(const std::string& title, const spatial::MethodOutcome& m) {
-    ImageFigure figure = MapFigure(title + " · page pool", m.method, m.map, {});
+    ImageFigure figure = MapFigure(title + " · page pool", m.method, m.buffers.map, {});
     const spatial::PageOutcome& p = *m.pages;
-    figure.lines = {m.method + "'s physical page pool, " + std::to_string(m.map.resolution.width) +
-                    "×" + std::to_string(m.map.resolution.height) + " texels: " +
-                    Count(p.resident, "resident pages") + " of " + std::to_string(p.pageTexels) +
-                    "² texels (pool " + std::to_string(p.poolPages) + ", " +
-                    std::to_string(p.requested) + " requested, " + std::to_string(p.dropped) +
-                    " dropped), the most requested first, row by row; each page is its own "
-                    "light matrix."};
+    figure.lines = {
+        m.method + "'s physical page pool, " + std::to_string(m.buffers.map.resolution.width) +
+        "×" + std::to_string(m.buffers.map.resolution.height) +
+        " texels: " + Count(p.resident, "resident pages") + " of " + std::to_string(p.pageTexels) +
+        "² texels (pool " + std::to_string(p.poolPages) + ", " + std::to_string(p.requested) +
+        " requested, " + std::to_string(p.dropped) +
+        " dropped), the most requested first, row by row; each page is its own "
+        "light matrix."};
     figure.key = {{"empty texel", spatial::kEmptyTexelColour}};
     return figure;
 }
@@ -397,7 +399,7 @@ std::size_t SpatialImageCount(const SpatialRun& run) {
     std::size_t images = 0;
     for (const spatial::LightOutcome& o : run.outcomes)
         for (const spatial::MethodOutcome& m : o.methods)
-            images += 2 + (m.cascades.empty() ? 1 : m.cascadeMaps.size());
+            images += 2 + (m.cascades.empty() ? 1 : m.buffers.cascadeMaps.size());
     return images;
 }
 
@@ -424,29 +426,31 @@ std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& di
             for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
             // A virtual shadow map knows its uncovered pixels (no page serves them).
             const std::vector<std::uint8_t> uncovered =
-                m.pages ? m.uncoveredPixels
-                        : spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera,
-                                                   m.shades, m.map.matrix, m.map.resolution,
-                                                   cascades, m.map.warp ? &*m.map.warp : nullptr);
+                m.pages ? m.buffers.uncoveredPixels
+                        : spatial::UncoveredPixels(
+                              evaluator.frame(), lightSpace, scene.camera, m.buffers.shades,
+                              m.buffers.map.matrix, m.buffers.map.resolution, cascades,
+                              m.buffers.map.warp ? &*m.buffers.map.warp : nullptr);
             write(l, m.method, "frame",
-                  spatial::FrameImage(evaluator.frame(), lightSpace, m.shades, uncovered),
+                  spatial::FrameImage(evaluator.frame(), lightSpace, m.buffers.shades, uncovered),
                   FrameFigure(title + " · frame", o, m, false));
             write(l, m.method, "errors",
-                  spatial::MisclassificationImage(evaluator.frame(), lightSpace, m.shades, o.truth,
-                                                  uncovered),
+                  spatial::MisclassificationImage(evaluator.frame(), lightSpace, m.buffers.shades,
+                                                  o.truth, uncovered),
                   FrameFigure(title + " · errors", o, m, true));
             if (m.pages) {
-                write(l, m.method, "map", spatial::ShadowMapImage(m.map, {}), PoolFigure(title, m));
+                write(l, m.method, "map", spatial::ShadowMapImage(m.buffers.map, {}),
+                      PoolFigure(title, m));
                 continue;
             }
             if (m.cascades.empty()) {
-                write(l, m.method, "map", spatial::ShadowMapImage(m.map, o.samples),
-                      MapFigure(title + " · shadow map", m.method + "'s shadow map", m.map,
+                write(l, m.method, "map", spatial::ShadowMapImage(m.buffers.map, o.samples),
+                      MapFigure(title + " · shadow map", m.method + "'s shadow map", m.buffers.map,
                                 o.samples));
                 continue;
             }
             // One image per cascade, with the samples it serves.
-            for (std::size_t c = 0; c < m.cascadeMaps.size(); ++c) {
+            for (std::size_t c = 0; c < m.buffers.cascadeMaps.size(); ++c) {
                 const spatial::LightSamples served = spatial::SamplesOfCascade(
                     o.samples, evaluator.readback().wsRelevant, scene.camera, cascades, c);
                 const spatial::CascadeOutcome& cascade = m.cascades[c];
@@ -457,9 +461,9 @@ std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& di
                                          Count(cascade.pixels, "pixels") + ", h " +
                                          Significant(cascade.h, 4) + ")";
                 write(l, m.method, "map" + std::to_string(c),
-                      spatial::ShadowMapImage(m.cascadeMaps[c], served),
-                      MapFigure(title + " · cascade " + std::to_string(c), what, m.cascadeMaps[c],
-                                served));
+                      spatial::ShadowMapImage(m.buffers.cascadeMaps[c], served),
+                      MapFigure(title + " · cascade " + std::to_string(c), what,
+                                m.buffers.cascadeMaps[c], served));
             }
         }
     }

@@ -96,12 +96,12 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
         previous = d.matrix;
 
         std::vector<spatial::Shade> withHysteresis =
-            d.changed ? o.methods[optimal].shades
+            d.changed ? o.methods[optimal].buffers.shades
                       : evaluator->ShadeFrame(scene.lights[l], d.matrix);
         PoseBuffers now;
         now.truth = std::move(o.truth);
         for (std::size_t m = 0; m < methods.size(); ++m)
-            now.shades.push_back(std::move(o.methods[m].shades));
+            now.shades.push_back(std::move(o.methods[m].buffers.shades));
         now.shades.push_back(std::move(withHysteresis));
         if (before)
             for (std::size_t m = 0; m < study.methods.size(); ++m)

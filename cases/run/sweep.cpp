@@ -103,7 +103,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                                  o.h,
                                  o.ms,
                                  o.hGrazing,
-                                 o.winner,
+                                 o.trace.winner,
                                  o.footprintMean,
                                  o.footprintMax,
                                  o.uncovered,

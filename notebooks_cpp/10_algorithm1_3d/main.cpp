@@ -44,8 +44,8 @@ int main(int argc, char** argv) {
     const MethodOutcome& focused = o.methods[0];
     const MethodOutcome& optimal = o.methods[1];
     std::printf("h per Algorithm 1 iteration (start: the focused axis):\n");
-    for (std::size_t i = 0; i < optimal.hAfterIteration.size(); ++i)
-        std::printf("  iteration %zu: h = %.6g\n", i, optimal.hAfterIteration[i]);
+    for (std::size_t i = 0; i < optimal.trace.hAfterIteration.size(); ++i)
+        std::printf("  iteration %zu: h = %.6g\n", i, optimal.trace.hAfterIteration[i]);
     std::printf("optical axis p4: (%.4f, %.4f, %.4f) -> (%.4f, %.4f, %.4f)\n", focused.matrix.p4.x,
                 focused.matrix.p4.y, focused.matrix.p4.z, optimal.matrix.p4.x, optimal.matrix.p4.y,
                 optimal.matrix.p4.z);
@@ -54,13 +54,13 @@ int main(int argc, char** argv) {
                 static_cast<long long>(optimal.misclassified));
 
     lexel::notebooks::Claims claims;
-    const std::vector<double>& h = optimal.hAfterIteration;
+    const std::vector<double>& h = optimal.trace.hAfterIteration;
     bool falling = h.size() >= 2;
     for (std::size_t i = 1; i < h.size(); ++i) falling = falling && h[i] <= h[i - 1];
     claims.Check(falling, "h never rises across the %zu iterations", h.size() - 1);
     claims.Check(h.size() >= 2 && h.back() < h.front() && optimal.h == h.back(),
                  "h falls from initial to final: %.6g → %.6g", h.front(), h.back());
-    WriteImage(outPath, ShadowMapImage(optimal.map, o.samples));
+    WriteImage(outPath, ShadowMapImage(optimal.buffers.map, o.samples));
     std::printf("wrote %s (the optimized map; red: samples, green: visible points)\n",
                 outPath.c_str());
     return claims.ExitStatus();

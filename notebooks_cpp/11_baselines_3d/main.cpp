@@ -57,8 +57,9 @@ int main(int argc, char** argv) {
         std::printf("%-14s %14lld %12lld %12.5g %10.3f\n", m.method.c_str(),
                     static_cast<long long>(m.misclassified), static_cast<long long>(m.falseShadow),
                     m.h, m.ms);
-        maps.push_back(ShadowMapImage(m.map, o.samples));
-        errors.push_back(MisclassificationImage(evaluator.frame(), lightSpace, m.shades, o.truth));
+        maps.push_back(ShadowMapImage(m.buffers.map, o.samples));
+        errors.push_back(
+            MisclassificationImage(evaluator.frame(), lightSpace, m.buffers.shades, o.truth));
     }
     std::vector<lexel::notebooks::Picture> pictures;
     for (const auto* row : {&maps, &errors})

@@ -98,15 +98,16 @@ int main(int argc, char** argv) {
     std::vector<Image> images;
     std::vector<std::string> captions;
     for (const MethodOutcome* m : {&sdsm, &sdsmOptimal})
-        for (std::size_t c = 0; c < m->cascadeMaps.size(); ++c) {
+        for (std::size_t c = 0; c < m->buffers.cascadeMaps.size(); ++c) {
             const LightSamples served = SamplesOfCascade(o.samples, evaluator.readback().wsRelevant,
                                                          scene.camera, CascadesOf(*m), c);
-            images.push_back(ShadowMapImage(m->cascadeMaps[c], served));
+            images.push_back(ShadowMapImage(m->buffers.cascadeMaps[c], served));
             captions.push_back(m->method + " " + std::to_string(c) + ": h " +
                                std::to_string(static_cast<long long>(m->cascades[c].h)));
         }
     for (const MethodOutcome* m : {&optimal, &sdsm, &sdsmOptimal}) {
-        images.push_back(MisclassificationImage(evaluator.frame(), lightSpace, m->shades, o.truth));
+        images.push_back(
+            MisclassificationImage(evaluator.frame(), lightSpace, m->buffers.shades, o.truth));
         captions.push_back(m->method + ": " + std::to_string(m->misclassified) + " wrong");
     }
     std::vector<lexel::notebooks::Picture> pictures;

@@ -387,10 +387,10 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
             computed = ComputeLightMatrix(method, context);
         m.ms = timer.Ms();
         if (computed.optimizer) {
-            m.hAfterIteration = computed.optimizer->hAfterIteration;
-            m.hBeforeRefine = computed.optimizer->hBeforeRefine;
+            m.trace.hAfterIteration = computed.optimizer->hAfterIteration;
+            m.trace.hBeforeRefine = computed.optimizer->hBeforeRefine;
         }
-        m.winner = computed.winner;
+        m.trace.winner = computed.winner;
         Measure(lightSpace, computed, context, out, grazing, truth, options, &m);
         out.methods.push_back(std::move(m));
         if (options.onMethodDone) options.onMethodDone(method);
@@ -492,13 +492,13 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
                                  kEdgeEnergy);
     }
     if (keepBuffers && computed.virtualMap) {
-        m->shades = std::move(shading.shades);
-        m->map = PoolAtlas(shading.maps, computed.virtualMap->layout.pageTexels);
-        m->uncoveredPixels = std::move(shading.outside);
+        m->buffers.shades = std::move(shading.shades);
+        m->buffers.map = PoolAtlas(shading.maps, computed.virtualMap->layout.pageTexels);
+        m->buffers.uncoveredPixels = std::move(shading.outside);
     } else if (keepBuffers) {
-        m->shades = std::move(shading.shades);
-        m->map = shading.maps.front();
-        if (!cascades.empty()) m->cascadeMaps = std::move(shading.maps);
+        m->buffers.shades = std::move(shading.shades);
+        m->buffers.map = shading.maps.front();
+        if (!cascades.empty()) m->buffers.cascadeMaps = std::move(shading.maps);
     }
 }
 

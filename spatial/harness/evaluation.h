@@ -91,6 +91,24 @@ struct PageOutcome {
     double lodBias = 0.0;        // the bias the requests were made with (vsm-dynamic: fitted)
 };
 
+// How an optimizer method (IsOptimizerMethod, methods.h) reached its matrix; empty for the others.
+struct OptimizerTrace {
+    std::vector<double> hAfterIteration;  // optimal*: h after each Algorithm 1 iteration
+    double hBeforeRefine = 0.0;           // optimal-refined: h after the rotation search
+    std::string winner;  // optimal, optimal-refined: the start that won; optimal-oracle's start
+};
+
+// The images behind a method's counts, kept only when EvaluationOptions::keepBuffers (empty
+// otherwise): what `lexel run --out` draws.
+struct MethodBuffers {
+    std::vector<Shade> shades;  // per frame pixel
+    ShadowMap map;              // the map (a partitioned method's first; vsm*: the pool, PoolAtlas)
+    std::vector<ShadowMap> cascadeMaps;         // partitioned methods: every cascade's
+    std::vector<std::uint8_t> uncoveredPixels;  // vsm*: 1 where uncovered
+};
+
+// One method's result for one light: its matrix, its measured metrics (the fields below, what
+// every table reports), the optimizer's trace and, when kept, its buffers.
 struct MethodOutcome {
     std::string method;
     LightMatrix matrix;
@@ -106,10 +124,7 @@ struct MethodOutcome {
     // minimizes: of the map, or summed over the cascades (each over the samples and prior points
     // it serves); NaN for a warped or virtual map (not a light matrix).
     double e = std::numeric_limits<double>::quiet_NaN();
-    double hGrazing = 0.0;                // ... of which from grazing samples (kGrazingCos)
-    std::vector<double> hAfterIteration;  // optimal*: h after each Algorithm 1 iteration
-    double hBeforeRefine = 0.0;           // optimal-refined: h after the rotation search
-    std::string winner;                   // optimal, optimal-refined: the start that won
+    double hGrazing = 0.0;  // ... of which from grazing samples (kGrazingCos)
     // Counted pixels no map covers: outside every cascade's depth interval, behind the serving
     // map's plane or outside its texels (shaded lit, as ShadePoint does).
     std::int64_t uncovered = 0;
@@ -127,10 +142,8 @@ struct MethodOutcome {
     std::vector<CascadeOutcome> cascades;  // partitioned methods: per cascade
     int emptyPartitions = 0;               // ... those serving no readback point
     std::optional<PageOutcome> pages;      // virtual shadow maps (vsm*): their pages
-    std::vector<Shade> shades;             // per frame pixel, when keepBuffers
-    ShadowMap map;  // when keepBuffers (a partitioned method's first; vsm*: the pool, PoolAtlas)
-    std::vector<ShadowMap> cascadeMaps;         // when keepBuffers, partitioned methods
-    std::vector<std::uint8_t> uncoveredPixels;  // when keepBuffers, vsm*: 1 where uncovered
+    OptimizerTrace trace;                  // what the optimizer did (optimizer methods only)
+    MethodBuffers buffers;                 // per-pixel images (EvaluationOptions::keepBuffers)
 };
 
 struct LightOutcome {

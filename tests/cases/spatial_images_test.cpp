@@ -56,21 +56,22 @@ TEST(SpatialImages, MarkUncoveredPixelsWhereTheEvaluationCountsThem) {
         for (const spatial::CascadeOutcome& c : m.cascades) cascades.push_back(c.cascade);
         // A virtual shadow map's pages are not one matrix: the evaluation keeps its mask.
         const std::vector<std::uint8_t> uncovered =
-            m.pages ? m.uncoveredPixels
+            m.pages ? m.buffers.uncoveredPixels
                     : spatial::UncoveredPixels(evaluator.frame(), lightSpace, scene.camera,
-                                               m.shades, m.map.matrix, m.map.resolution, cascades,
-                                               m.map.warp ? &*m.map.warp : nullptr);
+                                               m.buffers.shades, m.buffers.map.matrix,
+                                               m.buffers.map.resolution, cascades,
+                                               m.buffers.map.warp ? &*m.buffers.map.warp : nullptr);
         if (m.pages) {
-            EXPECT_EQ(uncovered.size(), m.shades.size()) << m.method;
+            EXPECT_EQ(uncovered.size(), m.buffers.shades.size()) << m.method;
         }
         std::int64_t marked = 0;
         for (std::uint8_t u : uncovered) marked += u;
         EXPECT_EQ(marked, m.uncovered) << m.method;
         methodsWithUncovered += m.uncovered > 0;
-        const spatial::Image errors = spatial::MisclassificationImage(evaluator.frame(), lightSpace,
-                                                                      m.shades, o.truth, uncovered);
+        const spatial::Image errors = spatial::MisclassificationImage(
+            evaluator.frame(), lightSpace, m.buffers.shades, o.truth, uncovered);
         const spatial::Image frame =
-            spatial::FrameImage(evaluator.frame(), lightSpace, m.shades, uncovered);
+            spatial::FrameImage(evaluator.frame(), lightSpace, m.buffers.shades, uncovered);
         std::int64_t amberErrors = 0, amberFrame = 0;
         for (std::size_t i = 0; i < uncovered.size(); ++i) {
             amberErrors += Is(errors, i, spatial::kUncoveredColour);

@@ -80,8 +80,9 @@ TEST(Evaluation, EveryMethodCoversEveryVisibleSampleAndIsDeterministic) {
         }
         // The optimizer never ends above its starting point (the focused axis).
         for (const MethodOutcome& mo : a.methods) {
-            if (!mo.hAfterIteration.empty()) {
-                EXPECT_LE(mo.hAfterIteration.back(), mo.hAfterIteration.front()) << mo.method;
+            if (!mo.trace.hAfterIteration.empty()) {
+                EXPECT_LE(mo.trace.hAfterIteration.back(), mo.trace.hAfterIteration.front())
+                    << mo.method;
             }
         }
     }

@@ -70,7 +70,7 @@ TEST(OracleMethod, MeasuresAtMostEveryFairSingleMap) {
     const LightOutcome o = evaluator.Evaluate(cases::SweepLightsOf(scene, 1).front(), options);
     const MethodOutcome& oracle = o.methods.back();
     ASSERT_EQ(oracle.method, kOracleMethod);
-    EXPECT_FALSE(oracle.winner.empty());
+    EXPECT_FALSE(oracle.trace.winner.empty());
     for (const MethodOutcome& m : o.methods)
         EXPECT_LE(oracle.misclassifiedMean, m.misclassifiedMean) << m.method;
 }

@@ -132,11 +132,12 @@ TEST(Evaluation, StorageFactorIsTheWorstPerspectiveAliasingOfTheShadedPixels) {
     const MethodOutcome& focused = o.methods[0];
     ASSERT_EQ(focused.uncovered, 0);
     double worst = 0.0;
-    for (std::size_t i = 0; i < focused.shades.size(); ++i)
-        if (focused.shades[i] == Shade::kLit || focused.shades[i] == Shade::kShadowed)
-            worst =
-                std::max(worst, PerspectiveAliasing(scene.camera, lightSpace, focused.map.matrix,
-                                                    evaluator.frame().wsPosition[i]));
+    for (std::size_t i = 0; i < focused.buffers.shades.size(); ++i)
+        if (focused.buffers.shades[i] == Shade::kLit ||
+            focused.buffers.shades[i] == Shade::kShadowed)
+            worst = std::max(
+                worst, PerspectiveAliasing(scene.camera, lightSpace, focused.buffers.map.matrix,
+                                           evaluator.frame().wsPosition[i]));
     EXPECT_EQ(focused.perspectiveMax, worst);
     for (const MethodOutcome& m : o.methods) {
         EXPECT_EQ(m.texels, scene.shadowMap.width * scene.shadowMap.height) << m.method;

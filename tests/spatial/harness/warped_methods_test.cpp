@@ -155,12 +155,12 @@ TEST(WarpedMethods, GetTheSingleMapsTexelsAndCoverWhatTheirBaseCovers) {
         for (std::size_t m = 2; m < o.methods.size(); ++m) {
             const MethodOutcome& w = o.methods[m];
             SCOPED_TRACE(w.method);
-            ASSERT_TRUE(w.map.warp);
-            EXPECT_FALSE(w.map.warp->IsLinear());
+            ASSERT_TRUE(w.buffers.map.warp);
+            EXPECT_FALSE(w.buffers.map.warp->IsLinear());
             if (w.method == "logpsm") {
                 EXPECT_LE(w.texels, texels);
-                EXPECT_GE(w.texels,
-                          texels - std::max(w.map.resolution.width, w.map.resolution.height));
+                EXPECT_GE(w.texels, texels - std::max(w.buffers.map.resolution.width,
+                                                      w.buffers.map.resolution.height));
                 // The same warp frame fitted to the same visible points (in log coordinates).
                 EXPECT_LE(w.uncovered,
                           std::max<std::int64_t>(2 * lispsm.uncovered, o.receiverPixels / 1000));
@@ -171,7 +171,7 @@ TEST(WarpedMethods, GetTheSingleMapsTexelsAndCoverWhatTheirBaseCovers) {
             }
             EXPECT_TRUE(std::isfinite(w.h));
             EXPECT_GT(w.perspectiveMax, 0.0);
-            EXPECT_EQ(w.shades.size(), focused.shades.size());
+            EXPECT_EQ(w.buffers.shades.size(), focused.buffers.shades.size());
         }
     }
 }
