@@ -1,0 +1,47 @@
+# cases/scripts/fair_table.py on a four-light lights.csv whose numbers are worked by hand:
+#   light  optimal  optimal-h  focused-tight  lispsm-tight   best (of the two baselines)
+#     0      100       110         150            120           120
+#     1      200       190         210            250           210
+#     2      300       330         290            340           290
+#     3     1100       401         501            901           501
+# optimal − lispsm-tight: differences −20, −50, −40, 199, mean 22.25 = +5.5% of 402.75; their
+# sample s.d. 118.49, so the 95% half-width is t(3) = 3.182 · 118.49/√4 = 188.5 = 46.8%.
+# optimal − best: −20, −10, 10, 599, mean 144.75 = +51.7% of 280.25, half-width 482.2 = 172.1%.
+# Light 3 breaks the 2×best+50 rule (1100 > 1052). Bad input: one line, exit status 2.
+# Invoked by ctest with -DPYTHON=... -DSCRIPT=... -DWORK=...
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}/set")
+file(WRITE "${WORK}/set/lights.csv"
+     "light,optimal_misclassified_mean,optimal-h_misclassified_mean,"
+     "focused-tight_misclassified_mean,lispsm-tight_misclassified_mean\n"
+     "0,100,110,150,120\n1,200,190,210,250\n2,300,330,290,340\n3,1100,401,501,901\n")
+
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" --against lispsm-tight "${WORK}/set"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(row "| set | 4 | 425 | 258 | 288 | 403 | +5.5 ± 46.8% | +51.7 ± 172.1% | 1 |")
+string(FIND "${out}" "${row}" at)
+if(NOT code EQUAL 0 OR at EQUAL -1 OR NOT out MATCHES "optimal − lispsm-tight")
+    message(FATAL_ERROR "fair_table.py --against lispsm-tight: exit ${code}, wanted\n${row}\n"
+                        "got\n${out}${err}")
+endif()
+# Without --against: the paired column is against optimal-h (differences −10, 10, −30, 699: mean
+# 167.25 = +64.9% of 257.75).
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/set"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "optimal − optimal-h" OR NOT out MATCHES "\\+64\\.9 ± ")
+    message(FATAL_ERROR "fair_table.py: exit ${code}: ${out}${err}")
+endif()
+
+foreach(bad "--against;psm;${WORK}/set|--against psm: .* has no such method"
+            "${WORK}/none|none: cannot read lights.csv"
+            "--against|--against: needs a method name"
+            "--phases;${WORK}/set|--phases: unknown option")
+    string(REPLACE "|" ";" parts "${bad}")
+    list(GET parts -1 expected)
+    list(REMOVE_AT parts -1)
+    execute_process(COMMAND "${PYTHON}" "${SCRIPT}" ${parts}
+                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT code EQUAL 2 OR NOT err MATCHES "^fair_table.py: (.*/)?${expected}" OR NOT out STREQUAL "")
+        message(FATAL_ERROR "fair_table.py ${parts}: exit ${code}, stderr '${err}', stdout '${out}'")
+    endif()
+endforeach()
