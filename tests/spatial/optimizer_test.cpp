@@ -21,6 +21,25 @@
 namespace lexel::spatial {
 namespace {
 
+// A floor with a box, seen by a camera near the floor (a 180² readback): real samples for the
+// searches below.
+struct BoxOnFloor {
+    TriangleMesh scene = [] {
+        TriangleMesh m = testing::FloorQuad(20.0);
+        m.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 2.0, 1.0}));
+        return m;
+    }();
+    std::unique_ptr<RenderBackend> renderer = MakeCpuRenderer(scene);
+    Camera camera = [] {
+        Camera c;
+        c.position = {0.0, 1.7, 12.0};
+        c.target = {0.0, 0.5, 0.0};
+        return c;
+    }();
+    Readback readback = RenderReadback(*renderer, camera, {180, 180});
+    Bounds bounds = scene.ComputeBounds();
+};
+
 // Random samples in front of the plane p4 = (0, 0, 1): points in a box at depth 5..10 and random
 // screen derivatives.
 LightSamples RandomSamples(std::mt19937_64& rng, int count) {
@@ -218,19 +237,15 @@ TEST(RefinedObjective, EqualsTheFitsEnergyAndItsGradientMatchesCentralDifference
 
 // optimal-shear: Algorithm 1 with the sheared fit keeps its invariants on real samples.
 TEST(Optimizer, ShearedSearchKeepsEveryRelevantPointOnTheMap) {
-    TriangleMesh scene = testing::FloorQuad(20.0);
-    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 2.0, 1.0}));
-    const auto renderer = MakeCpuRenderer(scene);
-    Camera camera;
-    camera.position = {0.0, 1.7, 12.0};
-    camera.target = {0.0, 0.5, 0.0};
-    const Readback rb = RenderReadback(*renderer, camera, {180, 180});
-    const Bounds bounds = scene.ComputeBounds();
+    const BoxOnFloor box;
+    const RenderBackend& renderer = *box.renderer;
+    const Readback& rb = box.readback;
+    const Bounds& bounds = box.bounds;
     for (const glm::dvec3 lightPos : {glm::dvec3(-30, 25, -25), glm::dvec3(40, 15, 10)}) {
         Light light;
         light.position = lightPos;
         const LightSpace ls(light, bounds);
-        const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, {400, 300});
+        const LightSamples s = testing::SamplesFromBoundsMap(renderer, rb, ls, bounds, {400, 300});
         ASSERT_GT(s.lsX.size(), 20u);
         OptimizerOptions options;
         options.shear = true;
@@ -251,21 +266,17 @@ TEST(Optimizer, ShearedSearchKeepsEveryRelevantPointOnTheMap) {
 }
 
 TEST(Optimizer, SearchNeverIncreasesHAndRefinementNeverHurts) {
-    // A floor with a box, seen by a camera near the floor, lit from the side: real samples.
-    TriangleMesh scene = testing::FloorQuad(20.0);
-    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 2.0, 1.0}));
-    const auto renderer = MakeCpuRenderer(scene);
-    Camera camera;
-    camera.position = {0.0, 1.7, 12.0};
-    camera.target = {0.0, 0.5, 0.0};
-    const Readback rb = RenderReadback(*renderer, camera, {180, 180});
-    const Bounds bounds = scene.ComputeBounds();
+    // BoxOnFloor lit from the side: real samples.
+    const BoxOnFloor box;
+    const RenderBackend& renderer = *box.renderer;
+    const Readback& rb = box.readback;
+    const Bounds& bounds = box.bounds;
     for (const glm::dvec3 lightPos :
          {glm::dvec3(-30, 25, -25), glm::dvec3(40, 15, 10), glm::dvec3(5, 60, -5)}) {
         Light light;
         light.position = lightPos;
         const LightSpace ls(light, bounds);
-        const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, {400, 400});
+        const LightSamples s = testing::SamplesFromBoundsMap(renderer, rb, ls, bounds, {400, 400});
         ASSERT_GT(s.lsX.size(), 20u);
         OptimizerOptions options;
         options.refine = true;
@@ -298,18 +309,15 @@ TEST(Optimizer, SearchNeverIncreasesHAndRefinementNeverHurts) {
 TEST(Optimizer, SampleBudgetSearchesOnTheThinnedSamples) {
     // OptimizerOptions::maxSamples: the same matrix, bit for bit, as the search on ThinSamples
     // itself, for one start and for every start; a budget at or above the count changes nothing.
-    TriangleMesh scene = testing::FloorQuad(20.0);
-    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 2.0, 1.0}));
-    const auto renderer = MakeCpuRenderer(scene);
-    Camera camera;
-    camera.position = {0.0, 1.7, 12.0};
-    camera.target = {0.0, 0.5, 0.0};
-    const Readback rb = RenderReadback(*renderer, camera, {180, 180});
-    const Bounds bounds = scene.ComputeBounds();
+    const BoxOnFloor box;
+    const RenderBackend& renderer = *box.renderer;
+    const Camera& camera = box.camera;
+    const Readback& rb = box.readback;
+    const Bounds& bounds = box.bounds;
     Light light;
     light.position = {-30, 25, -25};
     const LightSpace ls(light, bounds);
-    const LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, {400, 400});
+    const LightSamples s = testing::SamplesFromBoundsMap(renderer, rb, ls, bounds, {400, 400});
     ASSERT_GT(s.lsX.size(), 60u);
     const std::size_t budget = s.lsX.size() / 3;
     OptimizerOptions options = EdgeOptimizerOptions();
@@ -345,14 +353,10 @@ TEST(Optimizer, CollapseGuardRejectsARefinementThatStarvesTheView) {
     // The case in miniature: a light with a handful of boundary samples (7, from one
     // end of the edge), where the refinement on h alone can shrink those samples' texels by
     // turning the axis until the rest of the view's texels blow up.
-    TriangleMesh scene = testing::FloorQuad(20.0);
-    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 2.0, 1.0}));
-    const auto renderer = MakeCpuRenderer(scene);
-    Camera camera;
-    camera.position = {0.0, 1.7, 12.0};
-    camera.target = {0.0, 0.5, 0.0};
-    const Readback rb = RenderReadback(*renderer, camera, {180, 180});
-    const Bounds bounds = scene.ComputeBounds();
+    const BoxOnFloor box;
+    const RenderBackend& renderer = *box.renderer;
+    const Readback& rb = box.readback;
+    const Bounds& bounds = box.bounds;
     const Resolution map{400, 400};
     int collapsed = 0;
     for (const glm::dvec3 lightPos :
@@ -360,7 +364,7 @@ TEST(Optimizer, CollapseGuardRejectsARefinementThatStarvesTheView) {
         Light light;
         light.position = lightPos;
         const LightSpace ls(light, bounds);
-        LightSamples s = testing::SamplesFromBoundsMap(*renderer, rb, ls, bounds, map);
+        LightSamples s = testing::SamplesFromBoundsMap(renderer, rb, ls, bounds, map);
         ASSERT_GT(s.lsX.size(), 7u);
         for (auto* v : {&s.lsX, &s.dXdx1, &s.dXdx2, &s.wsX}) v->resize(7);
         s.pixel.resize(7);
