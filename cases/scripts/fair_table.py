@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """Summarize phase-averaged `lexel sweep --out DIR` runs of the fair comparison (RESULTS.md).
 
-Usage: fair_table.py [--against METHOD ...] DIR [DIR ...]
+Usage: fair_table.py [--reference METHOD] [--against METHOD ...] DIR [DIR ...]
        (each DIR a sweep's --out directory, holding lights.csv)
 
 Per directory, one Markdown row: each method's mean phase-averaged misclassified pixels, the
-paired difference of `optimal` against each --against method (default: `optimal-h`) and against
-the per-light best single-map baseline (mean ± 95% half-width over the lights, Student t, as a
-% of the reference's mean), and the lights on which `optimal` misclassifies more than twice the
-best baseline's count plus 50 pixels (issue 25's rule). Bad input: one line, exit status 2.
+paired difference of the reference method (default: `optimal`) against each --against method
+(default: `optimal-h`) and, where the sweep ran any of the five single-map baselines, against
+their per-light best (mean ± 95% half-width over the lights, Student t, as a % of the other's
+mean), with the lights on which the reference misclassifies more than twice that best plus 50
+pixels (issue 25's rule). Bad input: one line, exit status 2.
 """
 import csv
 import math
@@ -40,61 +41,71 @@ def fail(message):
     sys.exit(2)
 
 
-def read_rows(d):
+def read_rows(d, reference):
     try:
         with open(os.path.join(d, "lights.csv"), newline="") as f:
             rows = list(csv.DictReader(f))
     except OSError as e:
         fail(f"{d}: cannot read lights.csv ({e.strerror})")
-    if not rows or "optimal_misclassified_mean" not in rows[0]:
-        fail(f"{d}/lights.csv: no lights with optimal's phase-averaged counts "
-             "(run the sweep with --method optimal --phases K)")
+    if not rows or reference + "_misclassified_mean" not in rows[0]:
+        fail(f"{d}/lights.csv: no lights with {reference}'s phase-averaged counts "
+             f"(run the sweep with --method {reference} --phases K)")
     return rows
 
 
-def main(against, dirs):
+def paired(ours, ref):
+    dm, ci = mean_ci([a - b for a, b in zip(ours, ref)])
+    refm = sum(ref) / len(ref)
+    return f"{100 * dm / refm:+.1f} ± {100 * ci / refm:.1f}%"
+
+
+def main(reference, against, dirs):
     for d in dirs:
-        rows = read_rows(d)
+        rows = read_rows(d, reference)
         methods = [k[: -len("_misclassified_mean")] for k in rows[0]
                    if k.endswith("_misclassified_mean")]
         mean = {m: [float(r[m + "_misclassified_mean"]) for r in rows] for m in methods}
         base = [b for b in BASELINES if b in mean]
-        best = [min(mean[b][i] for b in base) for i in range(len(rows))]
         cells = [f"{sum(mean[m]) / len(rows):.0f}" for m in methods]
         out = [os.path.basename(os.path.normpath(d)), str(len(rows))] + cells
-        opt = mean["optimal"]
+        ours = mean[reference]
         for m in against or []:
             if m not in mean:
                 fail(f"--against {m}: {d}/lights.csv has no such method")
         if against is None:  # the default: optimal-h where the sweep ran it
-            against = [m for m in ["optimal-h"] if m in mean]
-        for ref in [mean[m] for m in against] + [best]:
-            dm, ci = mean_ci([a - b for a, b in zip(opt, ref)])
-            refm = sum(ref) / len(ref)
-            out.append(f"{100 * dm / refm:+.1f} ± {100 * ci / refm:.1f}%")
-        bad = sum(1 for a, b in zip(opt, best) if a > 2 * b + 50)
-        out.append(str(bad))
+            against = [m for m in ["optimal-h"] if m in mean and m != reference]
+        out += [paired(ours, mean[m]) for m in against]
+        if base:  # the per-light best single-map baseline and issue 25's rule against it
+            best = [min(mean[b][i] for b in base) for i in range(len(rows))]
+            out.append(paired(ours, best))
+            out.append(str(sum(1 for a, b in zip(ours, best) if a > 2 * b + 50)))
         if d == dirs[0]:
-            paired = "".join(f" | optimal − {m}" for m in against)
-            print("| set | lights | " + " | ".join(methods) + paired +
-                  " | optimal − best baseline (per light) | lights > 2×best+50 |")
-            print("| --- | ---: |" + " ---: |" * (len(methods) + len(against) + 2))
+            header = "".join(f" | {reference} − {m}" for m in against)
+            if base:
+                header += (f" | {reference} − best baseline (per light)"
+                           " | lights > 2×best+50")
+            print("| set | lights | " + " | ".join(methods) + header + " |")
+            print("| --- | ---: |" + " ---: |" * (len(out) - 2))
         print("| " + " | ".join(out) + " |")
 
 
 if __name__ == "__main__":
+    usage = "usage: fair_table.py [--reference METHOD] [--against METHOD ...] DIR ..."
     args = sys.argv[1:]
-    against, dirs = [], []
+    reference, against, dirs = "optimal", [], []
     while args:
         a = args.pop(0)
-        if a == "--against":
+        if a in ("--against", "--reference"):
             if not args:
-                fail("--against: needs a method name")
-            against.append(args.pop(0))
+                fail(f"{a}: needs a method name")
+            if a == "--against":
+                against.append(args.pop(0))
+            else:
+                reference = args.pop(0)
         elif a.startswith("-"):
-            fail(f"{a}: unknown option (usage: fair_table.py [--against METHOD ...] DIR ...)")
+            fail(f"{a}: unknown option ({usage})")
         else:
             dirs.append(a)
     if not dirs:
-        fail("no sweep directory given (usage: fair_table.py [--against METHOD ...] DIR ...)")
-    main(against or None, dirs)
+        fail(f"no sweep directory given ({usage})")
+    main(reference, against or None, dirs)

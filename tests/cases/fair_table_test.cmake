@@ -32,10 +32,37 @@ if(NOT code EQUAL 0 OR NOT out MATCHES "optimal − optimal-h" OR NOT out MATCHE
     message(FATAL_ERROR "fair_table.py: exit ${code}: ${out}${err}")
 endif()
 
+# --reference optimal-h: its differences against optimal are 10, −10, 30, −699, mean −167.25 =
+# −39.4% of 425 (half-width 3.182 · 354.9/√4 = 564.6 = 132.8%); against the best −10, −20, 40,
+# −100, mean −22.5 = −8.0% of 280.25; no light breaks the rule.
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" --reference optimal-h --against optimal
+                        "${WORK}/set"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(row "| set | 4 | 425 | 258 | 288 | 403 | -39.4 ± 132.8% | -8.0 ± 32.9% | 0 |")
+string(FIND "${out}" "${row}" at)
+if(NOT code EQUAL 0 OR at EQUAL -1 OR NOT out MATCHES "optimal-h − optimal")
+    message(FATAL_ERROR "fair_table.py --reference optimal-h: exit ${code}, wanted\n${row}\n"
+                        "got\n${out}${err}")
+endif()
+# Cascades without a single-map baseline: no per-light best column. sdsm − optimal: −10, 20,
+# mean 5 = +3.3% of 150, half-width t(1) = 12.706 · 21.21/√2 = 190.6 = 127.1%.
+file(MAKE_DIRECTORY "${WORK}/cascades")
+file(WRITE "${WORK}/cascades/lights.csv"
+     "light,optimal_misclassified_mean,sdsm_misclassified_mean\n0,100,90\n1,200,220\n")
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" --reference sdsm --against optimal
+                        "${WORK}/cascades"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "\\| cascades \\| 2 \\| 150 \\| 155 \\| \\+3\\.3 ± 127\\.1% \\|\n"
+   OR out MATCHES "best baseline")
+    message(FATAL_ERROR "fair_table.py --reference sdsm: exit ${code}: ${out}${err}")
+endif()
+
 foreach(bad "--against;psm;${WORK}/set|--against psm: .* has no such method"
             "${WORK}/none|none: cannot read lights.csv"
             "--against|--against: needs a method name"
-            "--phases;${WORK}/set|--phases: unknown option")
+            "--phases;${WORK}/set|--phases: unknown option"
+            "--reference|--reference: needs a method name"
+            "--reference;psm;${WORK}/set|.*set/lights.csv: no lights with psm's phase-averaged")
     string(REPLACE "|" ";" parts "${bad}")
     list(GET parts -1 expected)
     list(REMOVE_AT parts -1)
