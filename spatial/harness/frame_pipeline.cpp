@@ -6,11 +6,8 @@
 
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/frame_schedule.h"
-#include "lexel/spatial/harness/methods.h"
 
 namespace lexel::spatial {
-
-bool IsFrameOptimizer(std::string_view method) { return IsOptimizerMethod(method); }
 
 namespace {
 

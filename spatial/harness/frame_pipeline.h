@@ -43,10 +43,6 @@ struct FrameOptions {
     bool timePasses = true;
 };
 
-// Whether `method` is one a FrameOptions::optimal can name: every optimizer method
-// (IsOptimizerMethod, methods.h).
-bool IsFrameOptimizer(std::string_view method);
-
 // Milliseconds. GPU passes are GPU time (timer queries) on a GPU pipeline and wall time on the CPU
 // one; CPU stages are wall time. The parts need not add up to `total`.
 struct FrameTimes {

@@ -39,7 +39,7 @@ BaselineContext FrameBaselineContext(const Scene& scene, const Camera& camera,
 // hull) and t->search (the rest). Throws std::invalid_argument for a method that is not one.
 LightMatrix TimedOptimizer(const std::string& method, BaselineContext context,
                            const LightSamples& samples, std::size_t maxSamples, FrameTimes* t) {
-    if (!IsFrameOptimizer(method))
+    if (!IsOptimizerMethod(method))
         throw std::invalid_argument("frame pipeline: '" + method + "' is not an optimizer");
     context.samples = &samples;
     MethodContext methodContext;

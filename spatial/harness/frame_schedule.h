@@ -89,7 +89,7 @@ class FrameSchedule {
     FramePlan Plan(std::span<const Light> lights, FrameMethod method, const FrameOptions& options);
     // One frame: Plan, then its passes through `passes` (see the header comment). Throws
     // DomainError as Evaluator::Evaluate does, std::invalid_argument when options.optimal is
-    // not an optimizer (IsFrameOptimizer).
+    // not an optimizer (IsOptimizerMethod, methods.h).
     void Run(const Scene& scene, const Camera& camera, std::span<const Light> lights,
              FrameMethod method, const FrameOptions& options, FramePasses& passes, FrameTimes* t);
     // The matrices the last frame rendered its final maps with, one per light.
