@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-#include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/method_names.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
 
