@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "lexel/cases/report/columns.h"
 #include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
@@ -34,32 +35,115 @@ std::string PhaseMeanText(double mean, double standardError) {
     return Fixed(mean, 1) + " ± " + Fixed(1.96 * standardError, 1);
 }
 
+namespace {
+
+// A row of `lexel run`'s method table: one method's outcome on light `light`.
+struct MethodRow {
+    std::size_t light = 0;
+    const spatial::LightOutcome* outcome = nullptr;
+    const spatial::MethodOutcome* method = nullptr;
+};
+
+CellValue ToCell(std::int64_t n) { return n; }
+CellValue ToCell(double x) { return x; }
+CellValue ToCell(const std::string& s) { return s; }
+
+// The getter of a MethodMetrics field.
+template <class T>
+std::function<CellValue(const MethodRow&)> Metric(T spatial::MethodMetrics::*field) {
+    return [field](const MethodRow& row) { return ToCell(row.method->metrics.*field); };
+}
+
+// A virtual shadow map's page count (`field` of PageOutcome); nothing for the other methods.
+std::function<CellValue(const MethodRow&)> Pages(std::int64_t spatial::PageOutcome::*field) {
+    return [field](const MethodRow& row) {
+        return row.method->pages ? CellValue(*row.method->pages.*field) : CellValue{};
+    };
+}
+
+// A virtual shadow map's maps are its resident pages; a partitioned method's its cascades.
+CellValue Maps(const MethodRow& row) {
+    const spatial::MethodOutcome& m = *row.method;
+    return m.pages ? m.pages->resident
+                   : static_cast<std::int64_t>(std::max<std::size_t>(1, m.cascades.size()));
+}
+
+// The columns of a method's row in `lexel run --format json|csv` (and its terminal table), in
+// CSV order; `phased` (--phases K > 1) adds the phase means.
+ColumnTable<MethodRow> MethodColumns(bool phased) {
+    using spatial::MethodMetrics;
+    ColumnTable<MethodRow> table = {
+        {"light", "", [](const MethodRow& r) { return CellValue(std::int64_t(r.light)); },
+         kCsvColumn},
+        {"method", "", [](const MethodRow& r) { return ToCell(r.method->method); }},
+        {"misclassified", "pixels", Metric(&MethodMetrics::misclassified)},
+        {"false_shadow", "pixels", Metric(&MethodMetrics::falseShadow)},
+        {"false_light", "pixels",
+         [](const MethodRow& r) {
+             return CellValue(r.method->metrics.misclassified - r.method->metrics.falseShadow);
+         }},
+        {"h", "pixels²/texel²", Metric(&MethodMetrics::h)},
+        {"ms", "ms", Metric(&MethodMetrics::ms)},
+        {"uncovered", "pixels", Metric(&MethodMetrics::uncovered)},
+        {"mean_footprint", "frame pixels/texel", Metric(&MethodMetrics::footprintMean)},
+        {"max_footprint", "frame pixels/texel", Metric(&MethodMetrics::footprintMax)},
+        {"maps", "maps", Maps, kCsvColumn},
+        {"max_perspective_aliasing", "texels/pixel", Metric(&MethodMetrics::perspectiveMax)},
+        {"storage_factor", "texels/pixel", Metric(&MethodMetrics::storageFactor)},
+        {"pages_requested", "pages", Pages(&spatial::PageOutcome::requested), kCsvColumn},
+        {"pages_resident", "pages", Pages(&spatial::PageOutcome::resident), kCsvColumn},
+        {"pages_dropped", "pages", Pages(&spatial::PageOutcome::dropped), kCsvColumn}};
+    if (phased) {
+        const ColumnTable<MethodRow> phaseColumns = {
+            {"phases", "phases",
+             [](const MethodRow& r) { return CellValue(std::int64_t{r.outcome->phases}); }},
+            {"misclassified_mean", "pixels", Metric(&MethodMetrics::misclassifiedMean)},
+            {"misclassified_standard_error", "pixels", Metric(&MethodMetrics::misclassifiedError)},
+            {"false_shadow_mean", "pixels", Metric(&MethodMetrics::falseShadowMean)}};
+        table.insert(table.end(), phaseColumns.begin(), phaseColumns.end());
+    }
+    const ColumnTable<MethodRow> jsonOnly = {
+        {"p99_perspective_aliasing", "texels/pixel", Metric(&MethodMetrics::perspectiveP99),
+         kJsonColumn},
+        {"texels", "texels", Metric(&MethodMetrics::texels), kJsonColumn},
+        {"storage_factor_p99", "texels/pixel", Metric(&MethodMetrics::storageFactorP99),
+         kJsonColumn}};
+    table.insert(table.end(), jsonOnly.begin(), jsonOnly.end());
+    return table;
+}
+
+std::vector<MethodRow> MethodRows(std::size_t light, const spatial::LightOutcome& o) {
+    std::vector<MethodRow> rows;
+    for (const spatial::MethodOutcome& m : o.methods) rows.push_back({light, &o, &m});
+    return rows;
+}
+
+}  // namespace
+
 TextTable SpatialMethodTable(const spatial::LightOutcome& o) {
-    std::vector<std::string> header = {
-        "method",        "misclassified", "false\nshadow",   "false\nlight", "uncovered",
-        "mean\nσ1(J⁻¹)", "max\nσ1(J⁻¹)",  "storage\nfactor", "h\n(eq. 6)",   "ms"};
     // Over several phases: the mean and its 95% interval beside phase 0's count.
     const bool phased = o.phases > 1;
+    const ColumnTable<MethodRow> columns = MethodColumns(phased);
+    std::vector<TextColumn<MethodRow>> text = {
+        TextColumnOf(columns, "method", "method"),
+        TextColumnOf(columns, "misclassified", "misclassified")};
     if (phased)
-        header.insert(header.begin() + 2,
-                      "mean over\n" + std::to_string(o.phases) + " phases\n(95% CI)");
-    TextTable table(header);
-    for (const auto& m : o.methods) {
-        std::vector<std::string> row = {m.method,
-                                        std::to_string(m.misclassified),
-                                        std::to_string(m.falseShadow),
-                                        std::to_string(m.misclassified - m.falseShadow),
-                                        std::to_string(m.uncovered),
-                                        Significant(m.footprintMean, 4),
-                                        Significant(m.footprintMax, 4),
-                                        Significant(m.storageFactor, 4),
-                                        Significant(m.h, 6),
-                                        Fixed(m.ms, 3)};
-        if (phased)
-            row.insert(row.begin() + 2, PhaseMeanText(m.misclassifiedMean, m.misclassifiedError));
-        table.AddRow(row);
-    }
-    return table;
+        text.push_back({"mean over\n" + std::to_string(o.phases) + " phases\n(95% CI)",
+                        [](const MethodRow& r) {
+                            return PhaseMeanText(r.method->metrics.misclassifiedMean,
+                                                 r.method->metrics.misclassifiedError);
+                        }});
+    const std::vector<TextColumn<MethodRow>> rest = {
+        TextColumnOf(columns, "false_shadow", "false\nshadow"),
+        TextColumnOf(columns, "false_light", "false\nlight"),
+        TextColumnOf(columns, "uncovered", "uncovered"),
+        TextColumnOf(columns, "mean_footprint", "mean\nσ1(J⁻¹)"),
+        TextColumnOf(columns, "max_footprint", "max\nσ1(J⁻¹)"),
+        TextColumnOf(columns, "storage_factor", "storage\nfactor"),
+        TextColumnOf(columns, "h", "h\n(eq. 6)", SignificantText(6)),
+        TextColumnOf(columns, "ms", "ms", FixedText(3))};
+    text.insert(text.end(), rest.begin(), rest.end());
+    return TextTableOf(text, MethodRows(0, o));
 }
 
 std::vector<std::string> IterationLines(const spatial::LightOutcome& o) {
@@ -69,46 +153,106 @@ std::vector<std::string> IterationLines(const spatial::LightOutcome& o) {
         std::string line = m.method + ": h by Algorithm 1 iteration";
         for (std::size_t i = 0; i < m.trace.hAfterIteration.size(); ++i)
             line += (i ? " → " : " ") + Significant(m.trace.hAfterIteration[i], 6);
-        if (m.h < m.trace.hBeforeRefine) line += "; refined " + Significant(m.h, 6);
+        if (m.metrics.h < m.trace.hBeforeRefine) line += "; refined " + Significant(m.metrics.h, 6);
         lines.push_back(line);
     }
     return lines;
 }
 
+namespace {
+
+// A row of the cascade table: cascade `index` of a partitioned method.
+struct CascadeRow {
+    const spatial::MethodOutcome* method = nullptr;
+    std::size_t index = 0;
+    const spatial::CascadeOutcome& Cascade() const { return method->cascades[index]; }
+};
+
+// The columns of a cascade in `lexel run --format json` (beside its clip_from_world) and the
+// terminal's cascade table.
+ColumnTable<CascadeRow> CascadeColumns() {
+    const auto field = [](auto get) {
+        return [get](const CascadeRow& r) { return CellValue(get(r.Cascade())); };
+    };
+    using spatial::CascadeOutcome;
+    return {
+        {"z_near", "eye depth", field([](const CascadeOutcome& c) { return c.cascade.zNear; }),
+         kJsonColumn},
+        {"z_far", "eye depth", field([](const CascadeOutcome& c) { return c.cascade.zFar; }),
+         kJsonColumn},
+        {"width", "texels",
+         field([](const CascadeOutcome& c) { return std::int64_t{c.cascade.map.width}; }),
+         kJsonColumn},
+        {"height", "texels",
+         field([](const CascadeOutcome& c) { return std::int64_t{c.cascade.map.height}; }),
+         kJsonColumn},
+        {"visible_points", "points",
+         field([](const CascadeOutcome& c) { return std::int64_t(c.cascade.visiblePoints); }),
+         kJsonColumn},
+        {"pixels", "pixels", field([](const CascadeOutcome& c) { return c.pixels; }), kJsonColumn},
+        {"h", "pixels²/texel²", field([](const CascadeOutcome& c) { return c.h; }), kJsonColumn}};
+}
+
+// A row of the page table: a virtual shadow map's pages (MethodOutcome::pages set).
+struct PageRow {
+    const spatial::MethodOutcome* method = nullptr;
+    const spatial::PageOutcome& Pages() const { return *method->pages; }
+};
+
+// The columns of a virtual shadow map's pages in JSON and the terminal's table.
+ColumnTable<PageRow> PageColumns() {
+    using spatial::PageOutcome;
+    const auto count = [](auto field) {
+        return [field](const PageRow& r) { return CellValue(std::int64_t(r.Pages().*field)); };
+    };
+    return {{"page_texels", "texels", count(&PageOutcome::pageTexels), kJsonColumn},
+            {"pool_pages", "pages", count(&PageOutcome::poolPages), kJsonColumn},
+            {"requested", "pages", count(&PageOutcome::requested), kJsonColumn},
+            {"resident", "pages", count(&PageOutcome::resident), kJsonColumn},
+            {"dropped", "pages", count(&PageOutcome::dropped), kJsonColumn},
+            {"lod_bias", "levels", [](const PageRow& r) { return CellValue(r.Pages().lodBias); },
+             kJsonColumn}};
+}
+
+}  // namespace
+
 std::optional<TextTable> CascadeTable(const spatial::LightOutcome& o) {
-    TextTable table({"method", "cascade", "depth\nfrom", "depth\nto", "map", "readback\npoints",
-                     "pixels", "h"});
-    bool any = false;
-    for (const auto& m : o.methods)
-        for (std::size_t c = 0; c < m.cascades.size(); ++c) {
-            const spatial::CascadeOutcome& cascade = m.cascades[c];
-            table.AddRow({c == 0 ? m.method : "", std::to_string(c),
-                          Significant(cascade.cascade.zNear, 4),
-                          Significant(cascade.cascade.zFar, 4),
-                          std::to_string(cascade.cascade.map.width) + "×" +
-                              std::to_string(cascade.cascade.map.height),
-                          std::to_string(cascade.cascade.visiblePoints),
-                          std::to_string(cascade.pixels), Significant(cascade.h, 4)});
-            any = true;
-        }
-    if (!any) return std::nullopt;
-    return table;
+    std::vector<CascadeRow> rows;
+    for (const spatial::MethodOutcome& m : o.methods)
+        for (std::size_t c = 0; c < m.cascades.size(); ++c) rows.push_back({&m, c});
+    if (rows.empty()) return std::nullopt;
+    const ColumnTable<CascadeRow> columns = CascadeColumns();
+    const std::vector<TextColumn<CascadeRow>> text = {
+        {"method", [](const CascadeRow& r) { return r.index == 0 ? r.method->method : ""; }},
+        {"cascade", [](const CascadeRow& r) { return std::to_string(r.index); }},
+        TextColumnOf(columns, "z_near", "depth\nfrom"),
+        TextColumnOf(columns, "z_far", "depth\nto"),
+        {"map",
+         [](const CascadeRow& r) {
+             const spatial::Resolution map = r.Cascade().cascade.map;
+             return std::to_string(map.width) + "×" + std::to_string(map.height);
+         }},
+        TextColumnOf(columns, "visible_points", "readback\npoints"),
+        TextColumnOf(columns, "pixels", "pixels"),
+        TextColumnOf(columns, "h", "h")};
+    return TextTableOf(text, rows);
 }
 
 std::optional<TextTable> PageTable(const spatial::LightOutcome& o) {
-    TextTable table({"method", "page", "pool\npages", "pages\nrequested", "pages\nresident",
-                     "pages\ndropped", "LOD\nbias"});
-    bool any = false;
-    for (const auto& m : o.methods) {
-        if (!m.pages) continue;
-        const spatial::PageOutcome& p = *m.pages;
-        table.AddRow({m.method, std::to_string(p.pageTexels) + "²", std::to_string(p.poolPages),
-                      std::to_string(p.requested), std::to_string(p.resident),
-                      std::to_string(p.dropped), Fixed(p.lodBias, 3)});
-        any = true;
-    }
-    if (!any) return std::nullopt;
-    return table;
+    std::vector<PageRow> rows;
+    for (const spatial::MethodOutcome& m : o.methods)
+        if (m.pages) rows.push_back({&m});
+    if (rows.empty()) return std::nullopt;
+    const ColumnTable<PageRow> columns = PageColumns();
+    const std::vector<TextColumn<PageRow>> text = {
+        {"method", [](const PageRow& r) { return r.method->method; }},
+        {"page", [](const PageRow& r) { return std::to_string(r.Pages().pageTexels) + "²"; }},
+        TextColumnOf(columns, "pool_pages", "pool\npages"),
+        TextColumnOf(columns, "requested", "pages\nrequested"),
+        TextColumnOf(columns, "resident", "pages\nresident"),
+        TextColumnOf(columns, "dropped", "pages\ndropped"),
+        TextColumnOf(columns, "lod_bias", "LOD\nbias", FixedText(3))};
+    return TextTableOf(text, rows);
 }
 
 std::string CameraPathCaption(const CameraPathStudy& study, std::size_t light) {
@@ -200,27 +344,12 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                                 {"truth_shadowed", o.truthShadowed},
                                 {"boundary_samples", o.samples.lsX.size()}};
         if (o.mapTruthDisagree >= 0) light["map4000_disagrees_with_rays"] = o.mapTruthDisagree;
+        const ColumnTable<MethodRow> columns = MethodColumns(o.phases > 1);
+        const ColumnTable<CascadeRow> cascadeColumns = CascadeColumns();
+        const ColumnTable<PageRow> pageColumns = PageColumns();
         for (const auto& m : o.methods) {
-            nlohmann::json method = {{"method", m.method},
-                                     {"misclassified", m.misclassified},
-                                     {"false_shadow", m.falseShadow},
-                                     {"false_light", m.misclassified - m.falseShadow},
-                                     {"uncovered", m.uncovered},
-                                     {"mean_footprint", m.footprintMean},
-                                     {"max_footprint", FiniteOrNull(m.footprintMax)},
-                                     {"max_perspective_aliasing", m.perspectiveMax},
-                                     {"p99_perspective_aliasing", m.perspectiveP99},
-                                     {"texels", m.texels},
-                                     {"storage_factor", m.storageFactor},
-                                     {"storage_factor_p99", m.storageFactorP99},
-                                     {"h", FiniteOrNull(m.h)},
-                                     {"ms", m.ms}};
-            if (o.phases > 1) {
-                method["phases"] = o.phases;
-                method["misclassified_mean"] = m.misclassifiedMean;
-                method["misclassified_standard_error"] = m.misclassifiedError;
-                method["false_shadow_mean"] = m.falseShadowMean;
-            }
+            nlohmann::json method;
+            AddJsonColumns(columns, MethodRow{l, &o, &m}, method);
             if (!m.trace.hAfterIteration.empty())
                 method["h_after_iteration"] = m.trace.hAfterIteration;
             const spatial::Resolution map =
@@ -229,22 +358,15 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
             method["map_kind"] = MapKind(m);
             method["clip_from_world"] =
                 RowMajor(run.evaluator->ClipFromWorldOf(o.light, m.matrix, map));
-            for (const spatial::CascadeOutcome& c : m.cascades)
-                method["cascades"].push_back(
-                    {{"clip_from_world", RowMajor(run.evaluator->ClipFromWorldOf(
-                                             o.light, c.cascade.matrix, c.cascade.map))},
-                     {"z_near", c.cascade.zNear},
-                     {"z_far", FiniteOrNull(c.cascade.zFar)},
-                     {"width", c.cascade.map.width},
-                     {"height", c.cascade.map.height},
-                     {"visible_points", c.cascade.visiblePoints},
-                     {"pixels", c.pixels},
-                     {"h", FiniteOrNull(c.h)}});
-            if (m.pages)
-                method["pages"] = {
-                    {"page_texels", m.pages->pageTexels}, {"pool_pages", m.pages->poolPages},
-                    {"requested", m.pages->requested},    {"resident", m.pages->resident},
-                    {"dropped", m.pages->dropped},        {"lod_bias", m.pages->lodBias}};
+            for (std::size_t c = 0; c < m.cascades.size(); ++c) {
+                const spatial::Cascade& cascade = m.cascades[c].cascade;
+                nlohmann::json entry = {
+                    {"clip_from_world", RowMajor(run.evaluator->ClipFromWorldOf(
+                                            o.light, cascade.matrix, cascade.map))}};
+                AddJsonColumns(cascadeColumns, CascadeRow{&m, c}, entry);
+                method["cascades"].push_back(entry);
+            }
+            if (m.pages) AddJsonColumns(pageColumns, PageRow{&m}, method["pages"]);
             light["methods"].push_back(method);
         }
         doc["lights"].push_back(light);
@@ -273,35 +395,17 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
     return doc;
 }
 
+std::string SpatialRunColumnReference() { return ColumnReference(MethodColumns(true)); }
+
 std::string SpatialRunCsv(const SpatialRun& run) {
-    std::ostringstream csv;
-    csv << "light,method,misclassified,false_shadow,false_light,h,ms,uncovered,mean_footprint,"
-           "max_footprint,maps,max_perspective_aliasing,storage_factor,pages_requested,"
-           "pages_resident,pages_dropped";
     // Over several phases (every light has the case's): the means and the standard error.
     const bool phased = !run.outcomes.empty() && run.outcomes.front().phases > 1;
-    if (phased) csv << ",phases,misclassified_mean,misclassified_standard_error,false_shadow_mean";
-    csv << '\n';
+    const ColumnTable<MethodRow> columns = MethodColumns(phased);
+    std::string csv = CsvHeader(columns) + '\n';
     for (std::size_t l = 0; l < run.outcomes.size(); ++l)
-        for (const auto& m : run.outcomes[l].methods) {
-            // A virtual shadow map's maps are its resident pages.
-            const std::size_t maps = m.pages ? static_cast<std::size_t>(m.pages->resident)
-                                             : std::max<std::size_t>(1, m.cascades.size());
-            csv << l << ',' << m.method << ',' << m.misclassified << ',' << m.falseShadow << ','
-                << m.misclassified - m.falseShadow << ',' << CsvNumber(m.h) << ','
-                << CsvNumber(m.ms) << ',' << m.uncovered << ',' << CsvNumber(m.footprintMean) << ','
-                << CsvNumber(m.footprintMax) << ',' << maps << ',' << CsvNumber(m.perspectiveMax)
-                << ',' << CsvNumber(m.storageFactor) << ',';
-            if (m.pages)
-                csv << m.pages->requested << ',' << m.pages->resident << ',' << m.pages->dropped;
-            else
-                csv << ",,";
-            if (phased)
-                csv << ',' << run.outcomes[l].phases << ',' << CsvNumber(m.misclassifiedMean) << ','
-                    << CsvNumber(m.misclassifiedError) << ',' << CsvNumber(m.falseShadowMean);
-            csv << '\n';
-        }
-    return csv.str();
+        for (const MethodRow& row : MethodRows(l, run.outcomes[l]))
+            csv += CsvRow(columns, row) + '\n';
+    return csv;
 }
 
 namespace {
@@ -315,36 +419,38 @@ ImageFigure FrameFigure(const std::string& title, const spatial::LightOutcome& o
                         const spatial::MethodOutcome& m, bool errors) {
     ImageFigure figure;
     figure.title = title;
-    const std::int64_t falseLight = m.misclassified - m.falseShadow;
+    const std::int64_t falseLight = m.metrics.misclassified - m.metrics.falseShadow;
     if (errors) {
-        figure.lines = {
-            "Where " + m.method + "'s shadow decision differs from exact shadow rays: " +
-                std::to_string(m.misclassified) + " of " +
-                Count(o.receiverPixels, "counted pixels") + " misclassified (" +
-                std::to_string(m.falseShadow) + " false shadow, " + std::to_string(falseLight) +
-                " false light); " + Count(m.uncovered, "uncovered") + ".",
-            "Counted pixels: visible and facing the light; those facing away are in "
-            "shadow for every method and the truth alike."};
+        figure.lines = {"Where " + m.method +
+                            "'s shadow decision differs from exact shadow rays: " +
+                            std::to_string(m.metrics.misclassified) + " of " +
+                            Count(o.receiverPixels, "counted pixels") + " misclassified (" +
+                            std::to_string(m.metrics.falseShadow) + " false shadow, " +
+                            std::to_string(falseLight) + " false light); " +
+                            Count(m.metrics.uncovered, "uncovered") + ".",
+                        "Counted pixels: visible and facing the light; those facing away are in "
+                        "shadow for every method and the truth alike."};
         figure.key = {
-            {"false shadow: a lit pixel shadowed (" + std::to_string(m.falseShadow) + ")",
+            {"false shadow: a lit pixel shadowed (" + std::to_string(m.metrics.falseShadow) + ")",
              spatial::kFalseShadowColour},
             {"false light: a shadowed pixel lit (" + std::to_string(falseLight) + ")",
              spatial::kFalseLightColour},
             {"agrees with the rays (darker where truly shadowed)", {0.6f, 0.6f, 0.6f}},
-            {"uncovered: no map covers it, shaded lit (" + std::to_string(m.uncovered) + ")",
+            {"uncovered: no map covers it, shaded lit (" + std::to_string(m.metrics.uncovered) +
+                 ")",
              spatial::kUncoveredColour},
             {"no geometry", spatial::kBackgroundColour}};
         return figure;
     }
     figure.lines = {"The frame shaded with " + m.method +
                     "'s shadows: " + Count(o.receiverPixels, "counted pixels") + ", " +
-                    Count(m.misclassified, "misclassified") + ", " +
-                    Count(m.uncovered, "uncovered") + "; " +
+                    Count(m.metrics.misclassified, "misclassified") + ", " +
+                    Count(m.metrics.uncovered, "uncovered") + "; " +
                     Count(o.truthShadowed, "truly shadowed (Embree rays)") + "."};
     figure.key = {{"lit (grey: n·l)", {0.75f, 0.75f, 0.75f}},
                   {"shadowed or facing away (ambient)",
                    {spatial::kAmbient, spatial::kAmbient, spatial::kAmbient}},
-                  {"uncovered: no map covers it (" + std::to_string(m.uncovered) + ")",
+                  {"uncovered: no map covers it (" + std::to_string(m.metrics.uncovered) + ")",
                    spatial::kUncoveredColour},
                   {"no geometry", spatial::kSkyColour}};
     return figure;

@@ -35,6 +35,9 @@ std::string ShimmerCaption(std::size_t light);
 TextTable ShimmerTable(const CameraPathStudy& study);
 nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run);
 std::string SpatialRunCsv(const SpatialRun& run);
+// The columns of a method's row (JSON and CSV; the phase columns with --phases K > 1) as a
+// Markdown table of key, unit and formats (columns.h, ColumnReference): cases/README.md's list.
+std::string SpatialRunColumnReference();
 
 // One image of WriteSpatialImages: its file name (in the directory given), what it shows, and its
 // caption (the figure's title and first line, for an index).

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "lexel/cases/report/columns.h"
 #include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
@@ -324,6 +325,68 @@ std::vector<std::string> WriteStorageFigures(const std::filesystem::path& dir,
 
 // ---- measured beside analytic ------------------------------------------------------------------
 
+namespace {
+
+// A row of `lexel storage --case`: one method on light `light`.
+struct StorageRow {
+    std::size_t light = 0;
+    const CaseStorageLight* outcome = nullptr;
+    const CaseStorageRow* method = nullptr;
+};
+
+// The columns of a storage row in `lexel storage --case --format json|csv`, in CSV order.
+ColumnTable<StorageRow> StorageColumns() {
+    const auto number = [](auto get) {
+        return [get](const StorageRow& r) { return CellValue(double(get(r))); };
+    };
+    using R = StorageRow;
+    return {
+        {"light", "", [](const R& r) { return CellValue(std::int64_t(r.light)); }, kCsvColumn},
+        {"method", "", [](const R& r) { return CellValue(r.method->method); }},
+        {"maps", "maps", [](const R& r) { return CellValue(std::int64_t{r.method->maps}); }},
+        {"texels", "texels", [](const R& r) { return CellValue(r.method->texels); }},
+        {"max_perspective_aliasing", "texels/pixel",
+         number([](const R& r) { return r.method->perspectiveMax; })},
+        {"storage_factor", "texels/pixel", number([](const R& r) { return r.method->measured; })},
+        {"storage_factor_p99", "texels/pixel",
+         number([](const R& r) { return r.method->measuredP99; })},
+        {"scheme", "", [](const R& r) { return CellValue(r.method->camera.scheme); }},
+        {"scheme_storage_camera", "texels/pixel",
+         number([](const R& r) { return r.method->camera.storage; })},
+        {"scheme_storage_visible", "texels/pixel",
+         number([](const R& r) { return r.method->visible.storage; })},
+        {"optimal_camera", "texels/pixel",
+         number([](const R& r) { return r.outcome->optimalCamera; }), kCsvColumn},
+        {"optimal_visible", "texels/pixel",
+         number([](const R& r) { return r.outcome->optimalVisible; }), kCsvColumn}};
+}
+
+std::vector<StorageRow> StorageRows(std::size_t l, const CaseStorageLight& light) {
+    std::vector<StorageRow> rows;
+    for (const CaseStorageRow& row : light.rows) rows.push_back({l, &light, &row});
+    return rows;
+}
+
+// The terminal's storage table of one light.
+TextTable StorageTable(std::size_t l, const CaseStorageLight& light) {
+    const ColumnTable<StorageRow> columns = StorageColumns();
+    const std::vector<TextColumn<StorageRow>> text = {
+        TextColumnOf(columns, "method", "method"),
+        TextColumnOf(columns, "maps", "maps"),
+        TextColumnOf(columns, "max_perspective_aliasing", "max\nw_l/w_i"),
+        TextColumnOf(columns, "storage_factor", "S\nmeasured"),
+        TextColumnOf(columns, "storage_factor_p99", "S measured\n(p99)"),
+        TextColumnOf(columns, "scheme", "scheme"),
+        TextColumnOf(columns, "scheme_storage_camera", "S scheme\n(camera)"),
+        TextColumnOf(columns, "scheme_storage_visible", "S scheme\n(visible)"),
+        {"measured /\nS_opt\n(visible)", [](const StorageRow& r) {
+             return Significant(r.method->measured / r.outcome->optimalVisible, 3);
+         }}};
+    return TextTableOf(text, StorageRows(l, light));
+}
+
+}  // namespace
+
 std::string CaseStorageText(const CaseStorage& r) {
     std::ostringstream out;
     out << "Measured storage factor beside Lloyd et al. 2006's S̄, " << r.caseName << ":\n  camera "
@@ -342,16 +405,7 @@ std::string CaseStorageText(const CaseStorage& r) {
             << Significant(light.optimalVisible, 4) << " (visible depths); best single map "
             << Significant(light.bestSingleCamera, 4) << " / "
             << Significant(light.bestSingleVisible, 4) << "\n";
-        TextTable table({"method", "maps", "max\nw_l/w_i", "S\nmeasured", "S measured\n(p99)",
-                         "scheme", "S scheme\n(camera)", "S scheme\n(visible)",
-                         "measured /\nS_opt\n(visible)"});
-        for (const CaseStorageRow& row : light.rows)
-            table.AddRow({row.method, std::to_string(row.maps), Significant(row.perspectiveMax, 4),
-                          Significant(row.measured, 4), Significant(row.measuredP99, 4),
-                          row.camera.scheme, Significant(row.camera.storage, 4),
-                          Significant(row.visible.storage, 4),
-                          Significant(row.measured / light.optimalVisible, 3)});
-        out << table.Render();
+        out << StorageTable(l, light).Render();
     }
     return out.str();
 }
@@ -367,18 +421,14 @@ nlohmann::json CaseStorageJson(const CaseStorage& r) {
                           {"camera", frustum(r.camera)},
                           {"visible", frustum(r.visible)},
                           {"partitions", r.partitions}};
+    const ColumnTable<StorageRow> columns = StorageColumns();
     for (const CaseStorageLight& light : r.lights) {
         nlohmann::json methods = nlohmann::json::array();
-        for (const CaseStorageRow& row : light.rows)
-            methods.push_back({{"method", row.method},
-                               {"maps", row.maps},
-                               {"texels", row.texels},
-                               {"max_perspective_aliasing", row.perspectiveMax},
-                               {"storage_factor", row.measured},
-                               {"storage_factor_p99", row.measuredP99},
-                               {"scheme", row.camera.scheme},
-                               {"scheme_storage_camera", row.camera.storage},
-                               {"scheme_storage_visible", row.visible.storage}});
+        for (const StorageRow& row : StorageRows(0, light)) {
+            nlohmann::json method;
+            AddJsonColumns(columns, row, method);
+            methods.push_back(method);
+        }
         doc["lights"].push_back({{"description", LightLabel(light.light)},
                                  {"gamma_deg", light.gammaDeg},
                                  {"optimal_camera", light.optimalCamera},
@@ -390,19 +440,15 @@ nlohmann::json CaseStorageJson(const CaseStorage& r) {
     return doc;
 }
 
+std::string CaseStorageColumnReference() { return ColumnReference(StorageColumns()); }
+
 std::string CaseStorageCsv(const CaseStorage& r) {
-    std::ostringstream csv;
-    csv << "light,method,maps,texels,max_perspective_aliasing,storage_factor,storage_factor_p99,"
-           "scheme,scheme_storage_camera,scheme_storage_visible,optimal_camera,optimal_visible\n";
+    const ColumnTable<StorageRow> columns = StorageColumns();
+    std::string csv = CsvHeader(columns) + '\n';
     for (std::size_t l = 0; l < r.lights.size(); ++l)
-        for (const CaseStorageRow& row : r.lights[l].rows)
-            csv << l << ',' << row.method << ',' << row.maps << ',' << row.texels << ','
-                << CsvNumber(row.perspectiveMax) << ',' << CsvNumber(row.measured) << ','
-                << CsvNumber(row.measuredP99) << ',' << row.camera.scheme << ','
-                << CsvNumber(row.camera.storage) << ',' << CsvNumber(row.visible.storage) << ','
-                << CsvNumber(r.lights[l].optimalCamera) << ','
-                << CsvNumber(r.lights[l].optimalVisible) << '\n';
-    return csv.str();
+        for (const StorageRow& row : StorageRows(l, r.lights[l]))
+            csv += CsvRow(columns, row) + '\n';
+    return csv;
 }
 
 }  // namespace lexel::cases

@@ -27,5 +27,8 @@ nlohmann::json CaseStorageJson(const CaseStorage& result);
 // light,method,maps,texels,max_perspective_aliasing,storage_factor,storage_factor_p99,scheme,
 // scheme_storage_camera,scheme_storage_visible,optimal_camera,optimal_visible
 std::string CaseStorageCsv(const CaseStorage& result);
+// The columns of `storage --case`'s rows (JSON and CSV) as a Markdown table: cases/README.md's
+// list.
+std::string CaseStorageColumnReference();
 
 }  // namespace lexel::cases

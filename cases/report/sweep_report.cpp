@@ -7,10 +7,11 @@
 #include <optional>
 #include <sstream>
 
+#include "lexel/cases/report/columns.h"
 #include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
-#include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/method_names.h"
 
 namespace lexel::cases {
 namespace {
@@ -338,6 +339,109 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
     return out;
 }
 
+// A method's row of a summary table (report, fair, equal-texel): over all lights, or over a
+// worst-10% set of Table 1 (its mean and % only; the summary columns are empty there).
+struct SummaryRow {
+    std::string table;  // "report", "fair" or "equal-texel"
+    std::string set;    // "all" or the method ranking the worst 10%
+    std::string method;
+    double setMean = 0.0;                     // mean misclassified over the set
+    double setPercentMore = 0.0;              // ... % more than the reference's over the same set
+    std::optional<MethodSummary> summary;     // over all lights; nullopt on a worst-10% row
+    std::optional<double> reportPercentMore;  // the report's own % (Table 1), where it has one
+    int phases = 1;
+    bool isReference = false;
+};
+
+// The getter of a MethodSummary field: nothing on a worst-10% row.
+template <class T>
+std::function<CellValue(const SummaryRow&)> Summary(T MethodSummary::*field) {
+    return [field](const SummaryRow& row) -> CellValue {
+        if (!row.summary) return {};
+        if constexpr (std::is_floating_point_v<T>)
+            return CellValue(double((*row.summary).*field));
+        else
+            return CellValue(std::int64_t((*row.summary).*field));
+    };
+}
+
+// A virtual shadow map's page means (JSON only, left out for the other methods).
+std::function<CellValue(const SummaryRow&)> PageMean(double MethodSummary::*field) {
+    return [field](const SummaryRow& row) -> CellValue {
+        if (!row.summary || std::isnan((*row.summary).*field)) return {};
+        return (*row.summary).*field;
+    };
+}
+
+// The columns of a summary row in `lexel sweep --format json|csv`, in CSV order.
+ColumnTable<SummaryRow> SummaryColumns() {
+    using S = MethodSummary;
+    using R = SummaryRow;
+    const auto text = [](std::string R::*field) {
+        return [field](const R& r) { return CellValue(r.*field); };
+    };
+    return {{"table", "", text(&R::table), kCsvColumn},
+            {"set", "", text(&R::set), kCsvColumn},
+            {"method", "", text(&R::method)},
+            {"mean_misclassified", "pixels", [](const R& r) { return CellValue(r.setMean); }},
+            {"percent_more", "%", [](const R& r) { return CellValue(r.setPercentMore); }},
+            {"percent_lights_beating_reference", "% of lights", Summary(&S::beatingPercent)},
+            {"mean_h", "pixels²/texel²", Summary(&S::meanH)},
+            {"mean_ms", "ms", Summary(&S::meanMs)},
+            {"report_percent_more", "%",
+             [](const R& r) {
+                 return r.reportPercentMore ? CellValue(*r.reportPercentMore) : CellValue{};
+             },
+             kCsvColumn},
+            {"mean_footprint", "frame pixels/texel", Summary(&S::meanFootprint)},
+            {"max_footprint", "frame pixels/texel", Summary(&S::maxFootprint)},
+            {"mean_uncovered_pixels", "pixels", Summary(&S::meanUncovered)},
+            {"empty_partitions", "partitions", Summary(&S::emptyPartitions)},
+            {"median_storage_factor", "texels/pixel", Summary(&S::medianStorage)},
+            {"max_storage_factor", "texels/pixel", Summary(&S::maxStorage)},
+            {"mean_misclassified_ci95", "pixels", Summary(&S::ci95)},
+            {"percent_more_ci95", "%", Summary(&S::pairedPercentCi95)},
+            {"percent_lights_reference_beats", "% of lights", Summary(&S::losingPercent)},
+            {"phases", "phases",
+             [](const R& r) { return r.summary ? CellValue(std::int64_t{r.phases}) : CellValue{}; },
+             kCsvColumn},
+            {"residual_noise", "fraction", Summary(&S::residualNoise), kJsonColumn},
+            {"lights_with_infinite_h", "lights", Summary(&S::infiniteH), kJsonColumn},
+            {"percent_lights_h_ranks_as_misclassified", "% of lights", Summary(&S::hAgreesPercent),
+             kJsonColumn},
+            {"percent_lights_e_ranks_as_misclassified", "% of lights", Summary(&S::eAgreesPercent),
+             kJsonColumn},
+            {"h_share_at_grazing_samples", "fraction", Summary(&S::grazingShare), kJsonColumn},
+            {"maps", "maps", Summary(&S::cascades), kJsonColumn},
+            {"mean_pages_requested", "pages", PageMean(&S::meanPagesRequested), kJsonColumn,
+             JsonNull::kOmit},
+            {"mean_pages_resident", "pages", PageMean(&S::meanPagesResident), kJsonColumn,
+             JsonNull::kOmit},
+            {"mean_pages_dropped", "pages", PageMean(&S::meanPagesDropped), kJsonColumn,
+             JsonNull::kOmit},
+            {"mean_lod_bias", "levels", PageMean(&S::meanLodBias), kJsonColumn, JsonNull::kOmit}};
+}
+
+// The summary rows of a view over all lights (the reference's % is 0).
+std::vector<SummaryRow> SummaryRows(const SweepResult& r, const View& view,
+                                    const std::string& table) {
+    const MethodSummary reference = Summarize(r, view.reference, view.reference);
+    std::vector<SummaryRow> rows;
+    for (std::size_t m : view.methods) {
+        SummaryRow row;
+        row.table = table;
+        row.set = "all";
+        row.method = r.methods[m];
+        row.summary = Summarize(r, m, view.reference);
+        row.setMean = row.summary->meanMisclassified;
+        row.setPercentMore = PercentMore(row.setMean, reference.meanMisclassified);
+        row.phases = r.phases;
+        row.isReference = m == view.reference;
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
 std::string SetLabel(const std::string& set) {
     return set == "all" ? "all lights" : "worst 10% by " + set;
 }
@@ -381,73 +485,70 @@ std::string PairedCell(double pct, double ci95, bool isReference) {
     return (pct >= 0 ? "+" : "") + Fixed(pct, 2) + " ± " + Fixed(ci95, 2) + "%";
 }
 
+// The text columns both summary tables share: the mean with its interval, the % against the
+// reference with its paired interval, and the % of lights won and lost.
+std::vector<TextColumn<SummaryRow>> ComparisonText() {
+    const auto lightsPercent = [](double MethodSummary::*field) {
+        return [field](const SummaryRow& r) {
+            return r.isReference ? std::string("–") : Fixed((*r.summary).*field, 0) + "%";
+        };
+    };
+    return {{"mean\nmisclassified\n(95% CI)",
+             [](const SummaryRow& r) {
+                 return MeanCell(r.summary->meanMisclassified, r.summary->ci95);
+             }},
+            {"% more\nthan ref\n(95% CI)",
+             [](const SummaryRow& r) {
+                 return PairedCell(r.setPercentMore, r.summary->pairedPercentCi95, r.isReference);
+             }},
+            {"% lights\nbeating\nref", lightsPercent(&MethodSummary::beatingPercent)},
+            {"% lights\nref\nbeats", lightsPercent(&MethodSummary::losingPercent)}};
+}
+
+// A share in % to no decimals; "–" where undefined.
+std::string PercentOrDash(const CellValue& value) {
+    const double* x = std::get_if<double>(&value);
+    return !x || std::isnan(*x) ? "–" : Fixed(*x, 0) + "%";
+}
+
 // Mean misclassified, % more than the reference, % of lights beating it, mean h and time.
 TextTable SummaryTable(const SweepResult& r, const View& view) {
-    TextTable table({"method", "mean\nmisclassified\n(95% CI)", "% more\nthan ref\n(95% CI)",
-                     "% lights\nbeating\nref", "% lights\nref\nbeats", "mean h\n(eq. 6)",
-                     "lights\nwith\nh = inf", "h orders\nas errors", "e orders\nas errors",
-                     "grazing\nshare\nof h", "median\nstorage\nfactor", "mean ms\nper light"});
-    const MethodSummary reference = Summarize(r, view.reference, view.reference);
-    for (std::size_t m : view.methods) {
-        const MethodSummary s = Summarize(r, m, view.reference);
-        const bool isReference = m == view.reference;
-        table.AddRow({r.methods[m], MeanCell(s.meanMisclassified, s.ci95),
-                      PairedCell(PercentMore(s.meanMisclassified, reference.meanMisclassified),
-                                 s.pairedPercentCi95, isReference),
-                      isReference ? "–" : Fixed(s.beatingPercent, 0) + "%",
-                      isReference ? "–" : Fixed(s.losingPercent, 0) + "%", Significant(s.meanH, 5),
-                      std::to_string(s.infiniteH),
-                      std::isnan(s.hAgreesPercent) ? "–" : Fixed(s.hAgreesPercent, 0) + "%",
-                      std::isnan(s.eAgreesPercent) ? "–" : Fixed(s.eAgreesPercent, 0) + "%",
-                      Fixed(100.0 * s.grazingShare, 0) + "%", Significant(s.medianStorage, 4),
-                      Fixed(s.meanMs, 3)});
-    }
-    return table;
+    const ColumnTable<SummaryRow> columns = SummaryColumns();
+    std::vector<TextColumn<SummaryRow>> text = {TextColumnOf(columns, "method", "method")};
+    for (TextColumn<SummaryRow>& c : ComparisonText()) text.push_back(std::move(c));
+    const std::vector<TextColumn<SummaryRow>> rest = {
+        TextColumnOf(columns, "mean_h", "mean h\n(eq. 6)", SignificantText(5)),
+        TextColumnOf(columns, "lights_with_infinite_h", "lights\nwith\nh = inf"),
+        TextColumnOf(columns, "percent_lights_h_ranks_as_misclassified", "h orders\nas errors",
+                     PercentOrDash),
+        TextColumnOf(columns, "percent_lights_e_ranks_as_misclassified", "e orders\nas errors",
+                     PercentOrDash),
+        {"grazing\nshare\nof h",
+         [](const SummaryRow& row) { return Fixed(100.0 * row.summary->grazingShare, 0) + "%"; }},
+        TextColumnOf(columns, "median_storage_factor", "median\nstorage\nfactor"),
+        TextColumnOf(columns, "mean_ms", "mean ms\nper light", FixedText(3))};
+    text.insert(text.end(), rest.begin(), rest.end());
+    return TextTableOf(text, SummaryRows(r, view, ""));
 }
 
 // At equal texels: mean misclassified, % more than optimal, % of lights beating it, the
 // footprints σ₁(J⁻¹), uncovered pixels, empty partitions, time. The terminal leaves out the
 // largest σ₁(J⁻¹) (it comes from grazing pixels) to fit kTerminalColumns.
 TextTable EqualTexelTable(const SweepResult& r, const View& view, bool terminal) {
-    std::vector<std::string> header = {"method",
-                                       "maps",
-                                       "mean\nmisclassified\n(95% CI)",
-                                       "% more\nthan ref\n(95% CI)",
-                                       "% lights\nbeating\nref",
-                                       "% lights\nref\nbeats",
-                                       "mean\nσ1(J⁻¹)",
-                                       "max\nσ1(J⁻¹)",
-                                       "uncovered\npixels\n(mean)",
-                                       "empty\nparti-\ntions",
-                                       "median\nstorage\nfactor",
-                                       "mean h\n(eq. 6)",
-                                       "mean ms\nper light"};
-    constexpr std::size_t kMaxFootprintColumn = 7;
-    if (terminal) header.erase(header.begin() + kMaxFootprintColumn);
-    TextTable table(header);
-    const MethodSummary reference = Summarize(r, view.reference, view.reference);
-    for (std::size_t m : view.methods) {
-        const MethodSummary s = Summarize(r, m, view.reference);
-        const bool isReference = m == view.reference;
-        std::vector<std::string> row = {
-            r.methods[m],
-            std::to_string(s.cascades),
-            MeanCell(s.meanMisclassified, s.ci95),
-            PairedCell(PercentMore(s.meanMisclassified, reference.meanMisclassified),
-                       s.pairedPercentCi95, isReference),
-            isReference ? "–" : Fixed(s.beatingPercent, 0) + "%",
-            isReference ? "–" : Fixed(s.losingPercent, 0) + "%",
-            Significant(s.meanFootprint, 4),
-            Significant(s.maxFootprint, 4),
-            Fixed(s.meanUncovered, 1),
-            std::to_string(s.emptyPartitions),
-            Significant(s.medianStorage, 4),
-            Significant(s.meanH, 5),
-            Fixed(s.meanMs, 3)};
-        if (terminal) row.erase(row.begin() + kMaxFootprintColumn);
-        table.AddRow(row);
-    }
-    return table;
+    const ColumnTable<SummaryRow> columns = SummaryColumns();
+    std::vector<TextColumn<SummaryRow>> text = {TextColumnOf(columns, "method", "method"),
+                                                TextColumnOf(columns, "maps", "maps")};
+    for (TextColumn<SummaryRow>& c : ComparisonText()) text.push_back(std::move(c));
+    text.push_back(TextColumnOf(columns, "mean_footprint", "mean\nσ1(J⁻¹)"));
+    if (!terminal) text.push_back(TextColumnOf(columns, "max_footprint", "max\nσ1(J⁻¹)"));
+    const std::vector<TextColumn<SummaryRow>> rest = {
+        TextColumnOf(columns, "mean_uncovered_pixels", "uncovered\npixels\n(mean)", FixedText(1)),
+        TextColumnOf(columns, "empty_partitions", "empty\nparti-\ntions"),
+        TextColumnOf(columns, "median_storage_factor", "median\nstorage\nfactor"),
+        TextColumnOf(columns, "mean_h", "mean h\n(eq. 6)", SignificantText(5)),
+        TextColumnOf(columns, "mean_ms", "mean ms\nper light", FixedText(3))};
+    text.insert(text.end(), rest.begin(), rest.end());
+    return TextTableOf(text, SummaryRows(r, view, ""));
 }
 
 std::string Lights(const SweepResult& r) {
@@ -614,39 +715,11 @@ namespace {
 nlohmann::json ViewJson(const SweepResult& r, const View& view, bool worstRows) {
     nlohmann::json doc;
     doc["reference"] = r.methods[view.reference];
-    const MethodSummary reference = Summarize(r, view.reference, view.reference);
-    for (std::size_t m : view.methods) {
-        const MethodSummary s = Summarize(r, m, view.reference);
-        doc["methods"].push_back(
-            {{"method", r.methods[m]},
-             {"mean_misclassified", s.meanMisclassified},
-             {"mean_misclassified_ci95", FiniteOrNull(s.ci95)},
-             {"percent_more",
-              FiniteOrNull(PercentMore(s.meanMisclassified, reference.meanMisclassified))},
-             {"percent_more_ci95", FiniteOrNull(s.pairedPercentCi95)},
-             {"percent_lights_beating_reference", s.beatingPercent},
-             {"percent_lights_reference_beats", s.losingPercent},
-             {"residual_noise", s.residualNoise},
-             {"mean_h", FiniteOrNull(s.meanH)},
-             {"lights_with_infinite_h", s.infiniteH},
-             {"percent_lights_h_ranks_as_misclassified", FiniteOrNull(s.hAgreesPercent)},
-             {"percent_lights_e_ranks_as_misclassified", FiniteOrNull(s.eAgreesPercent)},
-             {"h_share_at_grazing_samples", s.grazingShare},
-             {"maps", s.cascades},
-             {"mean_footprint", s.meanFootprint},
-             {"max_footprint", FiniteOrNull(s.maxFootprint)},
-             {"mean_uncovered_pixels", s.meanUncovered},
-             {"empty_partitions", s.emptyPartitions},
-             {"median_storage_factor", s.medianStorage},
-             {"max_storage_factor", s.maxStorage},
-             {"mean_ms", s.meanMs}});
-        if (!std::isnan(s.meanPagesRequested)) {
-            nlohmann::json& entry = doc["methods"].back();
-            entry["mean_pages_requested"] = s.meanPagesRequested;
-            entry["mean_pages_resident"] = s.meanPagesResident;
-            entry["mean_pages_dropped"] = s.meanPagesDropped;
-            entry["mean_lod_bias"] = s.meanLodBias;
-        }
+    const ColumnTable<SummaryRow> columns = SummaryColumns();
+    for (const SummaryRow& row : SummaryRows(r, view, "")) {
+        nlohmann::json method;
+        AddJsonColumns(columns, row, method);
+        doc["methods"].push_back(method);
     }
     if (worstRows) {
         doc["worst_10_percent"] = nlohmann::json::array();  // empty under kWorstRowsMinLights
@@ -671,46 +744,50 @@ std::string SweepMarkdown(const SweepResult& r, const ReportTable1& report) {
     return SectionsMarkdown(SweepSections(r, report, false));
 }
 
-std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
-    std::ostringstream out;
-    out << "table,set,method,mean_misclassified,percent_more,percent_lights_beating_reference,"
-           "mean_h,mean_ms,report_percent_more,mean_footprint,max_footprint,"
-           "mean_uncovered_pixels,empty_partitions,median_storage_factor,max_storage_factor,"
-           "mean_misclassified_ci95,percent_more_ci95,percent_lights_reference_beats,phases\n";
-    const auto write = [&](const char* table, const View& view, const std::vector<Row>& rows) {
-        const bool published = r.methods[view.reference] == spatial::kReportOptimalMethod;
-        for (const Row& row : rows) {
-            const ReportTable1::Row* reportRow = report.Find(PublishedName(row.set));
-            for (std::size_t m : view.methods) {
-                const MethodSummary s = Summarize(r, m, view.reference);
-                out << table << ',' << row.set << ',' << r.methods[m] << ','
-                    << CsvNumber(row.mean[m]) << ','
-                    << CsvNumber(PercentMore(row.mean[m], row.mean[view.reference])) << ',';
-                if (row.set == "all")
-                    out << CsvNumber(s.beatingPercent) << ',' << CsvNumber(s.meanH) << ','
-                        << CsvNumber(s.meanMs);
-                else
-                    out << ",,";
-                out << ',';
-                const std::optional<std::size_t> col = report.Column(PublishedName(r.methods[m]));
-                if (published && reportRow && col) out << CsvNumber(reportRow->percentMore[*col]);
-                if (row.set == "all")
-                    out << ',' << CsvNumber(s.meanFootprint) << ',' << CsvNumber(s.maxFootprint)
-                        << ',' << CsvNumber(s.meanUncovered) << ',' << s.emptyPartitions << ','
-                        << CsvNumber(s.medianStorage) << ',' << CsvNumber(s.maxStorage) << ','
-                        << CsvNumber(s.ci95) << ',' << CsvNumber(s.pairedPercentCi95) << ','
-                        << CsvNumber(s.losingPercent) << ',' << r.phases;
-                else
-                    out << ",,,,,,,,,";
-                out << '\n';
-            }
+namespace {
+
+// The CSV rows of one view: per set of `rows` (all lights, then Table 1's worst-10% sets), a row
+// per method, with the report's own % where it has one (against optimal-report only).
+std::vector<SummaryRow> CsvRows(const SweepResult& r, const View& view, const std::string& table,
+                                const std::vector<Row>& sets, const ReportTable1& report) {
+    const bool published = r.methods[view.reference] == spatial::kReportOptimalMethod;
+    std::vector<SummaryRow> out;
+    for (const Row& set : sets) {
+        const ReportTable1::Row* reportRow = report.Find(PublishedName(set.set));
+        for (std::size_t m : view.methods) {
+            SummaryRow row;
+            row.table = table;
+            row.set = set.set;
+            row.method = r.methods[m];
+            row.setMean = set.mean[m];
+            row.setPercentMore = PercentMore(set.mean[m], set.mean[view.reference]);
+            if (set.set == "all") row.summary = Summarize(r, m, view.reference);
+            const std::optional<std::size_t> col = report.Column(PublishedName(r.methods[m]));
+            if (published && reportRow && col) row.reportPercentMore = reportRow->percentMore[*col];
+            row.phases = r.phases;
+            row.isReference = m == view.reference;
+            out.push_back(std::move(row));
         }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string SweepColumnReference() { return ColumnReference(SummaryColumns()); }
+
+std::string SweepCsv(const SweepResult& r, const ReportTable1& report) {
+    const ColumnTable<SummaryRow> columns = SummaryColumns();
+    std::string out = CsvHeader(columns) + '\n';
+    const auto write = [&](const std::vector<SummaryRow>& rows) {
+        for (const SummaryRow& row : rows) out += CsvRow(columns, row) + '\n';
     };
-    if (const auto view = ReportView(r)) write("report", *view, Table1Rows(r, *view));
-    if (const auto view = FairView(r)) write("fair", *view, {{"all", MeanOver(r, AllLights(r))}});
-    if (const auto view = EqualTexelView(r))
-        write("equal-texel", *view, {{"all", MeanOver(r, AllLights(r))}});
-    return out.str();
+    if (const auto view = ReportView(r))
+        write(CsvRows(r, *view, "report", Table1Rows(r, *view), report));
+    const std::vector<Row> all = {{"all", MeanOver(r, AllLights(r))}};
+    if (const auto view = FairView(r)) write(CsvRows(r, *view, "fair", all, report));
+    if (const auto view = EqualTexelView(r)) write(CsvRows(r, *view, "equal-texel", all, report));
+    return out;
 }
 
 nlohmann::json SweepJson(const SweepResult& r) {
@@ -725,51 +802,94 @@ nlohmann::json SweepJson(const SweepResult& r) {
     return doc;
 }
 
-std::string SweepLightsCsv(const SweepResult& r) {
-    std::ostringstream perLight;
-    perLight << "light,kind,x,y,z,receiver_pixels";
-    // The multi-start methods also say which start won.
-    const auto hasWinner = [&](std::size_t m) {
-        return !r.cells.empty() && !r.cells[0][m].winner.empty();
+namespace {
+
+// A row of lights.csv: light `light` of the sweep.
+struct LightRow {
+    const SweepResult* sweep = nullptr;
+    std::size_t light = 0;
+    const SweepCell& Cell(std::size_t method) const { return sweep->cells[light][method]; }
+};
+
+// The getter of method `m`'s SweepCell field.
+template <class T>
+std::function<CellValue(const LightRow&)> CellField(std::size_t m, T SweepCell::*field) {
+    return [m, field](const LightRow& row) -> CellValue {
+        if constexpr (std::is_floating_point_v<T>)
+            return double(row.Cell(m).*field);
+        else if constexpr (std::is_integral_v<T>)
+            return std::int64_t(row.Cell(m).*field);
+        else
+            return row.Cell(m).*field;
     };
-    // The virtual shadow maps also say how many pages they requested, kept and dropped.
-    const auto hasPages = [&](std::size_t m) {
-        return !r.cells.empty() && r.cells[0][m].pagesRequested >= 0;
+}
+
+// The columns of lights.csv: the light, then per method its misclassified pixels (phase 0's), h,
+// e and time; over several phases the mean and standard error; the multi-start methods' winning
+// start; the virtual shadow maps' pages.
+ColumnTable<LightRow> LightColumns(const SweepResult& r) {
+    const auto position = [](int axis) {
+        return [axis](const LightRow& row) {
+            const Light& light = row.sweep->lights[row.light];
+            return CellValue(
+                (light.type == Light::Type::kPoint ? light.position : light.direction)[axis]);
+        };
     };
+    ColumnTable<LightRow> table = {
+        {"light", "",
+         [](const LightRow& row) {
+             const std::vector<std::size_t>& indices = row.sweep->indices;
+             return CellValue(
+                 std::int64_t(row.light < indices.size() ? indices[row.light] : row.light));
+         },
+         kCsvColumn},
+        {"kind", "",
+         [](const LightRow& row) {
+             return CellValue(std::string(row.sweep->lights[row.light].type == Light::Type::kPoint
+                                              ? "point"
+                                              : "directional"));
+         },
+         kCsvColumn},
+        {"x", "scene units", position(0), kCsvColumn},
+        {"y", "scene units", position(1), kCsvColumn},
+        {"z", "scene units", position(2), kCsvColumn},
+        {"receiver_pixels", "pixels",
+         [](const LightRow& row) {
+             return CellValue(std::int64_t(row.sweep->receiverPixels[row.light]));
+         },
+         kCsvColumn}};
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
         const std::string& name = r.methods[m];
-        perLight << ',' << name << "_misclassified," << name << "_h," << name << "_e," << name
-                 << "_ms";
-        if (r.phases > 1)
-            perLight << ',' << name << "_misclassified_mean," << name << "_misclassified_se";
-        if (hasWinner(m)) perLight << ',' << name << "_winner";
-        if (hasPages(m))
-            perLight << ',' << name << "_pages_requested," << name << "_pages_resident," << name
-                     << "_pages_dropped";
-    }
-    perLight << '\n';
-    for (std::size_t l = 0; l < r.lights.size(); ++l) {
-        const Light& light = r.lights[l];
-        const glm::dvec3 v = light.type == Light::Type::kPoint ? light.position : light.direction;
-        perLight << (l < r.indices.size() ? r.indices[l] : l) << ','
-                 << (light.type == Light::Type::kPoint ? "point" : "directional") << ','
-                 << CsvNumber(v.x) << ',' << CsvNumber(v.y) << ',' << CsvNumber(v.z) << ','
-                 << r.receiverPixels[l];
-        for (std::size_t m = 0; m < r.methods.size(); ++m) {
-            const SweepCell& c = r.cells[l][m];
-            perLight << ',' << c.misclassified << ',' << CsvNumber(c.h) << ',' << CsvNumber(c.e)
-                     << ',' << CsvNumber(c.ms);
-            if (r.phases > 1)
-                perLight << ',' << CsvNumber(c.misclassifiedMean) << ','
-                         << CsvNumber(c.misclassifiedError);
-            if (hasWinner(m)) perLight << ',' << c.winner;
-            if (hasPages(m))
-                perLight << ',' << c.pagesRequested << ',' << c.pagesResident << ','
-                         << c.pagesDropped;
+        const auto add = [&](const std::string& suffix, const std::string& unit, auto getter) {
+            table.push_back({name + suffix, unit, getter, kCsvColumn});
+        };
+        add("_misclassified", "pixels", CellField(m, &SweepCell::misclassified));
+        add("_h", "pixels²/texel²", CellField(m, &SweepCell::h));
+        add("_e", "edge energy", CellField(m, &SweepCell::e));
+        add("_ms", "ms", CellField(m, &SweepCell::ms));
+        if (r.phases > 1) {
+            add("_misclassified_mean", "pixels", CellField(m, &SweepCell::misclassifiedMean));
+            add("_misclassified_se", "pixels", CellField(m, &SweepCell::misclassifiedError));
         }
-        perLight << '\n';
+        if (!r.cells.empty() && !r.cells[0][m].winner.empty())
+            add("_winner", "", CellField(m, &SweepCell::winner));
+        if (!r.cells.empty() && r.cells[0][m].pagesRequested >= 0) {
+            add("_pages_requested", "pages", CellField(m, &SweepCell::pagesRequested));
+            add("_pages_resident", "pages", CellField(m, &SweepCell::pagesResident));
+            add("_pages_dropped", "pages", CellField(m, &SweepCell::pagesDropped));
+        }
     }
-    return perLight.str();
+    return table;
+}
+
+}  // namespace
+
+std::string SweepLightsCsv(const SweepResult& r) {
+    const ColumnTable<LightRow> columns = LightColumns(r);
+    std::string csv = CsvHeader(columns) + '\n';
+    for (std::size_t l = 0; l < r.lights.size(); ++l)
+        csv += CsvRow(columns, LightRow{&r, l}) + '\n';
+    return csv;
 }
 
 std::string CascadeStudyCsv(const CascadeCountStudy& study) {

@@ -30,6 +30,8 @@ std::vector<ReportSection> SweepSections(const SweepResult& result, const Report
 std::string SweepTable(const SweepResult& result, const ReportTable1& report);
 std::string SweepMarkdown(const SweepResult& result, const ReportTable1& report);
 std::string SweepCsv(const SweepResult& result, const ReportTable1& report);
+// The columns of a summary row (JSON and CSV) as a Markdown table: cases/README.md's list.
+std::string SweepColumnReference();
 nlohmann::json SweepJson(const SweepResult& result);
 // One row per light: position or direction, receiver pixels, and per method misclassified, h, ms.
 std::string SweepLightsCsv(const SweepResult& result);

@@ -88,7 +88,7 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
         pose.changed = d.changed;
         pose.medianKept = d.medianPrevious;
         pose.medianNew = d.medianCandidate;
-        pose.misclassifiedFresh = o.methods[optimal].misclassified;
+        pose.misclassifiedFresh = o.methods[optimal].metrics.misclassified;
         pose.misclassifiedHysteresis = d.changed
                                            ? pose.misclassifiedFresh
                                            : evaluator->Misclassified(scene.lights[l], d.matrix);

@@ -208,10 +208,10 @@ CaseStorage RunCaseStorage(const spatial::Scene& scene, const std::vector<std::s
             row.method = m.method;
             row.maps = m.pages ? static_cast<int>(m.pages->resident)
                                : std::max<int>(1, static_cast<int>(m.cascades.size()));
-            row.texels = m.texels;
-            row.perspectiveMax = m.perspectiveMax;
-            row.measured = m.storageFactor;
-            row.measuredP99 = m.storageFactorP99;
+            row.texels = m.metrics.texels;
+            row.perspectiveMax = m.metrics.perspectiveMax;
+            row.measured = m.metrics.storageFactor;
+            row.measuredP99 = m.metrics.storageFactorP99;
             const int k = spatial::IsPartitionedMethod(m.method) ? row.maps : 1;
             row.camera = AnalyticStorageOf(m.method, k, out.camera, light.esToLight);
             row.visible = AnalyticStorageOf(m.method, k, out.visible, light.esToLight);

@@ -99,20 +99,20 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
             }
             for (std::size_t m = 0; m < methods.size(); ++m) {
                 const spatial::MethodOutcome& o = outcome.methods[m];
-                r.cells[l][m] = {o.misclassified,
-                                 o.h,
-                                 o.ms,
-                                 o.hGrazing,
+                r.cells[l][m] = {o.metrics.misclassified,
+                                 o.metrics.h,
+                                 o.metrics.ms,
+                                 o.metrics.hGrazing,
                                  o.trace.winner,
-                                 o.footprintMean,
-                                 o.footprintMax,
-                                 o.uncovered,
+                                 o.metrics.footprintMean,
+                                 o.metrics.footprintMax,
+                                 o.metrics.uncovered,
                                  std::max(1, static_cast<int>(o.cascades.size())),
                                  o.emptyPartitions,
-                                 o.storageFactor};
-                r.cells[l][m].misclassifiedMean = o.misclassifiedMean;
-                r.cells[l][m].misclassifiedError = o.misclassifiedError;
-                r.cells[l][m].e = o.e;
+                                 o.metrics.storageFactor};
+                r.cells[l][m].misclassifiedMean = o.metrics.misclassifiedMean;
+                r.cells[l][m].misclassifiedError = o.metrics.misclassifiedError;
+                r.cells[l][m].e = o.metrics.e;
                 if (o.pages) {
                     SweepCell& c = r.cells[l][m];
                     c.cascades = static_cast<int>(o.pages->resident);

@@ -50,15 +50,15 @@ int main(int argc, char** argv) {
                 focused.matrix.p4.y, focused.matrix.p4.z, optimal.matrix.p4.x, optimal.matrix.p4.y,
                 optimal.matrix.p4.z);
     std::printf("misclassified pixels (vs exact shadow rays): focused %lld -> optimal %lld\n",
-                static_cast<long long>(focused.misclassified),
-                static_cast<long long>(optimal.misclassified));
+                static_cast<long long>(focused.metrics.misclassified),
+                static_cast<long long>(optimal.metrics.misclassified));
 
     lexel::notebooks::Claims claims;
     const std::vector<double>& h = optimal.trace.hAfterIteration;
     bool falling = h.size() >= 2;
     for (std::size_t i = 1; i < h.size(); ++i) falling = falling && h[i] <= h[i - 1];
     claims.Check(falling, "h never rises across the %zu iterations", h.size() - 1);
-    claims.Check(h.size() >= 2 && h.back() < h.front() && optimal.h == h.back(),
+    claims.Check(h.size() >= 2 && h.back() < h.front() && optimal.metrics.h == h.back(),
                  "h falls from initial to final: %.6g → %.6g", h.front(), h.back());
     WriteImage(outPath, ShadowMapImage(optimal.buffers.map, o.samples));
     std::printf("wrote %s (the optimized map; red: samples, green: visible points)\n",

@@ -55,8 +55,8 @@ int main(int argc, char** argv) {
     std::vector<Image> maps, errors;
     for (const MethodOutcome& m : o.methods) {
         std::printf("%-14s %14lld %12lld %12.5g %10.3f\n", m.method.c_str(),
-                    static_cast<long long>(m.misclassified), static_cast<long long>(m.falseShadow),
-                    m.h, m.ms);
+                    static_cast<long long>(m.metrics.misclassified),
+                    static_cast<long long>(m.metrics.falseShadow), m.metrics.h, m.metrics.ms);
         maps.push_back(ShadowMapImage(m.buffers.map, o.samples));
         errors.push_back(
             MisclassificationImage(evaluator.frame(), lightSpace, m.buffers.shades, o.truth));
@@ -66,25 +66,26 @@ int main(int argc, char** argv) {
         for (std::size_t k = 0; k < row->size(); ++k) {
             const Image& image = (*row)[k];
             const MethodOutcome& m = o.methods[k];
-            const std::string caption = row == &maps ? m.method + ": h " + std::to_string(int(m.h))
-                                                     : std::to_string(m.misclassified) + " wrong";
+            const std::string caption = row == &maps
+                                            ? m.method + ": h " + std::to_string(int(m.metrics.h))
+                                            : std::to_string(m.metrics.misclassified) + " wrong";
             pictures.push_back({caption, image.width, image.height, image.channels, image.pixels});
         }
 
     const MethodOutcome& optimal = o.methods.back();
     std::printf("misclassified, focused → optimal: %lld → %lld pixels\n",
-                static_cast<long long>(o.methods[1].misclassified),
-                static_cast<long long>(optimal.misclassified));
+                static_cast<long long>(o.methods[1].metrics.misclassified),
+                static_cast<long long>(optimal.metrics.misclassified));
     lexel::notebooks::Claims claims;
     const auto least = [&](auto measure) {
         return std::all_of(o.methods.begin(), o.methods.end() - 1,
                            [&](const MethodOutcome& m) { return measure(optimal) <= measure(m); });
     };
-    claims.Check(least([](const MethodOutcome& m) { return m.h; }),
-                 "optimal has the least h of the six (%.5g)", optimal.h);
-    claims.Check(least([](const MethodOutcome& m) { return m.misclassified; }),
+    claims.Check(least([](const MethodOutcome& m) { return m.metrics.h; }),
+                 "optimal has the least h of the six (%.5g)", optimal.metrics.h);
+    claims.Check(least([](const MethodOutcome& m) { return m.metrics.misclassified; }),
                  "optimal misclassifies the fewest pixels (%lld)",
-                 static_cast<long long>(optimal.misclassified));
+                 static_cast<long long>(optimal.metrics.misclassified));
     const auto figure = outDir / "11_baselines_3d.png";
     lexel::notebooks::WritePictures(figure, pictures, static_cast<int>(maps.size()));
     std::printf("wrote %s\n", figure.c_str());

@@ -44,7 +44,7 @@ std::vector<Cascade> CascadesOf(const MethodOutcome& m) {
 
 void PrintCascades(const MethodOutcome& m) {
     std::printf("%s: %lld misclassified, h %.6g\n", m.method.c_str(),
-                static_cast<long long>(m.misclassified), m.h);
+                static_cast<long long>(m.metrics.misclassified), m.metrics.h);
     for (const CascadeOutcome& c : m.cascades)
         std::printf("  z in [%8.4g, %8.4g)  %3d×%-3d  %6zu points  %7lld pixels  h %.6g\n",
                     c.cascade.zNear, c.cascade.zFar, c.cascade.map.width, c.cascade.map.height,
@@ -68,12 +68,13 @@ int main(int argc, char** argv) {
     const MethodOutcome& sdsm = o.methods[1];
     const MethodOutcome& sdsmOptimal = o.methods[2];
     std::printf("optimal (one %d×%d map): %lld misclassified, h %.6g\n", scene.shadowMap.width,
-                scene.shadowMap.height, static_cast<long long>(optimal.misclassified), optimal.h);
+                scene.shadowMap.height, static_cast<long long>(optimal.metrics.misclassified),
+                optimal.metrics.h);
     PrintCascades(sdsm);
     PrintCascades(sdsmOptimal);
-    std::printf("h, sdsm → sdsm-optimal: %.6g → %.6g; misclassified %lld → %lld\n", sdsm.h,
-                sdsmOptimal.h, static_cast<long long>(sdsm.misclassified),
-                static_cast<long long>(sdsmOptimal.misclassified));
+    std::printf("h, sdsm → sdsm-optimal: %.6g → %.6g; misclassified %lld → %lld\n", sdsm.metrics.h,
+                sdsmOptimal.metrics.h, static_cast<long long>(sdsm.metrics.misclassified),
+                static_cast<long long>(sdsmOptimal.metrics.misclassified));
 
     lexel::notebooks::Claims claims;
     const std::vector<Cascade> cascades = CascadesOf(sdsm);
@@ -90,7 +91,7 @@ int main(int argc, char** argv) {
         texels += sdsm.cascades[i].cascade.map.Count();
     }
     claims.Check(lower, "Algorithm 1 lowers or keeps every cascade's h (total %.6g <= %.6g)",
-                 sdsmOptimal.h, sdsm.h);
+                 sdsmOptimal.metrics.h, sdsm.metrics.h);
     claims.Check(texels <= static_cast<long long>(scene.shadowMap.Count()),
                  "the cascades use %lld of the %lld texels", texels,
                  static_cast<long long>(scene.shadowMap.Count()));
@@ -108,7 +109,7 @@ int main(int argc, char** argv) {
     for (const MethodOutcome* m : {&optimal, &sdsm, &sdsmOptimal}) {
         images.push_back(
             MisclassificationImage(evaluator.frame(), lightSpace, m->buffers.shades, o.truth));
-        captions.push_back(m->method + ": " + std::to_string(m->misclassified) + " wrong");
+        captions.push_back(m->method + ": " + std::to_string(m->metrics.misclassified) + " wrong");
     }
     std::vector<lexel::notebooks::Picture> pictures;
     for (std::size_t k = 0; k < images.size(); ++k)

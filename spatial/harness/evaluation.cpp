@@ -385,7 +385,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
                 OracleMatrix(lightSpace, context, truth, options.phases, &computed.winner);
         else
             computed = ComputeLightMatrix(method, context);
-        m.ms = timer.Ms();
+        m.metrics.ms = timer.Ms();
         if (computed.optimizer) {
             m.trace.hAfterIteration = computed.optimizer->hAfterIteration;
             m.trace.hBeforeRefine = computed.optimizer->hBeforeRefine;
@@ -411,9 +411,9 @@ void MeasureCascadeEnergy(const Camera& camera, std::span<const Cascade> cascade
         const std::size_t c = CascadeFor(cascades, PlanarEyeDepth(camera, ws), ws);
         const double badness =
             SampleBadness(cascades[c].matrix, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s]);
-        m->h += badness;
+        m->metrics.h += badness;
         m->cascades[c].h += badness;
-        if (grazing[s]) m->hGrazing += badness;
+        if (grazing[s]) m->metrics.hGrazing += badness;
     }
 }
 
@@ -438,9 +438,9 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     };
     const std::vector<glm::dvec2> phases = SubTexelPhases(options.phases);
     FrameShading shading = ShadeMethod(setup, computed, phases.front(), vsmAtPhase);
-    m->misclassified = CountWrong(shading.shades, truth, &m->falseShadow);
-    std::vector<std::int64_t> wrong = {m->misclassified};
-    double falseShadows = static_cast<double>(m->falseShadow);
+    m->metrics.misclassified = CountWrong(shading.shades, truth, &m->metrics.falseShadow);
+    std::vector<std::int64_t> wrong = {m->metrics.misclassified};
+    double falseShadows = static_cast<double>(m->metrics.falseShadow);
     for (std::size_t k = 1; k < phases.size(); ++k) {
         std::int64_t falseShadow = 0;
         wrong.push_back(CountWrong(ShadeMethod(setup, computed, phases[k], vsmAtPhase).shades,
@@ -448,35 +448,40 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
         falseShadows += static_cast<double>(falseShadow);
     }
     const PhaseMean mean = MeanOverPhases(wrong);
-    m->misclassifiedMean = mean.mean;
-    m->misclassifiedError = mean.standardError;
-    m->falseShadowMean = falseShadows / static_cast<double>(phases.size());
+    m->metrics.misclassifiedMean = mean.mean;
+    m->metrics.misclassifiedError = mean.standardError;
+    m->metrics.falseShadowMean = falseShadows / static_cast<double>(phases.size());
     const Footprints footprints =
         MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
-    m->footprintMean = footprints.mean;
-    m->footprintMax = footprints.max;
-    m->uncovered = footprints.uncovered;
-    m->perspectiveMax = footprints.perspectiveMax;
-    m->perspectiveP99 = footprints.perspectiveP99;
+    m->metrics.footprintMean = footprints.mean;
+    m->metrics.footprintMax = footprints.max;
+    m->metrics.uncovered = footprints.uncovered;
+    m->metrics.perspectiveMax = footprints.perspectiveMax;
+    m->metrics.perspectiveP99 = footprints.perspectiveP99;
     for (const ShadowMap& map : shading.maps)
-        m->texels += static_cast<std::int64_t>(map.resolution.width) * map.resolution.height;
+        m->metrics.texels +=
+            static_cast<std::int64_t>(map.resolution.width) * map.resolution.height;
     const std::int64_t framePixels =
         static_cast<std::int64_t>(scene_.camera.resolution.width) * scene_.camera.resolution.height;
-    m->storageFactor = EffectiveStorageFactor(m->texels, m->perspectiveMax, framePixels);
-    m->storageFactorP99 = EffectiveStorageFactor(m->texels, m->perspectiveP99, framePixels);
+    m->metrics.storageFactor =
+        EffectiveStorageFactor(m->metrics.texels, m->metrics.perspectiveMax, framePixels);
+    m->metrics.storageFactorP99 =
+        EffectiveStorageFactor(m->metrics.texels, m->metrics.perspectiveP99, framePixels);
     if (const auto& vsm = computed.virtualMap) {
-        m->h = PageEnergy(*vsm, scene_.camera, lightSpace, samples, grazing, &m->hGrazing);
+        m->metrics.h =
+            PageEnergy(*vsm, scene_.camera, lightSpace, samples, grazing, &m->metrics.hGrazing);
         m->pages =
             PageOutcome{vsm->requested,        static_cast<std::int64_t>(vsm->resident.size()),
                         vsm->dropped,          vsm->layout.pageTexels,
                         vsm->layout.poolPages, vsm->lodBias};
     } else if (cascades.empty()) {
         const ShadowMap& map = shading.maps.front();
-        m->h = computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
-        if (!computed.warp) m->e = Energy(m->matrix, samples, kEdgeEnergy);
+        m->metrics.h =
+            computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
+        if (!computed.warp) m->metrics.e = Energy(m->matrix, samples, kEdgeEnergy);
         for (std::size_t s = 0; s < grazing.size(); ++s)
             if (grazing[s])
-                m->hGrazing +=
+                m->metrics.hGrazing +=
                     MapSampleBadness(map, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s],
                                      Badness::kFrobeniusInverseSquared);
     } else {
@@ -488,8 +493,8 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
             if (shading.shades[i] == Shade::kLit || shading.shades[i] == Shade::kShadowed)
                 ++m->cascades[shading.cascade[i]].pixels;
         MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
-        m->e = PartitionedEnergy(cascades, samples, context.baseline.wsRelevant, scene_.camera,
-                                 kEdgeEnergy);
+        m->metrics.e = PartitionedEnergy(cascades, samples, context.baseline.wsRelevant,
+                                         scene_.camera, kEdgeEnergy);
     }
     if (keepBuffers && computed.virtualMap) {
         m->buffers.shades = std::move(shading.shades);

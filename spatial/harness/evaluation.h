@@ -107,11 +107,9 @@ struct MethodBuffers {
     std::vector<std::uint8_t> uncoveredPixels;  // vsm*: 1 where uncovered
 };
 
-// One method's result for one light: its matrix, its measured metrics (the fields below, what
-// every table reports), the optimizer's trace and, when kept, its buffers.
-struct MethodOutcome {
-    std::string method;
-    LightMatrix matrix;
+// What every table reports of one method on one light: its time, its measured errors against
+// the truth, its energies and footprints, and its texels.
+struct MethodMetrics {
     double ms = 0.0;                 // wall time to compute the matrix
     std::int64_t misclassified = 0;  // counted pixels whose decision differs from the truth
     std::int64_t falseShadow = 0;    // ... of which the method shadows a lit pixel
@@ -139,6 +137,14 @@ struct MethodOutcome {
     // texels · perspectiveMax² / frame pixels, Lloyd's S̄ measured (EffectiveStorageFactor).
     // storageFactorP99 the same with perspectiveP99.
     double storageFactor = 0.0, storageFactorP99 = 0.0;
+};
+
+// One method's result for one light: its matrix, its measured metrics (what every table
+// reports), its cascades or pages, the optimizer's trace and, when kept, its buffers.
+struct MethodOutcome {
+    std::string method;
+    LightMatrix matrix;
+    MethodMetrics metrics;
     std::vector<CascadeOutcome> cascades;  // partitioned methods: per cascade
     int emptyPartitions = 0;               // ... those serving no readback point
     std::optional<PageOutcome> pages;      // virtual shadow maps (vsm*): their pages

@@ -66,8 +66,8 @@ TEST(SpatialImages, MarkUncoveredPixelsWhereTheEvaluationCountsThem) {
         }
         std::int64_t marked = 0;
         for (std::uint8_t u : uncovered) marked += u;
-        EXPECT_EQ(marked, m.uncovered) << m.method;
-        methodsWithUncovered += m.uncovered > 0;
+        EXPECT_EQ(marked, m.metrics.uncovered) << m.method;
+        methodsWithUncovered += m.metrics.uncovered > 0;
         const spatial::Image errors = spatial::MisclassificationImage(
             evaluator.frame(), lightSpace, m.buffers.shades, o.truth, uncovered);
         const spatial::Image frame =
@@ -77,8 +77,8 @@ TEST(SpatialImages, MarkUncoveredPixelsWhereTheEvaluationCountsThem) {
             amberErrors += Is(errors, i, spatial::kUncoveredColour);
             amberFrame += Is(frame, i, spatial::kUncoveredColour);
         }
-        EXPECT_EQ(amberErrors, m.uncovered) << m.method;
-        EXPECT_EQ(amberFrame, m.uncovered) << m.method;
+        EXPECT_EQ(amberErrors, m.metrics.uncovered) << m.method;
+        EXPECT_EQ(amberFrame, m.metrics.uncovered) << m.method;
     }
     // focused-tight (169 here), plane-optimal, pssm, ... leave pixels uncovered.
     EXPECT_GE(methodsWithUncovered, 5);

@@ -31,8 +31,8 @@ int main(int argc, char** argv) {
     std::printf("%-14s %13s %10s %16s\n", "method", "misclassified", "uncovered", "h");
     for (const MethodOutcome& m : o.methods)
         std::printf("%-14s %13lld %10lld %16.10g\n", m.method.c_str(),
-                    static_cast<long long>(m.misclassified), static_cast<long long>(m.uncovered),
-                    m.h);
+                    static_cast<long long>(m.metrics.misclassified),
+                    static_cast<long long>(m.metrics.uncovered), m.metrics.h);
 
     const MethodOutcome &tight = o.methods[0], &mine = o.methods[1], &wide = o.methods[2];
     const double margin = BaselineContext{}.margin;
@@ -40,11 +40,12 @@ int main(int argc, char** argv) {
     const bool registered = IsSpatialMethod("my-focused") &&
                             SpatialMethodNames().back() == "focused-wide" &&
                             !SpatialMethodDescription("focused-wide").empty();
-    const bool same = mine.misclassified == tight.misclassified && mine.h == tight.h &&
-                      mine.uncovered == tight.uncovered;
-    const bool scaled = std::abs(wide.h / (s * s * tight.h) - 1.0) < 1e-9;
+    const bool same = mine.metrics.misclassified == tight.metrics.misclassified &&
+                      mine.metrics.h == tight.metrics.h &&
+                      mine.metrics.uncovered == tight.metrics.uncovered;
+    const bool scaled = std::abs(wide.metrics.h / (s * s * tight.metrics.h) - 1.0) < 1e-9;
     std::printf("my-focused is focused-tight: %s\n", same ? "yes" : "NO");
-    std::printf("focused-wide h / focused-tight h = %.12f, s^2 = %.12f: %s\n", wide.h / tight.h,
-                s * s, scaled ? "yes" : "NO");
+    std::printf("focused-wide h / focused-tight h = %.12f, s^2 = %.12f: %s\n",
+                wide.metrics.h / tight.metrics.h, s * s, scaled ? "yes" : "NO");
     return registered && same && scaled && o.receiverPixels > 0 ? 0 : 1;
 }

@@ -98,7 +98,7 @@ TEST(SampleBudget, TheCasesBudgetReachesOptimal) {
     EXPECT_EQ(optimal.matrix.p4, byHand.result.matrix.p4) << Describe(light);
     EXPECT_EQ(optimal.matrix.p1, byHand.result.matrix.p1) << Describe(light);
     EXPECT_EQ(o.samples.lsX.size(), all.samples.lsX.size());
-    EXPECT_EQ(optimal.h, Energy(optimal.matrix, o.samples));
+    EXPECT_EQ(optimal.metrics.h, Energy(optimal.matrix, o.samples));
 }
 
 TEST(PlaneOptimal, FallbackKeepsEveryVisiblePointATexelAboveTheHorizon) {

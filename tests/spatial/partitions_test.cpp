@@ -309,11 +309,11 @@ TEST(Partitions, AnEmptyPartitionIsReportedNotNaN) {
     }
     EXPECT_GT(empty, 0);
     EXPECT_EQ(m.emptyPartitions, empty);
-    EXPECT_TRUE(std::isfinite(m.h));
-    EXPECT_TRUE(std::isfinite(m.footprintMean));
-    EXPECT_TRUE(std::isfinite(m.footprintMax));
-    EXPECT_GE(m.misclassified, 0);
-    EXPECT_LE(m.misclassified, o.receiverPixels);
+    EXPECT_TRUE(std::isfinite(m.metrics.h));
+    EXPECT_TRUE(std::isfinite(m.metrics.footprintMean));
+    EXPECT_TRUE(std::isfinite(m.metrics.footprintMax));
+    EXPECT_GE(m.metrics.misclassified, 0);
+    EXPECT_LE(m.metrics.misclassified, o.receiverPixels);
 }
 
 }  // namespace

@@ -51,16 +51,17 @@ struct OptimalAgreement {
         const double hGpuOnCpu = Energy(go.matrix, c.samples);
         const double angle = AngleDeg(go.matrix.p4, co.matrix.p4);
         worstAngle = std::max(worstAngle, angle);
-        worstEnergy = std::max(worstEnergy, hGpuOnCpu / co.h - 1.0);
-        EXPECT_LE(hGpuOnCpu, 1.01 * co.h) << co.method << ", light " << light;
-        EXPECT_LE(std::abs(go.misclassified - co.misclassified), bound)
-            << co.method << ", light " << light << ": misclassifies " << go.misclassified
-            << " (gl) and " << co.misclassified << " (cpu) of " << c.receiverPixels;
-        sumCpu += co.misclassified;
-        sumGpu += go.misclassified;
-        std::cout << "[   INFO   ] light " << light << ", " << co.method << ": " << co.misclassified
-                  << " / " << go.misclassified << " (cpu / gl), p4 " << angle << "°, h(gl)/h(cpu) "
-                  << hGpuOnCpu / co.h << '\n';
+        worstEnergy = std::max(worstEnergy, hGpuOnCpu / co.metrics.h - 1.0);
+        EXPECT_LE(hGpuOnCpu, 1.01 * co.metrics.h) << co.method << ", light " << light;
+        EXPECT_LE(std::abs(go.metrics.misclassified - co.metrics.misclassified), bound)
+            << co.method << ", light " << light << ": misclassifies " << go.metrics.misclassified
+            << " (gl) and " << co.metrics.misclassified << " (cpu) of " << c.receiverPixels;
+        sumCpu += co.metrics.misclassified;
+        sumGpu += go.metrics.misclassified;
+        std::cout << "[   INFO   ] light " << light << ", " << co.method << ": "
+                  << co.metrics.misclassified << " / " << go.metrics.misclassified
+                  << " (cpu / gl), p4 " << angle << "°, h(gl)/h(cpu) " << hGpuOnCpu / co.metrics.h
+                  << '\n';
     }
     void Summary(const char* method, std::size_t lights) const {
         std::cout << "[   INFO   ] " << method << ": worst p4 angle " << worstAngle
@@ -84,9 +85,9 @@ TEST_F(GlTest, EvaluationAgreesWithTheCpuBackendPerLight) {
         const LightOutcome g = gpuEval.Evaluate(lights[l], options);
         const MethodOutcome &cf = c.methods[0], &gf = g.methods[0];
         const std::int64_t bound = std::max<std::int64_t>(5, c.receiverPixels / 2000);
-        EXPECT_LE(std::abs(gf.misclassified - cf.misclassified), bound)
-            << "light " << l << ": focused misclassifies " << gf.misclassified << " (gl) and "
-            << cf.misclassified << " (cpu) of " << c.receiverPixels;
+        EXPECT_LE(std::abs(gf.metrics.misclassified - cf.metrics.misclassified), bound)
+            << "light " << l << ": focused misclassifies " << gf.metrics.misclassified
+            << " (gl) and " << cf.metrics.misclassified << " (cpu) of " << c.receiverPixels;
         EXPECT_LT(AngleDeg(gf.matrix.p4, cf.matrix.p4), 1e-6) << "light " << l;
         std::vector<std::uint32_t> common;
         std::set_intersection(c.samples.pixel.begin(), c.samples.pixel.end(),
@@ -110,8 +111,9 @@ TEST_F(GlTest, EvaluationAgreesWithTheCpuBackendPerLight) {
         }
         EXPECT_GE(sameNormal + compared / 50, compared) << "light " << l;
         std::cout << "[   INFO   ] light " << l << ": counted " << c.receiverPixels << ", focused "
-                  << cf.misclassified << " / " << gf.misclassified << " (cpu / gl), samples "
-                  << c.samples.lsX.size() << " / " << g.samples.lsX.size() << '\n';
+                  << cf.metrics.misclassified << " / " << gf.metrics.misclassified
+                  << " (cpu / gl), samples " << c.samples.lsX.size() << " / "
+                  << g.samples.lsX.size() << '\n';
         report.Check(l, c, g, 1, bound);
         multiStart.Check(l, c, g, 2, bound);
     }

@@ -163,13 +163,13 @@ void CompareLight(const std::string& where, const Evaluator& cpuEval, const Ligh
     for (std::size_t m = 0; m < c.methods.size(); ++m) {
         const MethodOutcome &co = c.methods[m], &go = g.methods[m];
         if (co.method != "optimal-report") {
-            ExpectCounts(where, co.method, co.misclassified, go.misclassified, co.uncovered,
-                         go.uncovered, bound, worst);
+            ExpectCounts(where, co.method, co.metrics.misclassified, go.metrics.misclassified,
+                         co.metrics.uncovered, go.metrics.uncovered, bound, worst);
             continue;
         }
         ExpectCounts(where, co.method + " (GL's matrix on both)",
-                     cpuEval.Misclassified(c.light, go.matrix), go.misclassified,
-                     Uncovered(cpuEval, c.light, go.matrix), go.uncovered, bound, worst);
+                     cpuEval.Misclassified(c.light, go.matrix), go.metrics.misclassified,
+                     Uncovered(cpuEval, c.light, go.matrix), go.metrics.uncovered, bound, worst);
     }
 }
 

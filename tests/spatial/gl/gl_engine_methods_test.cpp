@@ -38,19 +38,20 @@ TEST_F(GlTest, TsmAndVirtualShadowMapsAgreeWithTheCpuBackend) {
         for (std::size_t m = 0; m < options.methods.size(); ++m) {
             const MethodOutcome &co = c.methods[m], &go = g.methods[m];
             const std::string what = co.method + ", " + cases::LightLabel(lights[l]);
-            EXPECT_LE(std::abs(go.misclassified - co.misclassified), bound)
-                << what << ": " << go.misclassified << " (gl) and " << co.misclassified
-                << " (cpu) of " << c.receiverPixels;
-            EXPECT_LE(std::abs(go.uncovered - co.uncovered), bound) << what;
-            std::cout << "[   INFO   ] " << what << ": misclassified " << co.misclassified << " / "
-                      << go.misclassified << " (cpu / gl)";
+            EXPECT_LE(std::abs(go.metrics.misclassified - co.metrics.misclassified), bound)
+                << what << ": " << go.metrics.misclassified << " (gl) and "
+                << co.metrics.misclassified << " (cpu) of " << c.receiverPixels;
+            EXPECT_LE(std::abs(go.metrics.uncovered - co.metrics.uncovered), bound) << what;
+            std::cout << "[   INFO   ] " << what << ": misclassified " << co.metrics.misclassified
+                      << " / " << go.metrics.misclassified << " (cpu / gl)";
             if (co.pages) {
                 ASSERT_TRUE(go.pages) << what;
                 const double tolerance = 0.02 * static_cast<double>(co.pages->requested) + 1.0;
                 EXPECT_LE(std::abs(go.pages->requested - co.pages->requested), tolerance) << what;
                 EXPECT_LE(std::abs(go.pages->resident - co.pages->resident), tolerance) << what;
                 EXPECT_LE(go.pages->resident, go.pages->poolPages) << what;
-                EXPECT_LE(go.texels, static_cast<std::int64_t>(scene.shadowMap.Count())) << what;
+                EXPECT_LE(go.metrics.texels, static_cast<std::int64_t>(scene.shadowMap.Count()))
+                    << what;
                 std::cout << ", pages requested " << co.pages->requested << " / "
                           << go.pages->requested << ", resident " << co.pages->resident << " / "
                           << go.pages->resident;

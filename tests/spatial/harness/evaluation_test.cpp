@@ -65,8 +65,8 @@ TEST(Evaluation, EveryMethodCoversEveryVisibleSampleAndIsDeterministic) {
         ASSERT_GT(a.samples.lsX.size(), 0u) << "light " << l;
         for (std::size_t m = 0; m < a.methods.size(); ++m) {
             const MethodOutcome& mo = a.methods[m];
-            EXPECT_EQ(mo.misclassified, b.methods[m].misclassified) << mo.method;
-            EXPECT_TRUE(std::isfinite(mo.h)) << mo.method << " light " << l;
+            EXPECT_EQ(mo.metrics.misclassified, b.methods[m].metrics.misclassified) << mo.method;
+            EXPECT_TRUE(std::isfinite(mo.metrics.h)) << mo.method << " light " << l;
             // A partitioned method's cascades cover the points they serve (partitions_test).
             if (IsPartitionedMethod(mo.method)) continue;
             for (const glm::dvec3& lsX : a.samples.lsRelevant) {

@@ -72,7 +72,7 @@ TEST(OracleMethod, MeasuresAtMostEveryFairSingleMap) {
     ASSERT_EQ(oracle.method, kOracleMethod);
     EXPECT_FALSE(oracle.trace.winner.empty());
     for (const MethodOutcome& m : o.methods)
-        EXPECT_LE(oracle.misclassifiedMean, m.misclassifiedMean) << m.method;
+        EXPECT_LE(oracle.metrics.misclassifiedMean, m.metrics.misclassifiedMean) << m.method;
 }
 
 }  // namespace

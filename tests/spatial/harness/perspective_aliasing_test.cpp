@@ -130,7 +130,7 @@ TEST(Evaluation, StorageFactorIsTheWorstPerspectiveAliasingOfTheShadedPixels) {
     const std::int64_t framePixels =
         static_cast<std::int64_t>(scene.camera.resolution.width) * scene.camera.resolution.height;
     const MethodOutcome& focused = o.methods[0];
-    ASSERT_EQ(focused.uncovered, 0);
+    ASSERT_EQ(focused.metrics.uncovered, 0);
     double worst = 0.0;
     for (std::size_t i = 0; i < focused.buffers.shades.size(); ++i)
         if (focused.buffers.shades[i] == Shade::kLit ||
@@ -138,13 +138,14 @@ TEST(Evaluation, StorageFactorIsTheWorstPerspectiveAliasingOfTheShadedPixels) {
             worst = std::max(
                 worst, PerspectiveAliasing(scene.camera, lightSpace, focused.buffers.map.matrix,
                                            evaluator.frame().wsPosition[i]));
-    EXPECT_EQ(focused.perspectiveMax, worst);
+    EXPECT_EQ(focused.metrics.perspectiveMax, worst);
     for (const MethodOutcome& m : o.methods) {
-        EXPECT_EQ(m.texels, scene.shadowMap.width * scene.shadowMap.height) << m.method;
-        EXPECT_GT(m.perspectiveMax, 0.0) << m.method;
-        EXPECT_LE(m.perspectiveP99, m.perspectiveMax) << m.method;
-        EXPECT_DOUBLE_EQ(m.storageFactor, static_cast<double>(m.texels) * m.perspectiveMax *
-                                              m.perspectiveMax / static_cast<double>(framePixels))
+        EXPECT_EQ(m.metrics.texels, scene.shadowMap.width * scene.shadowMap.height) << m.method;
+        EXPECT_GT(m.metrics.perspectiveMax, 0.0) << m.method;
+        EXPECT_LE(m.metrics.perspectiveP99, m.metrics.perspectiveMax) << m.method;
+        EXPECT_DOUBLE_EQ(m.metrics.storageFactor,
+                         static_cast<double>(m.metrics.texels) * m.metrics.perspectiveMax *
+                             m.metrics.perspectiveMax / static_cast<double>(framePixels))
             << m.method;
     }
 }

@@ -150,9 +150,9 @@ inline CaseCounts EvaluateCase(const nlohmann::json& doc, const BackendFactory& 
         c.truthShadowed.push_back(o.truthShadowed);
         c.samplePixels.push_back(o.samples.pixel);
         for (const MethodOutcome& m : o.methods) {
-            c.misclassified.push_back(m.misclassified);
-            c.uncovered.push_back(m.uncovered);
-            c.h.push_back(m.h);
+            c.misclassified.push_back(m.metrics.misclassified);
+            c.uncovered.push_back(m.metrics.uncovered);
+            c.h.push_back(m.metrics.h);
         }
     }
     return c;

@@ -85,18 +85,18 @@ TEST(EvaluatorPhases, SingleMapMeanIsTheMeanOfShiftedMatrices) {
         EXPECT_EQ(b.phases, 5);
         for (std::size_t m = 0; m < a.methods.size(); ++m) {
             const MethodOutcome& mo = b.methods[m];
-            EXPECT_EQ(a.methods[m].misclassified, mo.misclassified) << mo.method;
-            EXPECT_EQ(a.methods[m].misclassifiedMean,
-                      static_cast<double>(a.methods[m].misclassified));
-            EXPECT_EQ(a.methods[m].misclassifiedError, 0.0);
+            EXPECT_EQ(a.methods[m].metrics.misclassified, mo.metrics.misclassified) << mo.method;
+            EXPECT_EQ(a.methods[m].metrics.misclassifiedMean,
+                      static_cast<double>(a.methods[m].metrics.misclassified));
+            EXPECT_EQ(a.methods[m].metrics.misclassifiedError, 0.0);
             std::vector<std::int64_t> counts;
             for (const glm::dvec2& d : phases)
                 counts.push_back(evaluator.Misclassified(light, mo.matrix.Shifted(d)));
             const PhaseMean expected = MeanOverPhases(counts);
-            EXPECT_EQ(mo.misclassifiedMean, expected.mean) << mo.method;
-            EXPECT_EQ(mo.misclassifiedError, expected.standardError) << mo.method;
+            EXPECT_EQ(mo.metrics.misclassifiedMean, expected.mean) << mo.method;
+            EXPECT_EQ(mo.metrics.misclassifiedError, expected.standardError) << mo.method;
             // The phases move the count (an edge quantized to texels moves with them).
-            EXPECT_GT(mo.misclassifiedError, 0.0) << mo.method;
+            EXPECT_GT(mo.metrics.misclassifiedError, 0.0) << mo.method;
         }
     }
 }
@@ -115,10 +115,10 @@ TEST(EvaluatorPhases, CascadesPagesAndWarpsMoveWithThePhase) {
     const LightOutcome b = evaluator.Evaluate(light, phased);
     for (std::size_t m = 0; m < a.methods.size(); ++m) {
         const MethodOutcome& mo = b.methods[m];
-        EXPECT_EQ(a.methods[m].misclassified, mo.misclassified) << mo.method;
-        EXPECT_GT(mo.misclassifiedError, 0.0) << mo.method;
-        EXPECT_GT(mo.misclassifiedMean, 0.0) << mo.method;
-        EXPECT_LE(mo.falseShadowMean, mo.misclassifiedMean) << mo.method;
+        EXPECT_EQ(a.methods[m].metrics.misclassified, mo.metrics.misclassified) << mo.method;
+        EXPECT_GT(mo.metrics.misclassifiedError, 0.0) << mo.method;
+        EXPECT_GT(mo.metrics.misclassifiedMean, 0.0) << mo.method;
+        EXPECT_LE(mo.metrics.falseShadowMean, mo.metrics.misclassifiedMean) << mo.method;
     }
 }
 

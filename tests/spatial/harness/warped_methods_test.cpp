@@ -89,18 +89,18 @@ TEST(LogPsm, MeasuredStorageFactorOnABoxSceneIsWithinTenPercentOfItsAnalyticValu
                 1e-12 * OptimalStorageFactor(visible));
     const double analytic = OverheadLogPsmEffectiveStorage(visible, BaselineContext{}.margin);
     const MethodOutcome& log = o.methods[0];
-    EXPECT_LE(log.texels, scene.shadowMap.width * scene.shadowMap.height);
-    EXPECT_GE(log.texels, scene.shadowMap.width * scene.shadowMap.height - 256);
-    EXPECT_NEAR(log.storageFactor, analytic, 0.10 * analytic)
+    EXPECT_LE(log.metrics.texels, scene.shadowMap.width * scene.shadowMap.height);
+    EXPECT_GE(log.metrics.texels, scene.shadowMap.width * scene.shadowMap.height - 256);
+    EXPECT_NEAR(log.metrics.storageFactor, analytic, 0.10 * analytic)
         << "visible depths " << visible.nearPlane << " to " << visible.farPlane;
     // Both other single maps need more: LiSPSM's η = 0 warp, and no warp.
-    EXPECT_GT(o.methods[1].storageFactor, 2.0 * log.storageFactor);
-    EXPECT_GT(o.methods[2].storageFactor, 20.0 * log.storageFactor);
-    std::cout << "[ logpsm   ] box, overhead: measured " << log.storageFactor << ", analytic "
-              << analytic << " (S̄_opt " << OptimalStorageFactor(visible) << ", visible depths "
-              << visible.nearPlane << " to " << visible.farPlane << "); lispsm-tight "
-              << o.methods[1].storageFactor << ", focused-tight " << o.methods[2].storageFactor
-              << "\n";
+    EXPECT_GT(o.methods[1].metrics.storageFactor, 2.0 * log.metrics.storageFactor);
+    EXPECT_GT(o.methods[2].metrics.storageFactor, 20.0 * log.metrics.storageFactor);
+    std::cout << "[ logpsm   ] box, overhead: measured " << log.metrics.storageFactor
+              << ", analytic " << analytic << " (S̄_opt " << OptimalStorageFactor(visible)
+              << ", visible depths " << visible.nearPlane << " to " << visible.farPlane
+              << "); lispsm-tight " << o.methods[1].metrics.storageFactor << ", focused-tight "
+              << o.methods[2].metrics.storageFactor << "\n";
 }
 
 TEST(LogPsm, OverheadLightSplitsTheTexelsAsTheOptimalParameterization) {
@@ -158,19 +158,20 @@ TEST(WarpedMethods, GetTheSingleMapsTexelsAndCoverWhatTheirBaseCovers) {
             ASSERT_TRUE(w.buffers.map.warp);
             EXPECT_FALSE(w.buffers.map.warp->IsLinear());
             if (w.method == "logpsm") {
-                EXPECT_LE(w.texels, texels);
-                EXPECT_GE(w.texels, texels - std::max(w.buffers.map.resolution.width,
-                                                      w.buffers.map.resolution.height));
+                EXPECT_LE(w.metrics.texels, texels);
+                EXPECT_GE(w.metrics.texels, texels - std::max(w.buffers.map.resolution.width,
+                                                              w.buffers.map.resolution.height));
                 // The same warp frame fitted to the same visible points (in log coordinates).
-                EXPECT_LE(w.uncovered,
-                          std::max<std::int64_t>(2 * lispsm.uncovered, o.receiverPixels / 1000));
+                EXPECT_LE(w.metrics.uncovered, std::max<std::int64_t>(2 * lispsm.metrics.uncovered,
+                                                                      o.receiverPixels / 1000));
             } else {
-                EXPECT_EQ(w.texels, texels);
-                EXPECT_EQ(w.uncovered, focused.uncovered);  // [0, W] onto [0, W]: the same cover
+                EXPECT_EQ(w.metrics.texels, texels);
+                EXPECT_EQ(w.metrics.uncovered,
+                          focused.metrics.uncovered);  // [0, W] onto [0, W]: the same cover
                 EXPECT_EQ(w.matrix.p4, focused.matrix.p4);
             }
-            EXPECT_TRUE(std::isfinite(w.h));
-            EXPECT_GT(w.perspectiveMax, 0.0);
+            EXPECT_TRUE(std::isfinite(w.metrics.h));
+            EXPECT_GT(w.metrics.perspectiveMax, 0.0);
             EXPECT_EQ(w.buffers.shades.size(), focused.buffers.shades.size());
         }
     }
