@@ -33,6 +33,12 @@ COMMANDS = [
     ["sweep", str(CASES / "spatial/walkthrough.json"), "--lights", "6", "--method", "optimal",
      "--method", "sdsm", "--method", "focused-tight", "--cascades", "2",
      "--out", "{out}/sweep_walkthrough"],
+    ["run", str(CASES / "spatial/walkthrough.json"), "--no-map-truth", "--phases", "2",
+     "--method", "optimal", "--method", "vsm", "--method", "sdsm", "--format", "csv",
+     "--out", "{out}/run_phased"],
+    ["sweep", str(CASES / "spatial/courtyard.json"), "--lights", "4", "--phases", "2",
+     "--method", "optimal", "--method", "vsm", "--method", "lispsm-tight", "--format", "json",
+     "--out", "{out}/sweep_phased"],
     ["storage", "--out", "{out}/storage"],
     ["storage", "--case", str(CASES / "spatial/meshes.json"), "--out", "{out}/storage_case"],
 ]
