@@ -7,8 +7,8 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "lexel/solvers/footprint_metrics.h"
 #include "lexel/solvers/lagrange_allocation.h"
+#include "lexel/spatial/perspective_aliasing.h"
 
 namespace lexel::spatial {
 
@@ -65,10 +65,9 @@ ImportanceMap RtwImportance(const Readback& readback, const Camera& camera,
     std::vector<std::uint8_t> edge(rb.Count(), 0);
     for (std::uint32_t p : edgePixels)
         if (p < edge.size()) edge[p] = 1;
-    // Frame pixels per readback pixel along each axis: the readback's ∂W/∂x over these is the
-    // frame's.
-    const double sx = static_cast<double>(frame.width) / rb.width;
-    const double sy = static_cast<double>(frame.height) / rb.height;
+    // The perspective aliasing is measured against the pixels of a `frame`-sized image.
+    Camera frameCamera = camera;
+    frameCamera.resolution = frame;
     const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
     for (std::size_t i = 0; i < buffer.triangle.size(); ++i) {
         if (!buffer.Covered(i)) continue;
@@ -79,12 +78,14 @@ ImportanceMap RtwImportance(const Readback& readback, const Camera& camera,
         }
         const glm::dvec3 lsX = lightSpace.ToLight(buffer.wsPosition[i]);
         if (!InFront(base.p4, lsX)) continue;
+        // The texels the pixel asks for: base texels' width over the frame pixel's there,
+        // without the receiver's orientation (projection aliasing, which no warp of the map
+        // can serve and which is unbounded where the pixel's plane nears its light ray).
+        const double rate =
+            PerspectiveAliasing(frameCamera, lightSpace, base, buffer.wsPosition[i]);
+        if (!std::isfinite(rate)) continue;  // the map is singular there
+        // Where the pixel lands in the map: the parallelogram its readback pixel covers.
         const Eigen::Matrix2d perReadback = BaseJacobian(base, lsX, lsFromWs * dx1, lsFromWs * dx2);
-        Eigen::Matrix2d perFrame = perReadback;
-        perFrame.col(0) /= sx;
-        perFrame.col(1) /= sy;
-        const double rate = JacobianBadness(perFrame, Badness::kLargestSingularValue);
-        if (!std::isfinite(rate)) continue;  // the pixel's plane contains its light ray
         const double value = rate * (edge[i] ? 1.0 + options.edgeWeight : 1.0);
         const double hx = 0.5 * (std::abs(perReadback(0, 0)) + std::abs(perReadback(0, 1)));
         const double hy = 0.5 * (std::abs(perReadback(1, 0)) + std::abs(perReadback(1, 1)));

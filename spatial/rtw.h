@@ -7,13 +7,18 @@
 //   1. importance map — per texel of a base (focused) map, the largest sampling rate the frame
 //      pixels landing there ask for. Rosen's backward analysis projects each output pixel into
 //      the map and keeps the maximum of an importance function there. Ours is the rate itself:
-//      σ₁(J⁻¹), J = ∂b/∂x in base texels per frame pixel, the most frame pixels one base texel
-//      spans (the footprint lexel measures, evaluation.h). Each readback pixel stands for the
-//      frame pixels it covers, so it is splatted over the parallelogram its pixel covers in the
-//      map (at most kRtwMaxSplat importance texels from its centre each way). At the shadow
-//      boundary pixels of the standard map (samples.h) the importance is multiplied by
-//      1 + kRtwEdgeWeight: the paper's shadow-edge importance function, which raises importance
-//      where the output image has shadow edges;
+//      Lloyd et al. 2006's perspective aliasing w_l/w_i under the base map
+//      (perspective_aliasing.h), how many frame pixels wide one base texel is there. It leaves
+//      out the receiver's orientation (projection aliasing): no warp of the map serves that, and
+//      the footprint σ₁(J⁻¹), which includes it, grows without bound where a receiver nears its
+//      light ray — a few grazing pixels then took most of the texels (measured: `rtw` on σ₁
+//      misclassified +139% against `optimal` on the walkthrough's point lights, on w_l/w_i
+//      −27%; RESULTS.md, "What engines ship"). Each readback pixel stands for the frame pixels
+//      it covers, so it is splatted over the parallelogram its pixel covers in the map (at most
+//      kRtwMaxSplat importance texels from its centre each way). At the shadow boundary pixels
+//      of the standard map (samples.h) the importance is multiplied by 1 + kRtwEdgeWeight: the
+//      paper's shadow-edge importance function, which raises importance where the output image
+//      has shadow edges;
 //   2. the 2-D map collapsed to two 1-D maps by the maximum of each column and each row (§4.2);
 //   3. each 1-D map blurred (Gaussian, σ = kRtwBlurSigma of its length), so that the warp
 //      changes smoothly and the readback's gaps between pixels are covered;
@@ -75,11 +80,12 @@ struct AxisProfile {
 };
 
 // Step 1 over the readback: for every covered readback pixel whose point is InFront of `base`,
-// its rate σ₁(J⁻¹) (J in base texels per pixel of a `frame`-sized image of the same camera),
-// × (1 + options.edgeWeight) at `edgePixels` (readback pixel indices), max-splatted over the
-// pixel's parallelogram in an importance map of base's resolution `map`. Per pixel the
-// derivatives are PlaneDerivatives' (exact on the pixel's plane), or the readback's where it has
-// no normal and is smooth; pixels with neither are left out.
+// its rate w_l/w_i (PerspectiveAliasing under `base`, against the pixels of a `frame`-sized image
+// of the same camera), × (1 + options.edgeWeight) at `edgePixels` (readback pixel indices),
+// max-splatted over the pixel's parallelogram in an importance map of base's resolution `map`.
+// The parallelogram comes from the pixel's derivatives: PlaneDerivatives' (exact on the pixel's
+// plane), or the readback's where it has no normal and is smooth; pixels with neither, or where
+// the map is singular, are left out.
 ImportanceMap RtwImportance(const Readback& readback, const Camera& camera,
                             const LightSpace& lightSpace, const LightMatrix& base, Resolution map,
                             Resolution frame, std::span<const std::uint32_t> edgePixels,

@@ -13,6 +13,8 @@
 #include "lexel/spatial/cascades.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/logpsm.h"
+#include "lexel/spatial/perspective_aliasing.h"
+#include "lexel/spatial/rtw.h"
 #include "lexel/spatial/studies/storage_factor.h"
 #include "spatial/spatial_test_scenes.h"
 
@@ -136,6 +138,48 @@ TEST(LogPsm, OverheadLightSplitsTheTexelsAsTheOptimalParameterization) {
         EXPECT_LE(u->x, map.resolution.width);
         EXPECT_LE(u->y, map.resolution.height);
     }
+}
+
+// RTW's importance (rtw.h, step 1): each readback pixel's perspective aliasing w_l/w_i under the
+// base map, max-splatted over where the pixel lands, so a receiver nearly parallel to the light
+// (the floor under a low sun), whose footprint σ₁(J⁻¹) grows without bound, asks only for what
+// its depth asks. Brute force: the map's maximum is the pixels' largest w_l/w_i, and the texel a
+// pixel lands in holds at least its own.
+TEST(Rtw, ImportanceIsEachPixelsPerspectiveAliasingUnderTheBaseMap) {
+    const Scene scene =
+        BoxScene({Light::Type::kDirectional, {}, glm::normalize(glm::dvec3(1.0, -0.05, -0.3))});
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Readback readback = RenderReadback(*backend, scene.camera, scene.readback);
+    const Bounds bounds = scene.geometry.ComputeBounds();
+    const LightSpace lightSpace(scene.lights.front(), bounds);
+    const BaselineContext context = MakeBaselineContext(
+        scene, lightSpace, bounds, readback.wsRelevant, readback.wsRelevantHull);
+    const LightMatrix base = FocusedTightLightMatrix(context);
+    const ImportanceMap importance =
+        RtwImportance(readback, scene.camera, lightSpace, base, scene.shadowMap,
+                      scene.camera.resolution, {}, RtwOptions{.edgeWeight = 0.0});
+    const CameraBuffer& buffer = readback.buffer;
+    double largest = 0.0;
+    std::size_t counted = 0;
+    for (std::size_t i = 0; i < buffer.triangle.size(); ++i) {
+        if (!buffer.Covered(i)) continue;
+        const glm::dvec3 lsX = lightSpace.ToLight(buffer.wsPosition[i]);
+        const double rate =
+            PerspectiveAliasing(scene.camera, lightSpace, base, buffer.wsPosition[i]);
+        if (!InFront(base.p4, lsX) || !std::isfinite(rate)) continue;
+        const glm::dvec2 b = base.Map(lsX);
+        const int x = static_cast<int>(std::floor(b.x)), y = static_cast<int>(std::floor(b.y));
+        if (x < 0 || y < 0 || x >= scene.shadowMap.width || y >= scene.shadowMap.height) continue;
+        ++counted;
+        largest = std::max(largest, rate);
+        EXPECT_GE(importance.value[static_cast<std::size_t>(y) * scene.shadowMap.width + x], rate)
+            << "readback pixel " << i;
+    }
+    ASSERT_GT(counted, 1000u);
+    const double mapMax = *std::max_element(importance.value.begin(), importance.value.end());
+    EXPECT_NEAR(mapMax, largest, 1e-12 * largest);
+    // A texel width against the nearest floor pixel's, not the grazing floor's unbounded σ₁.
+    EXPECT_LT(mapMax, 100.0);
 }
 
 TEST(WarpedMethods, GetTheSingleMapsTexelsAndCoverWhatTheirBaseCovers) {
