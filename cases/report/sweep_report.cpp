@@ -867,6 +867,7 @@ ColumnTable<LightRow> LightColumns(const SweepResult& r) {
         add("_h", "pixels²/texel²", CellField(m, &SweepCell::h));
         add("_e", "edge energy", CellField(m, &SweepCell::e));
         add("_ms", "ms", CellField(m, &SweepCell::ms));
+        add("_storage_factor", "texels/pixel", CellField(m, &SweepCell::storageFactor));
         if (r.phases > 1) {
             add("_misclassified_mean", "pixels", CellField(m, &SweepCell::misclassifiedMean));
             add("_misclassified_se", "pixels", CellField(m, &SweepCell::misclassifiedError));

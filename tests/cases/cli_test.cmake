@@ -521,7 +521,7 @@ file(STRINGS "${WORK}/sweep/lights.csv" rows)
 list(LENGTH rows nRows)
 list(GET rows 0 header)
 if(NOT nRows EQUAL 5 OR NOT header STREQUAL
-   "light,kind,x,y,z,receiver_pixels,focused_misclassified,focused_h,focused_e,focused_ms,normal_misclassified,normal_h,normal_e,normal_ms")
+   "light,kind,x,y,z,receiver_pixels,focused_misclassified,focused_h,focused_e,focused_ms,focused_storage_factor,normal_misclassified,normal_h,normal_e,normal_ms,normal_storage_factor")
     message(FATAL_ERROR "unexpected ${WORK}/sweep/lights.csv:\n${rows}")
 endif()
 file(READ "${WORK}/sweep/table1.csv" written)
