@@ -1,0 +1,159 @@
+#!/usr/bin/env python3
+"""Summarize phase-averaged `lexel sweep --out DIR` runs of several methods against one (RESULTS.md,
+"What engines ship"; cases/scripts/engine_table.sh runs the sweeps).
+
+Usage: engine_table.py [--reference METHOD] [--shimmer RUN.json] DIR [DIR ...]
+       (each DIR a sweep's --out directory, holding lights.csv; RUN.json a `lexel run
+       --format json` of a case with a camera_path)
+
+Prints two Markdown tables. Pooled over every light of every DIR, one row per method: its mean
+phase-averaged misclassified pixels; the paired difference against the reference (default
+`optimal`; per light this − reference, mean ± 95% half-width over the lights, Student t, as a % of
+the reference's mean); the % of lights on which it has fewer (won) and more (lost) misclassified
+pixels than the reference beyond the noise of the two phase means (|difference| > 1.96 ×
+√(se² + se_ref²), as `lexel sweep` counts wins); the median effective storage factor; the mean
+time per light in ms and as a multiple of the reference's in the same sweeps; with --shimmer, its
+shimmer along the camera path (mean over the run's lights, % of stable pixels per step). Then the
+residual noise (the median over lights and methods of a light's standard error over its mean) and
+one row per DIR: each method's paired difference against the reference. Bad input: one line, exit
+status 2.
+"""
+import csv
+import json
+import math
+import os
+import statistics
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fair_table import mean_ci  # noqa: E402  (the same t interval as the fair table)
+
+MEAN, SE, STORAGE, MS = "_misclassified_mean", "_misclassified_se", "_storage_factor", "_ms"
+
+
+def fail(message):
+    print("engine_table.py: " + message, file=sys.stderr)
+    sys.exit(2)
+
+
+def read_set(d, reference):
+    try:
+        with open(os.path.join(d, "lights.csv"), newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        fail(f"{d}: cannot read lights.csv ({e.strerror})")
+    if not rows or reference + MEAN not in rows[0] or reference + SE not in rows[0]:
+        fail(f"{d}/lights.csv: no lights with {reference}'s phase-averaged counts "
+             f"(run the sweep with --method {reference} --phases K, K > 1)")
+    methods = [k[: -len(MEAN)] for k in rows[0] if k.endswith(MEAN)]
+
+    def column(m, suffix):
+        try:
+            return [float(r[m + suffix]) if r[m + suffix] != "" else math.nan for r in rows]
+        except (KeyError, ValueError):
+            fail(f"{d}/lights.csv: {m}{suffix} is missing or not a number")
+
+    return {m: {s: column(m, s) for s in (MEAN, SE, STORAGE, MS)} for m in methods}
+
+
+def paired_percent(ours, ref):
+    dm, ci = mean_ci([a - b for a, b in zip(ours, ref)])
+    refm = sum(ref) / len(ref)
+    if refm == 0:
+        return "–"
+    return f"{100 * dm / refm:+.1f} ± {100 * ci / refm:.1f}%"
+
+
+def wins(cells, ref):
+    won = lost = 0
+    for a, sa, b, sb in zip(cells[MEAN], cells[SE], ref[MEAN], ref[SE]):
+        if abs(a - b) > 1.96 * math.hypot(sa, sb):
+            won += a < b
+            lost += a > b
+    n = len(cells[MEAN])
+    return f"{100 * won / n:.0f}% / {100 * lost / n:.0f}%"
+
+
+def read_shimmer(path):
+    try:
+        with open(path) as f:
+            run = json.load(f)
+    except (OSError, ValueError) as e:
+        fail(f"--shimmer {path}: cannot read it as JSON ({e})")
+    studies = run.get("camera_path") if isinstance(run, dict) else None
+    if not studies:
+        fail(f"--shimmer {path}: no camera_path (run a case that has one, --format json)")
+    per_method = {}
+    for study in studies:
+        for m, v in study.get("shimmer_percent", {}).items():
+            per_method.setdefault(m, []).append(v)
+    return {m: sum(v) / len(v) for m, v in per_method.items()}
+
+
+def pooled(sets, m, suffix):
+    return [v for s in sets for v in s[m][suffix]]
+
+
+def main(reference, shimmer_path, dirs):
+    sets = [read_set(d, reference) for d in dirs]
+    methods = [m for m in sets[0] if all(m in s for s in sets)]
+    shimmer = read_shimmer(shimmer_path) if shimmer_path else None
+    lights = sum(len(s[reference][MEAN]) for s in sets)
+    head = ["method", "mean misclassified", f"vs {reference}",
+            f"lights won / lost vs {reference}", "median storage factor",
+            f"ms per light (× {reference})"]
+    if shimmer is not None:
+        head.append("shimmer (%)")
+    print(f"Pooled over {len(dirs)} {'set' if len(dirs) == 1 else 'sets'}, {lights} lights:\n")
+    print("| " + " | ".join(head) + " |")
+    print("| --- |" + " ---: |" * (len(head) - 1))
+    ref = {s: pooled(sets, reference, s) for s in (MEAN, SE)}
+    ref_ms = sum(pooled(sets, reference, MS)) or math.nan
+    for m in methods:
+        cells = {s: pooled(sets, m, s) for s in (MEAN, SE, STORAGE, MS)}
+        storage = [v for v in cells[STORAGE] if math.isfinite(v)]
+        row = [m, f"{sum(cells[MEAN]) / lights:.0f}",
+               "–" if m == reference else paired_percent(cells[MEAN], ref[MEAN]),
+               "–" if m == reference else wins(cells, ref),
+               f"{statistics.median(storage):.3g}" if storage else "–",
+               f"{sum(cells[MS]) / lights:.2f} ({sum(cells[MS]) / ref_ms:.2g}×)"]
+        if shimmer is not None:
+            row.append(f"{shimmer[m]:.3f}" if m in shimmer else "–")
+        print("| " + " | ".join(row) + " |")
+    noise = [se / mean for s in sets for m in methods
+             for mean, se in zip(s[m][MEAN], s[m][SE]) if mean > 0]
+    if noise:
+        print(f"\nResidual noise (each light's standard error over its mean, median over the "
+              f"lights and methods with errors): {100 * statistics.median(noise):.1f}%")
+    others = [m for m in methods if m != reference]
+    print(f"\nPer set, each method against {reference}:\n")
+    print(f"| set | lights | {reference} | " + " | ".join(others) + " |")
+    print("| --- | ---: | ---: |" + " ---: |" * len(others))
+    for d, s in zip(dirs, sets):
+        ref_mean = s[reference][MEAN]
+        row = [os.path.basename(os.path.normpath(d)), str(len(ref_mean)),
+               f"{sum(ref_mean) / len(ref_mean):.0f}"]
+        row += [paired_percent(s[m][MEAN], ref_mean) for m in others]
+        print("| " + " | ".join(row) + " |")
+
+
+if __name__ == "__main__":
+    usage = "usage: engine_table.py [--reference METHOD] [--shimmer RUN.json] DIR ..."
+    args = sys.argv[1:]
+    reference, shimmer_path, dirs = "optimal", None, []
+    while args:
+        a = args.pop(0)
+        if a in ("--reference", "--shimmer"):
+            if not args:
+                fail(f"{a}: needs a {'method name' if a == '--reference' else 'file'}")
+            if a == "--reference":
+                reference = args.pop(0)
+            else:
+                shimmer_path = args.pop(0)
+        elif a.startswith("-"):
+            fail(f"{a}: unknown option ({usage})")
+        else:
+            dirs.append(a)
+    if not dirs:
+        fail(f"no sweep directory given ({usage})")
+    main(reference, shimmer_path, dirs)
