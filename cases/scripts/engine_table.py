@@ -18,33 +18,21 @@ residual noise (the median over lights and methods of a light's standard error o
 one row per DIR: each method's paired difference against the reference. Bad input: one line, exit
 status 2.
 """
-import csv
 import json
 import math
 import os
 import statistics
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fair_table import mean_ci  # noqa: E402  (the same t interval as the fair table)
+from fair_table import fail, mean_ci, parse_args, read_rows  # noqa: E402
 
 MEAN, SE, STORAGE, MS = "_misclassified_mean", "_misclassified_se", "_storage_factor", "_ms"
 
 
-def fail(message):
-    print("engine_table.py: " + message, file=sys.stderr)
-    sys.exit(2)
-
-
 def read_set(d, reference):
-    try:
-        with open(os.path.join(d, "lights.csv"), newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        fail(f"{d}: cannot read lights.csv ({e.strerror})")
-    if not rows or reference + MEAN not in rows[0] or reference + SE not in rows[0]:
-        fail(f"{d}/lights.csv: no lights with {reference}'s phase-averaged counts "
-             f"(run the sweep with --method {reference} --phases K, K > 1)")
+    rows = read_rows(d, reference, needed=(MEAN, SE))
     methods = [k[: -len(MEAN)] for k in rows[0] if k.endswith(MEAN)]
 
     def column(m, suffix):
@@ -139,21 +127,7 @@ def main(reference, shimmer_path, dirs):
 
 if __name__ == "__main__":
     usage = "usage: engine_table.py [--reference METHOD] [--shimmer RUN.json] DIR ..."
-    args = sys.argv[1:]
-    reference, shimmer_path, dirs = "optimal", None, []
-    while args:
-        a = args.pop(0)
-        if a in ("--reference", "--shimmer"):
-            if not args:
-                fail(f"{a}: needs a {'method name' if a == '--reference' else 'file'}")
-            if a == "--reference":
-                reference = args.pop(0)
-            else:
-                shimmer_path = args.pop(0)
-        elif a.startswith("-"):
-            fail(f"{a}: unknown option ({usage})")
-        else:
-            dirs.append(a)
-    if not dirs:
-        fail(f"no sweep directory given ({usage})")
-    main(reference, shimmer_path, dirs)
+    values, dirs = parse_args(sys.argv[1:], {"--reference": "method name", "--shimmer": "file"},
+                              usage)
+    reference = values["--reference"][-1] if values["--reference"] else "optimal"
+    main(reference, values["--shimmer"][-1] if values["--shimmer"] else None, dirs)

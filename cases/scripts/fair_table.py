@@ -37,17 +37,19 @@ def mean_ci(values):
 
 
 def fail(message):
-    print("fair_table.py: " + message, file=sys.stderr)
+    """One line on stderr, named after the script that runs (this one or engine_table.py)."""
+    print(os.path.basename(sys.argv[0]) + ": " + message, file=sys.stderr)
     sys.exit(2)
 
 
-def read_rows(d, reference):
+def read_rows(d, reference, needed=("_misclassified_mean",)):
+    """The rows of DIR/lights.csv; fails unless the reference has every `needed` column."""
     try:
         with open(os.path.join(d, "lights.csv"), newline="") as f:
             rows = list(csv.DictReader(f))
     except OSError as e:
         fail(f"{d}: cannot read lights.csv ({e.strerror})")
-    if not rows or reference + "_misclassified_mean" not in rows[0]:
+    if not rows or any(reference + n not in rows[0] for n in needed):
         fail(f"{d}/lights.csv: no lights with {reference}'s phase-averaged counts "
              f"(run the sweep with --method {reference} --phases K)")
     return rows
@@ -89,23 +91,28 @@ def main(reference, against, dirs):
         print("| " + " | ".join(out) + " |")
 
 
-if __name__ == "__main__":
-    usage = "usage: fair_table.py [--reference METHOD] [--against METHOD ...] DIR ..."
-    args = sys.argv[1:]
-    reference, against, dirs = "optimal", [], []
+def parse_args(args, options, usage):
+    """The DIR arguments and each option's values in order; `options` maps an option to what its
+    value is ("method name"). Fails on an unknown option, a missing value or no DIR."""
+    values, dirs, args = {o: [] for o in options}, [], list(args)
     while args:
         a = args.pop(0)
-        if a in ("--against", "--reference"):
+        if a in options:
             if not args:
-                fail(f"{a}: needs a method name")
-            if a == "--against":
-                against.append(args.pop(0))
-            else:
-                reference = args.pop(0)
+                fail(f"{a}: needs a {options[a]}")
+            values[a].append(args.pop(0))
         elif a.startswith("-"):
             fail(f"{a}: unknown option ({usage})")
         else:
             dirs.append(a)
     if not dirs:
         fail(f"no sweep directory given ({usage})")
-    main(reference, against or None, dirs)
+    return values, dirs
+
+
+if __name__ == "__main__":
+    usage = "usage: fair_table.py [--reference METHOD] [--against METHOD ...] DIR ..."
+    values, dirs = parse_args(sys.argv[1:], {"--against": "method name",
+                                             "--reference": "method name"}, usage)
+    reference = values["--reference"][-1] if values["--reference"] else "optimal"
+    main(reference, values["--against"] or None, dirs)

@@ -9,6 +9,7 @@
 # shimmer the mean over the run's two lights: 0.6 and 0.4. The residual noise: se/mean 0.05,
 # 0.05, 0.0625, 0.0476 and two zeros, median 4.9%. Bad input: one line, exit status 2.
 # Invoked by ctest with -DPYTHON=... -DSCRIPT=... -DWORK=...
+include(${CMAKE_CURRENT_LIST_DIR}/script_errors.cmake)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/set")
 file(WRITE "${WORK}/set/lights.csv"
@@ -40,22 +41,12 @@ endif()
 file(MAKE_DIRECTORY "${WORK}/onephase")
 file(WRITE "${WORK}/onephase/lights.csv" "light,optimal_misclassified,optimal_ms\n0,1,2\n")
 file(WRITE "${WORK}/nopath.json" "{\"lights\": []}")
-foreach(bad "--shimmer;${WORK}/nopath.json;${WORK}/set|--shimmer .*: no camera_path"
-            "--shimmer;${WORK}/none.json;${WORK}/set|--shimmer .*: cannot read it as JSON"
-            "${WORK}/none|none: cannot read lights.csv"
-            "${WORK}/onephase|.*onephase/lights.csv: no lights with optimal's phase-averaged"
-            "--reference|--reference: needs a method name"
-            "--phases;${WORK}/set|--phases: unknown option"
-            "--reference;psm;${WORK}/set|.*set/lights.csv: no lights with psm's phase-averaged"
-            "|no sweep directory given")
-    string(REPLACE "|" ";" parts "${bad}")
-    list(GET parts -1 expected)
-    list(REMOVE_AT parts -1)
-    execute_process(COMMAND "${PYTHON}" "${SCRIPT}" ${parts}
-                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    if(NOT code EQUAL 2 OR NOT err MATCHES "^engine_table.py: (.*/)?${expected}"
-       OR NOT out STREQUAL "")
-        message(FATAL_ERROR
-                "engine_table.py ${parts}: exit ${code}, stderr '${err}', stdout '${out}'")
-    endif()
-endforeach()
+expect_script_errors(engine_table.py
+                     "--shimmer;${WORK}/nopath.json;${WORK}/set|--shimmer .*: no camera_path"
+                     "--shimmer;${WORK}/none.json;${WORK}/set|--shimmer .*: cannot read it as JSON"
+                     "${WORK}/none|none: cannot read lights.csv"
+                     "${WORK}/onephase|.*onephase/lights.csv: no lights with optimal's phase-averaged"
+                     "--reference|--reference: needs a method name"
+                     "--phases;${WORK}/set|--phases: unknown option"
+                     "--reference;psm;${WORK}/set|.*set/lights.csv: no lights with psm's phase-averaged"
+                     "|no sweep directory given")

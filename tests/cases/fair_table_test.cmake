@@ -9,6 +9,7 @@
 # optimal − best: −20, −10, 10, 599, mean 144.75 = +51.7% of 280.25, half-width 482.2 = 172.1%.
 # Light 3 breaks the 2×best+50 rule (1100 > 1052). Bad input: one line, exit status 2.
 # Invoked by ctest with -DPYTHON=... -DSCRIPT=... -DWORK=...
+include(${CMAKE_CURRENT_LIST_DIR}/script_errors.cmake)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/set")
 file(WRITE "${WORK}/set/lights.csv"
@@ -57,18 +58,10 @@ if(NOT code EQUAL 0 OR NOT out MATCHES "\\| cascades \\| 2 \\| 150 \\| 155 \\| \
     message(FATAL_ERROR "fair_table.py --reference sdsm: exit ${code}: ${out}${err}")
 endif()
 
-foreach(bad "--against;psm;${WORK}/set|--against psm: .* has no such method"
-            "${WORK}/none|none: cannot read lights.csv"
-            "--against|--against: needs a method name"
-            "--phases;${WORK}/set|--phases: unknown option"
-            "--reference|--reference: needs a method name"
-            "--reference;psm;${WORK}/set|.*set/lights.csv: no lights with psm's phase-averaged")
-    string(REPLACE "|" ";" parts "${bad}")
-    list(GET parts -1 expected)
-    list(REMOVE_AT parts -1)
-    execute_process(COMMAND "${PYTHON}" "${SCRIPT}" ${parts}
-                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    if(NOT code EQUAL 2 OR NOT err MATCHES "^fair_table.py: (.*/)?${expected}" OR NOT out STREQUAL "")
-        message(FATAL_ERROR "fair_table.py ${parts}: exit ${code}, stderr '${err}', stdout '${out}'")
-    endif()
-endforeach()
+expect_script_errors(fair_table.py
+                     "--against;psm;${WORK}/set|--against psm: .* has no such method"
+                     "${WORK}/none|none: cannot read lights.csv"
+                     "--against|--against: needs a method name"
+                     "--phases;${WORK}/set|--phases: unknown option"
+                     "--reference|--reference: needs a method name"
+                     "--reference;psm;${WORK}/set|.*set/lights.csv: no lights with psm's phase-averaged")

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <memory>
 
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/spatial/cascades.h"
@@ -40,6 +41,27 @@ Scene BoxScene(const Light& light) {
     scene.lights = {light};
     return scene;
 }
+
+// The box scene under `light` with its readback, light space and the baselines' context (which
+// points into the light space: built in place, never copied).
+struct BoxReadback {
+    explicit BoxReadback(const Light& light)
+        : scene(BoxScene(light)),
+          backend(MakeCpuRenderer(scene.geometry)),
+          readback(RenderReadback(*backend, scene.camera, scene.readback)),
+          bounds(scene.geometry.ComputeBounds()),
+          lightSpace(scene.lights.front(), bounds),
+          context(MakeBaselineContext(scene, lightSpace, bounds, readback.wsRelevant,
+                                      readback.wsRelevantHull)) {}
+    BoxReadback(const BoxReadback&) = delete;
+    BoxReadback& operator=(const BoxReadback&) = delete;
+    Scene scene;
+    std::unique_ptr<RenderBackend> backend;
+    Readback readback;
+    Bounds bounds;
+    LightSpace lightSpace;
+    BaselineContext context;
+};
 
 // The frame's visible planar depth range, as `lexel storage --case` takes it.
 ViewFrustum VisibleFrustum(const Evaluator& evaluator) {
@@ -107,13 +129,11 @@ TEST(LogPsm, MeasuredStorageFactorOnABoxSceneIsWithinTenPercentOfItsAnalyticValu
 
 TEST(LogPsm, OverheadLightSplitsTheTexelsAsTheOptimalParameterization) {
     // Appendix C: M_x / M_z = a / (ln(f/n) / (2 tanθ)) at one texel per pixel.
-    const Scene scene = BoxScene({Light::Type::kDirectional, {}, {0.0, -1.0, 0.0}});
-    const auto backend = MakeCpuRenderer(scene.geometry);
-    const Readback readback = RenderReadback(*backend, scene.camera, scene.readback);
-    const Bounds bounds = scene.geometry.ComputeBounds();
-    const LightSpace lightSpace(scene.lights.front(), bounds);
-    const BaselineContext context = MakeBaselineContext(
-        scene, lightSpace, bounds, readback.wsRelevant, readback.wsRelevantHull);
+    const BoxReadback box({Light::Type::kDirectional, {}, {0.0, -1.0, 0.0}});
+    const Scene& scene = box.scene;
+    const Readback& readback = box.readback;
+    const LightSpace& lightSpace = box.lightSpace;
+    const BaselineContext& context = box.context;
     BaselineDiagnostics diagnostics;
     const LogPsmMap map = LogPsmLightMap(context, &diagnostics);
     EXPECT_TRUE(map.logarithmic) << diagnostics.fallback;
@@ -146,14 +166,12 @@ TEST(LogPsm, OverheadLightSplitsTheTexelsAsTheOptimalParameterization) {
 // its depth asks. Brute force: the map's maximum is the pixels' largest w_l/w_i, and the texel a
 // pixel lands in holds at least its own.
 TEST(Rtw, ImportanceIsEachPixelsPerspectiveAliasingUnderTheBaseMap) {
-    const Scene scene =
-        BoxScene({Light::Type::kDirectional, {}, glm::normalize(glm::dvec3(1.0, -0.05, -0.3))});
-    const auto backend = MakeCpuRenderer(scene.geometry);
-    const Readback readback = RenderReadback(*backend, scene.camera, scene.readback);
-    const Bounds bounds = scene.geometry.ComputeBounds();
-    const LightSpace lightSpace(scene.lights.front(), bounds);
-    const BaselineContext context = MakeBaselineContext(
-        scene, lightSpace, bounds, readback.wsRelevant, readback.wsRelevantHull);
+    const BoxReadback box(
+        {Light::Type::kDirectional, {}, glm::normalize(glm::dvec3(1.0, -0.05, -0.3))});
+    const Scene& scene = box.scene;
+    const Readback& readback = box.readback;
+    const LightSpace& lightSpace = box.lightSpace;
+    const BaselineContext& context = box.context;
     const LightMatrix base = FocusedTightLightMatrix(context);
     const ImportanceMap importance =
         RtwImportance(readback, scene.camera, lightSpace, base, scene.shadowMap,
