@@ -30,6 +30,7 @@
 #include "lexel/cases/report/spatial_report.h"
 #include "lexel/cases/report/storage_report.h"
 #include "lexel/cases/report/sweep_journal.h"
+#include "lexel/cases/report/sweep_lights_csv.h"
 #include "lexel/cases/report/sweep_record.h"
 #include "lexel/cases/report/sweep_report.h"
 #include "lexel/cases/report/tables_report.h"

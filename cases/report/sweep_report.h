@@ -3,7 +3,7 @@
 // percentage more than the reference method (`optimal` when it ran, else the first), with the
 // report's published row beside ours (labelled: its counts are on its own scale); the methods'
 // mean h and time; in text (within kTerminalColumns), Markdown, CSV, JSON (schemas in
-// cases/README.md), and the per-light CSV.
+// cases/README.md); the per-light CSV is sweep_lights_csv.h's.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -33,8 +33,6 @@ std::string SweepCsv(const SweepResult& result, const ReportTable1& report);
 // The columns of a summary row (JSON and CSV) as a Markdown table: cases/README.md's list.
 std::string SweepColumnReference();
 nlohmann::json SweepJson(const SweepResult& result);
-// One row per light: position or direction, receiver pixels, and per method misclassified, h, ms.
-std::string SweepLightsCsv(const SweepResult& result);
 
 // The cascade-count study: "method,k,mean_misclassified" rows (optimal's with k = 1), and its
 // plot (misclassified pixels against k, optimal's single map as a dashed line).
