@@ -36,8 +36,10 @@ def read_set(d, reference):
     methods = [k[: -len(MEAN)] for k in rows[0] if k.endswith(MEAN)]
 
     def column(m, suffix):
+        # Only a storage factor may be empty (no pixel measured); it is left out of the median.
         try:
-            return [float(r[m + suffix]) if r[m + suffix] != "" else math.nan for r in rows]
+            return [math.nan if r[m + suffix] == "" and suffix == STORAGE else float(r[m + suffix])
+                    for r in rows]
         except (KeyError, ValueError):
             fail(f"{d}/lights.csv: {m}{suffix} is missing or not a number")
 

@@ -41,6 +41,9 @@ endif()
 file(MAKE_DIRECTORY "${WORK}/onephase")
 file(WRITE "${WORK}/onephase/lights.csv" "light,optimal_misclassified,optimal_ms\n0,1,2\n")
 file(WRITE "${WORK}/nopath.json" "{\"lights\": []}")
+file(MAKE_DIRECTORY "${WORK}/emptyms")
+file(WRITE "${WORK}/emptyms/lights.csv" "light,optimal_misclassified_mean,optimal_misclassified_se,"
+                                        "optimal_storage_factor,optimal_ms\n0,1,0,,\n")
 expect_script_errors(engine_table.py
                      "--shimmer;${WORK}/nopath.json;${WORK}/set|--shimmer .*: no camera_path"
                      "--shimmer;${WORK}/none.json;${WORK}/set|--shimmer .*: cannot read it as JSON"
@@ -49,4 +52,5 @@ expect_script_errors(engine_table.py
                      "--reference|--reference: needs a method name"
                      "--phases;${WORK}/set|--phases: unknown option"
                      "--reference;psm;${WORK}/set|.*set/lights.csv: no lights with psm's phase-averaged"
+                     "${WORK}/emptyms|.*emptyms/lights.csv: optimal_ms is missing or not a number"
                      "|no sweep directory given")
