@@ -6,39 +6,67 @@
 
 namespace lexel::spatial {
 
+namespace {
+
+// One sample's J = ∂(u, v)/∂(x1, x2) under `m`, with what its derivative by p4 needs (the
+// header's eq. (11)): u_i = p_i·X / w and v_j = p4·D_j / w, w = p4·X.
+struct SampleJacobianTerms {
+    glm::dvec3 X, D[2];
+    double invW = 0.0, u[2] = {}, v[2] = {}, J[2][2] = {}, det = 0.0;
+};
+
+SampleJacobianTerms JacobianTermsAt(const LightMatrix& m, const glm::dvec3& X, const glm::dvec3& D1,
+                                    const glm::dvec3& D2) {
+    SampleJacobianTerms s{X, {D1, D2}};
+    const glm::dvec3 p[2] = {m.p1, m.p2};
+    s.invW = 1.0 / glm::dot(m.p4, X);
+    const double wD[2] = {glm::dot(m.p4, D1), glm::dot(m.p4, D2)};
+    for (int i = 0; i < 2; ++i) {
+        s.u[i] = glm::dot(p[i], X) * s.invW;
+        s.v[i] = wD[i] * s.invW;
+    }
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) s.J[i][j] = (glm::dot(p[i], s.D[j]) - s.u[i] * wD[j]) * s.invW;
+    s.det = s.J[0][0] * s.J[1][1] - s.J[0][1] * s.J[1][0];
+    return s;
+}
+
+// The header's eq. (11) factored: ∂J_ij/∂p4 = -(1/w) [(J_ij - u_i v_j) X + u_i D_j], so
+// Σ_ij dF_ij ∂J_ij/∂p4 = -(1/w) [c_X X + c_1 D_1 + c_2 D_2] with c_X = Σ_ij dF_ij (J_ij - u_i v_j)
+// and c_j = Σ_i dF_ij u_i: two divisions per sample. Returns (weight/w) [c_X X + c_1 D_1 + c_2
+// D_2], the negated sum scaled by `weight`.
+glm::dvec3 NegatedChainToP4(const SampleJacobianTerms& s, const double dF[2][2], double weight) {
+    double cX = 0.0, c[2] = {0.0, 0.0};
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+            cX += dF[i][j] * (s.J[i][j] - s.u[i] * s.v[j]);
+            c[j] += dF[i][j] * s.u[i];
+        }
+    return (weight * s.invW) * (cX * s.X + c[0] * s.D[0] + c[1] * s.D[1]);
+}
+
+glm::dvec2 NormalOf(const WeightedPoints& points, std::size_t k) {
+    return points.edgeNormal.empty() ? glm::dvec2(0.0) : points.edgeNormal[k];
+}
+
+}  // namespace
+
 glm::dvec3 EnergyGradientAnalytic(const LightMatrix& m, const LightSamples& samples) {
-    // The header's eq. (11) factored: with u_i = p_i·X / w and v_j = p4·D_j / w,
-    //     ∂J_ij/∂p4 = -(1/w) [(J_ij - u_i v_j) X + u_i D_j],
-    // so Σ_ij ∂f/∂J_ij ∂J_ij/∂p4 = -(1/w) [c_X X + c_1 D_1 + c_2 D_2] with
-    // c_X = Σ_ij ∂f/∂J_ij (J_ij - u_i v_j) and c_j = Σ_i ∂f/∂J_ij u_i: two divisions per sample.
+    // Per sample ∂f/∂J of f = ‖J‖²_F / det², then NegatedChainToP4.
     glm::dvec3 grad(0.0);
-    for (std::size_t s = 0; s < samples.lsX.size(); ++s) {
-        const glm::dvec3& X = samples.lsX[s];
-        if (!InFront(m.p4, X)) continue;
-        const glm::dvec3 D[2] = {samples.dXdx1[s], samples.dXdx2[s]};
-        const glm::dvec3 p[2] = {m.p1, m.p2};
-        const double invW = 1.0 / glm::dot(m.p4, X);
-        const double wD[2] = {glm::dot(m.p4, D[0]), glm::dot(m.p4, D[1])};
-        const double u[2] = {glm::dot(p[0], X) * invW, glm::dot(p[1], X) * invW};
-        const double v[2] = {wD[0] * invW, wD[1] * invW};
-        double J[2][2];
-        for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) J[i][j] = (glm::dot(p[i], D[j]) - u[i] * wD[j]) * invW;
-        const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-        if (det == 0.0) continue;
+    for (std::size_t k = 0; k < samples.lsX.size(); ++k) {
+        if (!InFront(m.p4, samples.lsX[k])) continue;
+        const SampleJacobianTerms s =
+            JacobianTermsAt(m, samples.lsX[k], samples.dXdx1[k], samples.dXdx2[k]);
+        const auto& J = s.J;
+        if (s.det == 0.0) continue;
         const double S =
             J[0][0] * J[0][0] + J[0][1] * J[0][1] + J[1][0] * J[1][0] + J[1][1] * J[1][1];
-        const double invDet = 1.0 / det;
+        const double invDet = 1.0 / s.det;
         const double g = 2.0 * invDet * invDet, t = g * S * invDet;  // 2/det², 2S/det³
         const double dF[2][2] = {{g * J[0][0] - t * J[1][1], g * J[0][1] + t * J[1][0]},
                                  {g * J[1][0] + t * J[0][1], g * J[1][1] - t * J[0][0]}};
-        double cX = 0.0, c[2] = {0.0, 0.0};
-        for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) {
-                cX += dF[i][j] * (J[i][j] - u[i] * v[j]);
-                c[j] += dF[i][j] * u[i];
-            }
-        grad -= invW * (cX * X + c[0] * D[0] + c[1] * D[1]);
+        grad -= NegatedChainToP4(s, dF, 1.0);
     }
     return grad;
 }
@@ -57,31 +85,15 @@ glm::dvec3 EnergyGradientJets(const LightMatrix& m, const LightSamples& samples)
     return grad;
 }
 
-namespace {
-
-glm::dvec2 NormalOf(const WeightedPoints& points, std::size_t k) {
-    return points.edgeNormal.empty() ? glm::dvec2(0.0) : points.edgeNormal[k];
-}
-
-}  // namespace
-
 glm::dvec3 EdgeEnergyGradientAnalytic(const LightMatrix& m, const WeightedPoints& points) {
-    // The header comment's ∂f_e/∂J, then ∂J/∂p4 factored as in EnergyGradientAnalytic.
+    // The header comment's ∂f_e/∂J, then NegatedChainToP4.
     glm::dvec3 grad(0.0);
-    const glm::dvec3 p[2] = {m.p1, m.p2};
-    for (std::size_t s = 0; s < points.lsX.size(); ++s) {
-        const glm::dvec3& X = points.lsX[s];
-        if (!InFront(m.p4, X)) continue;
-        const glm::dvec3 D[2] = {points.dXdx1[s], points.dXdx2[s]};
-        const double invW = 1.0 / glm::dot(m.p4, X);
-        const double wD[2] = {glm::dot(m.p4, D[0]), glm::dot(m.p4, D[1])};
-        const double u[2] = {glm::dot(p[0], X) * invW, glm::dot(p[1], X) * invW};
-        const double v[2] = {wD[0] * invW, wD[1] * invW};
-        double J[2][2];
-        for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) J[i][j] = (glm::dot(p[i], D[j]) - u[i] * wD[j]) * invW;
-        const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-        const glm::dvec2 n = NormalOf(points, s);
+    for (std::size_t k = 0; k < points.lsX.size(); ++k) {
+        if (!InFront(m.p4, points.lsX[k])) continue;
+        const SampleJacobianTerms s =
+            JacobianTermsAt(m, points.lsX[k], points.dXdx1[k], points.dXdx2[k]);
+        const auto& J = s.J;
+        const glm::dvec2 n = NormalOf(points, k);
         double dQ[2][2], q;
         if (n.x == 0.0 && n.y == 0.0) {
             q = 0.5 *
@@ -94,20 +106,16 @@ glm::dvec3 EdgeEnergyGradientAnalytic(const LightMatrix& m, const WeightedPoints
             dQ[0][0] = 2.0 * b * n.y, dQ[0][1] = -2.0 * b * n.x;
             dQ[1][0] = -2.0 * a * n.y, dQ[1][1] = 2.0 * a * n.x;
         }
-        if (det == 0.0 || !(q > 0.0)) continue;  // +inf (singular) or the norm's minimum
-        const double root = std::sqrt(q), absDet = std::abs(det);
+        if (s.det == 0.0 || !(q > 0.0)) continue;  // +inf (singular) or the norm's minimum
+        const double root = std::sqrt(q), absDet = std::abs(s.det);
         const double f = root / absDet;
         if (!std::isfinite(f)) continue;
         const double cof[2][2] = {{J[1][1], -J[1][0]}, {-J[0][1], J[0][0]}};
-        const double g = 0.5 / (root * absDet), t = f / det;
-        double cX = 0.0, c[2] = {0.0, 0.0};
+        const double g = 0.5 / (root * absDet), t = f / s.det;
+        double dF[2][2];
         for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) {
-                const double dF = g * dQ[i][j] - t * cof[i][j];
-                cX += dF * (J[i][j] - u[i] * v[j]);
-                c[j] += dF * u[i];
-            }
-        grad -= (points.weight * invW) * (cX * X + c[0] * D[0] + c[1] * D[1]);
+            for (int j = 0; j < 2; ++j) dF[i][j] = g * dQ[i][j] - t * cof[i][j];
+        grad -= NegatedChainToP4(s, dF, points.weight);
     }
     return grad;
 }
