@@ -427,6 +427,7 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     const std::vector<Cascade>& cascades = computed.cascades;
     const bool keepBuffers = options.keepBuffers;
     m->matrix = computed.matrix;
+    MethodMetrics& metrics = m->metrics;
     const ShadingSetup setup{backend_,      *mapper_,         frame_,     lightSpace,
                              scene_.camera, scene_.shadowMap, frameDepth_};
     const auto vsmAtPhase = [&](const glm::dvec2& phase) {
@@ -438,9 +439,9 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     };
     const std::vector<glm::dvec2> phases = SubTexelPhases(options.phases);
     FrameShading shading = ShadeMethod(setup, computed, phases.front(), vsmAtPhase);
-    m->metrics.misclassified = CountWrong(shading.shades, truth, &m->metrics.falseShadow);
-    std::vector<std::int64_t> wrong = {m->metrics.misclassified};
-    double falseShadows = static_cast<double>(m->metrics.falseShadow);
+    metrics.misclassified = CountWrong(shading.shades, truth, &metrics.falseShadow);
+    std::vector<std::int64_t> wrong = {metrics.misclassified};
+    double falseShadows = static_cast<double>(metrics.falseShadow);
     for (std::size_t k = 1; k < phases.size(); ++k) {
         std::int64_t falseShadow = 0;
         wrong.push_back(CountWrong(ShadeMethod(setup, computed, phases[k], vsmAtPhase).shades,
@@ -448,40 +449,39 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
         falseShadows += static_cast<double>(falseShadow);
     }
     const PhaseMean mean = MeanOverPhases(wrong);
-    m->metrics.misclassifiedMean = mean.mean;
-    m->metrics.misclassifiedError = mean.standardError;
-    m->metrics.falseShadowMean = falseShadows / static_cast<double>(phases.size());
+    metrics.misclassifiedMean = mean.mean;
+    metrics.misclassifiedError = mean.standardError;
+    metrics.falseShadowMean = falseShadows / static_cast<double>(phases.size());
     const Footprints footprints =
         MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
-    m->metrics.footprintMean = footprints.mean;
-    m->metrics.footprintMax = footprints.max;
-    m->metrics.uncovered = footprints.uncovered;
-    m->metrics.perspectiveMax = footprints.perspectiveMax;
-    m->metrics.perspectiveP99 = footprints.perspectiveP99;
+    metrics.footprintMean = footprints.mean;
+    metrics.footprintMax = footprints.max;
+    metrics.uncovered = footprints.uncovered;
+    metrics.perspectiveMax = footprints.perspectiveMax;
+    metrics.perspectiveP99 = footprints.perspectiveP99;
     for (const ShadowMap& map : shading.maps)
-        m->metrics.texels +=
-            static_cast<std::int64_t>(map.resolution.width) * map.resolution.height;
+        metrics.texels += static_cast<std::int64_t>(map.resolution.width) * map.resolution.height;
     const std::int64_t framePixels =
         static_cast<std::int64_t>(scene_.camera.resolution.width) * scene_.camera.resolution.height;
-    m->metrics.storageFactor =
-        EffectiveStorageFactor(m->metrics.texels, m->metrics.perspectiveMax, framePixels);
-    m->metrics.storageFactorP99 =
-        EffectiveStorageFactor(m->metrics.texels, m->metrics.perspectiveP99, framePixels);
+    metrics.storageFactor =
+        EffectiveStorageFactor(metrics.texels, metrics.perspectiveMax, framePixels);
+    metrics.storageFactorP99 =
+        EffectiveStorageFactor(metrics.texels, metrics.perspectiveP99, framePixels);
     if (const auto& vsm = computed.virtualMap) {
-        m->metrics.h =
-            PageEnergy(*vsm, scene_.camera, lightSpace, samples, grazing, &m->metrics.hGrazing);
+        metrics.h =
+            PageEnergy(*vsm, scene_.camera, lightSpace, samples, grazing, &metrics.hGrazing);
         m->pages =
             PageOutcome{vsm->requested,        static_cast<std::int64_t>(vsm->resident.size()),
                         vsm->dropped,          vsm->layout.pageTexels,
                         vsm->layout.poolPages, vsm->lodBias};
     } else if (cascades.empty()) {
         const ShadowMap& map = shading.maps.front();
-        m->metrics.h =
+        metrics.h =
             computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
-        if (!computed.warp) m->metrics.e = Energy(m->matrix, samples, kEdgeEnergy);
+        if (!computed.warp) metrics.e = Energy(m->matrix, samples, kEdgeEnergy);
         for (std::size_t s = 0; s < grazing.size(); ++s)
             if (grazing[s])
-                m->metrics.hGrazing +=
+                metrics.hGrazing +=
                     MapSampleBadness(map, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s],
                                      Badness::kFrobeniusInverseSquared);
     } else {
@@ -493,8 +493,8 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
             if (shading.shades[i] == Shade::kLit || shading.shades[i] == Shade::kShadowed)
                 ++m->cascades[shading.cascade[i]].pixels;
         MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
-        m->metrics.e = PartitionedEnergy(cascades, samples, context.baseline.wsRelevant,
-                                         scene_.camera, kEdgeEnergy);
+        metrics.e = PartitionedEnergy(cascades, samples, context.baseline.wsRelevant, scene_.camera,
+                                      kEdgeEnergy);
     }
     if (keepBuffers && computed.virtualMap) {
         m->buffers.shades = std::move(shading.shades);
