@@ -42,6 +42,7 @@ struct SweepFlags {
     std::string outDir;
     int cascades = 0;             // partitions of the partitioned methods; 0: the case's
     int phases = 0;               // sub-texel phases errors are averaged over; 0: the case's
+    int shimmerPoses = 0;         // camera_path poses each light's shimmer is over; 0: none
     std::string backend = "cpu";  // cpu | gl
     std::string shard = "0/1";    // K/N: the lights i with i mod N = K
     bool resume = false;          // continue from the journal of a killed run into outDir

@@ -2,7 +2,7 @@
 //   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv]
 //             [--out DIR] [--no-map-truth] [--cascades K] [--phases K]   flatland and 3D
 //   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--method NAME...]
-//             [--cascades K] [--phases K] [--format table|markdown|csv|json]
+//             [--cascades K] [--phases K] [--shimmer-poses P] [--format table|markdown|csv|json]
 //             [--out DIR] [--shard K/N] [--resume]
 //                                  the 3D report's Table 1, the fair and equal-texel tables
 //   lexel merge DIR... --out DIR [--format ...]   sweep shards joined into one whole sweep
@@ -36,6 +36,7 @@
 #include "lexel/cases/app/commands.h"
 #include "lexel/cases/app/error_model_command.h"
 #include "lexel/cases/report/output.h"
+#include "lexel/cases/run/sweep.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
@@ -145,6 +146,11 @@ Command RegisterSweep(CLI::App& app) {
                      "Partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
         ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
     AddPhases(sweep, flags->phases);
+    sweep
+        ->add_option("--shimmer-poses", flags->shimmerPoses,
+                     "Also measure each light's shimmer along the first P poses of the case's "
+                     "camera_path (one more evaluation per pose and light)")
+        ->check(CLI::Range(2, lexel::cases::kMaxShimmerPoses));
     AddBackend(sweep, flags->backend, "The renderer (gl: OpenGL 4.5 via EGL)");
     sweep->add_option("--shard", flags->shard,
                       "K/N: evaluate only the lights i with i mod N = K (K = 0 ... N-1), for a "

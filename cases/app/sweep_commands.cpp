@@ -182,7 +182,7 @@ ShareRun RunShare(const fs::path& casePath, const spatial::Scene& scene,
                   const std::vector<std::string>& methods,
                   const std::vector<spatial::Light>& lights,
                   const std::vector<std::size_t>& indices, bool withStudy, SweepJournal* journal,
-                  BackendKind backend) {
+                  BackendKind backend, int shimmerPoses) {
     const SweepDone done = journal ? journal->Done() : SweepDone{};
     ShareRun run;
     run.result = WithCaseName(casePath, [&] {
@@ -193,7 +193,7 @@ ShareRun RunShare(const fs::path& casePath, const spatial::Scene& scene,
                 if (journal) journal->Append(JournalLightLine(light));
                 bar.Step();
             },
-            backend);
+            backend, shimmerPoses);
     });
     if (!withStudy) return run;
     run.study = WithCaseName(casePath, [&] {
@@ -240,6 +240,10 @@ int SweepCommand(const SweepFlags& flags) {
     const CaseFile caseFile = ReadCaseFile(casePath);  // read once: the scene and the identity
     const spatial::Scene scene = LoadSceneWithOverrides(caseFile, flags.cascades, flags.phases);
     const std::vector<std::string> methods = SpatialMethodsOfCase(flags.methods, scene, true);
+    if (static_cast<std::size_t>(flags.shimmerPoses) > scene.cameraPath.size())
+        throw InputError("--shimmer-poses: " + std::to_string(flags.shimmerPoses) +
+                         " poses, but the case's camera_path has " +
+                         std::to_string(scene.cameraPath.size()));
     const BackendKind backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(methods, backend);
     const ReportTable1 report =
@@ -255,6 +259,7 @@ int SweepCommand(const SweepFlags& flags) {
                                  .backend = flags.backend,
                                  .cascades = scene.partitions.count,
                                  .phases = scene.phases,
+                                 .shimmerPoses = flags.shimmerPoses,
                                  .lights = lights.size(),
                                  .lightsHash = LightsHash(lights)};
     // With --out: the cascade-count study, and the journal of the finished lights.
@@ -266,7 +271,7 @@ int SweepCommand(const SweepFlags& flags) {
     if (flags.resume)
         SayResumed(journal->Done(), indices.size(), studyCounts.size() * indices.size(), *journal);
     const ShareRun run = RunShare(casePath, scene, methods, lights, indices, withStudy,
-                                  journal ? &*journal : nullptr, backend);
+                                  journal ? &*journal : nullptr, backend, flags.shimmerPoses);
     const SweepResult& r = run.result;
     std::optional<CascadeCountStudy> study;
     if (withStudy) study = CascadeStudyOf(r, scene.partitions.count, run.study);

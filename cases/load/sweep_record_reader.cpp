@@ -52,8 +52,8 @@ SweepShard ParseShardText(const JsonField& field) {
 }
 
 SweepIdentity ParseIdentity(const JsonField& f) {
-    f.ExpectObject({"case", "case_fnv1a64", "methods", "backend", "cascades", "phases", "lights",
-                    "lights_fnv1a64"});
+    f.ExpectObject({"case", "case_fnv1a64", "methods", "backend", "cascades", "phases",
+                    "shimmer_poses", "lights", "lights_fnv1a64"});
     SweepIdentity id;
     id.caseName = f["case"].String();
     id.caseHash = f["case_fnv1a64"].String();
@@ -61,6 +61,7 @@ SweepIdentity ParseIdentity(const JsonField& f) {
     id.backend = f["backend"].String();
     id.cascades = static_cast<int>(f["cascades"].Integer(0, 1 << 20));
     id.phases = static_cast<int>(f["phases"].Integer(1, spatial::kMaxPhases));
+    id.shimmerPoses = static_cast<int>(f["shimmer_poses"].Integer(0, kMaxShimmerPoses));
     id.lights = static_cast<std::size_t>(f["lights"].Integer(0, kMaxCount));
     id.lightsHash = f["lights_fnv1a64"].String();
     return id;
@@ -97,6 +98,8 @@ SweepCell ParseCell(const JsonField& f, const nlohmann::json& value) {
     c.misclassifiedMean = x[14].NumberIn(0.0, static_cast<double>(kMaxCount), false, false);
     c.misclassifiedError = x[15].NumberIn(0.0, static_cast<double>(kMaxCount), false, false);
     c.e = RecordNumber(x[16], value[16]);
+    c.shimmer = RecordNumber(x[17], value[17]);
+    c.storageFactorP99 = RecordNumber(x[18], value[18]);
     return c;
 }
 

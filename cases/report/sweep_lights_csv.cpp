@@ -34,7 +34,8 @@ std::function<CellValue(const LightRow&)> CellField(std::size_t m, T SweepCell::
 }
 
 // The columns of lights.csv: the light, then per method its misclassified pixels (phase 0's), h,
-// e and time; over several phases the mean and standard error; the multi-start methods' winning
+// e and time; over several phases the mean and standard error; with shimmer poses the shimmer;
+// the multi-start methods' winning
 // start; the virtual shadow maps' pages.
 ColumnTable<LightRow> LightColumns(const SweepResult& r) {
     const auto position = [](int axis) {
@@ -77,10 +78,13 @@ ColumnTable<LightRow> LightColumns(const SweepResult& r) {
         add("_e", "edge energy", CellField(m, &SweepCell::e));
         add("_ms", "ms", CellField(m, &SweepCell::ms));
         add("_storage_factor", "texels/pixel", CellField(m, &SweepCell::storageFactor));
+        add("_storage_factor_p99", "texels/pixel", CellField(m, &SweepCell::storageFactorP99));
         if (r.phases > 1) {
             add("_misclassified_mean", "pixels", CellField(m, &SweepCell::misclassifiedMean));
             add("_misclassified_se", "pixels", CellField(m, &SweepCell::misclassifiedError));
         }
+        if (r.shimmerPoses > 1)
+            add("_shimmer", "% of stable pixels per step", CellField(m, &SweepCell::shimmer));
         if (!r.cells.empty() && !r.cells[0][m].winner.empty())
             add("_winner", "", CellField(m, &SweepCell::winner));
         if (!r.cells.empty() && r.cells[0][m].pagesRequested >= 0) {

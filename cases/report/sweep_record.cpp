@@ -21,9 +21,15 @@ json Number(double v) {
 json Vec3(const glm::dvec3& v) { return json::array({Number(v.x), Number(v.y), Number(v.z)}); }
 
 json IdentityJson(const SweepIdentity& id) {
-    return {{"case", id.caseName},   {"case_fnv1a64", id.caseHash},    {"methods", id.methods},
-            {"backend", id.backend}, {"cascades", id.cascades},        {"phases", id.phases},
-            {"lights", id.lights},   {"lights_fnv1a64", id.lightsHash}};
+    return {{"case", id.caseName},
+            {"case_fnv1a64", id.caseHash},
+            {"methods", id.methods},
+            {"backend", id.backend},
+            {"cascades", id.cascades},
+            {"phases", id.phases},
+            {"shimmer_poses", id.shimmerPoses},
+            {"lights", id.lights},
+            {"lights_fnv1a64", id.lightsHash}};
 }
 
 json CellJson(const SweepCell& c) {
@@ -31,7 +37,8 @@ json CellJson(const SweepCell& c) {
                         Number(c.footprintMean), Number(c.footprintMax), c.uncovered, c.cascades,
                         c.emptyPartitions, Number(c.storageFactor), c.pagesRequested,
                         c.pagesResident, c.pagesDropped, Number(c.lodBias),
-                        Number(c.misclassifiedMean), Number(c.misclassifiedError), Number(c.e)});
+                        Number(c.misclassifiedMean), Number(c.misclassifiedError), Number(c.e),
+                        Number(c.shimmer), Number(c.storageFactorP99)});
 }
 
 json LightJson(const SweepLightRecord& light) {

@@ -11,8 +11,8 @@
 namespace lexel::cases {
 
 // The record's format tag and the names of a cell's fields, in the order of its array.
-inline constexpr const char* kSweepRecordFormat = "lexel-sweep-record/3";
-inline constexpr const char* kSweepJournalFormat = "lexel-sweep-journal/3";
+inline constexpr const char* kSweepRecordFormat = "lexel-sweep-record/4";
+inline constexpr const char* kSweepJournalFormat = "lexel-sweep-journal/4";
 inline constexpr const char* kSweepCellFields[] = {"misclassified",
                                                    "h",
                                                    "h_grazing",
@@ -29,7 +29,9 @@ inline constexpr const char* kSweepCellFields[] = {"misclassified",
                                                    "lod_bias",
                                                    "misclassified_mean",
                                                    "misclassified_error",
-                                                   "e"};
+                                                   "e",
+                                                   "shimmer",
+                                                   "storage_factor_p99"};
 
 // sweep-record.json: the identity and header fields one per line, then one line per light (its
 // cells per method, their times apart in "ms", the study's counts per extra k).

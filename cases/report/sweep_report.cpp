@@ -232,6 +232,8 @@ struct MethodSummary {
     double meanPagesResident = std::numeric_limits<double>::quiet_NaN();
     double meanPagesDropped = std::numeric_limits<double>::quiet_NaN();
     double meanLodBias = std::numeric_limits<double>::quiet_NaN();
+    // With shimmer poses: the mean over lights of SweepCell::shimmer (NaN without).
+    double meanShimmer = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Whether h ranks two cells at all: both finite and not equal (a tie at h = 0, lights without
@@ -336,6 +338,11 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
         out.meanPagesDropped = dropped / lights;
         out.meanLodBias = bias / lights;
     }
+    if (r.shimmerPoses > 1) {
+        double shimmer = 0.0;
+        for (const auto& light : r.cells) shimmer += light[m].shimmer;
+        out.meanShimmer = shimmer / lights;
+    }
     return out;
 }
 
@@ -365,8 +372,9 @@ std::function<CellValue(const SummaryRow&)> Summary(T MethodSummary::*field) {
     };
 }
 
-// A virtual shadow map's page means (JSON only, left out for the other methods).
-std::function<CellValue(const SummaryRow&)> PageMean(double MethodSummary::*field) {
+// A mean some sweeps or methods lack (a virtual shadow map's pages, the shimmer): JSON only, left
+// out where NaN.
+std::function<CellValue(const SummaryRow&)> Measured(double MethodSummary::*field) {
     return [field](const SummaryRow& row) -> CellValue {
         if (!row.summary || std::isnan((*row.summary).*field)) return {};
         return (*row.summary).*field;
@@ -413,13 +421,15 @@ ColumnTable<SummaryRow> SummaryColumns() {
              kJsonColumn},
             {"h_share_at_grazing_samples", "fraction", Summary(&S::grazingShare), kJsonColumn},
             {"maps", "maps", Summary(&S::cascades), kJsonColumn},
-            {"mean_pages_requested", "pages", PageMean(&S::meanPagesRequested), kJsonColumn,
+            {"mean_pages_requested", "pages", Measured(&S::meanPagesRequested), kJsonColumn,
              JsonNull::kOmit},
-            {"mean_pages_resident", "pages", PageMean(&S::meanPagesResident), kJsonColumn,
+            {"mean_pages_resident", "pages", Measured(&S::meanPagesResident), kJsonColumn,
              JsonNull::kOmit},
-            {"mean_pages_dropped", "pages", PageMean(&S::meanPagesDropped), kJsonColumn,
+            {"mean_pages_dropped", "pages", Measured(&S::meanPagesDropped), kJsonColumn,
              JsonNull::kOmit},
-            {"mean_lod_bias", "levels", PageMean(&S::meanLodBias), kJsonColumn, JsonNull::kOmit}};
+            {"mean_lod_bias", "levels", Measured(&S::meanLodBias), kJsonColumn, JsonNull::kOmit},
+            {"mean_shimmer", "% of stable pixels per step", Measured(&S::meanShimmer), kJsonColumn,
+             JsonNull::kOmit}};
 }
 
 // The summary rows of a view over all lights (the reference's % is 0).

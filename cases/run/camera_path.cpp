@@ -19,21 +19,6 @@ bool Counted(spatial::Shade s) {
     return s == spatial::Shade::kLit || s == spatial::Shade::kShadowed;
 }
 
-// Shimmering pixels between two poses: counted at both with the same truth, a different decision;
-// the share of those with the same truth, in percent.
-double ShimmerPercent(std::span<const spatial::Shade> before,
-                      std::span<const std::uint8_t> truthBefore,
-                      std::span<const spatial::Shade> after,
-                      std::span<const std::uint8_t> truthAfter) {
-    std::int64_t stable = 0, flipped = 0;
-    for (std::size_t i = 0; i < after.size(); ++i) {
-        if (!Counted(before[i]) || !Counted(after[i]) || truthBefore[i] != truthAfter[i]) continue;
-        ++stable;
-        flipped += before[i] != after[i];
-    }
-    return stable ? 100.0 * static_cast<double>(flipped) / static_cast<double>(stable) : 0.0;
-}
-
 // What one pose leaves for the next: the truth and every method's shades.
 struct PoseBuffers {
     std::vector<std::uint8_t> truth;
@@ -117,6 +102,19 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
 
 }  // namespace
 
+double ShimmerPercent(std::span<const spatial::Shade> before,
+                      std::span<const std::uint8_t> truthBefore,
+                      std::span<const spatial::Shade> after,
+                      std::span<const std::uint8_t> truthAfter) {
+    std::int64_t stable = 0, flipped = 0;
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        if (!Counted(before[i]) || !Counted(after[i]) || truthBefore[i] != truthAfter[i]) continue;
+        ++stable;
+        flipped += before[i] != after[i];
+    }
+    return stable ? 100.0 * static_cast<double>(flipped) / static_cast<double>(stable) : 0.0;
+}
+
 int CameraPathStudy::Changes() const {
     int changes = 0;
     for (const PoseOutcome& p : poses) changes += p.changed;
@@ -131,6 +129,47 @@ std::vector<CameraPathStudy> RunCameraPathStudy(const spatial::Scene& scene,
     for (std::size_t l = 0; l < scene.lights.size(); ++l)
         studies.push_back(StudyLight(scene, backend, l, methods, onMethodDone));
     return studies;
+}
+
+PathPoses MakePathPoses(const spatial::Scene& scene, const spatial::RenderBackend& backend,
+                        std::size_t count) {
+    PathPoses poses;
+    poses.scenes.assign(count, scene);  // all made before the evaluators that refer to them
+    for (std::size_t k = 0; k < count; ++k) {
+        poses.scenes[k].camera = scene.cameraPath.at(k);
+        poses.evaluators.push_back(MakeEvaluator(poses.scenes[k], backend, CameraPathField(k)));
+    }
+    return poses;
+}
+
+std::vector<double> ShimmerAlong(const PathPoses& poses, const spatial::Light& light,
+                                 spatial::EvaluationOptions options,
+                                 const std::string& lightField) {
+    options.phases = 1;
+    options.keepBuffers = true;
+    std::vector<double> shimmer(options.methods.size(), 0.0);
+    std::optional<PoseBuffers> before;
+    for (std::size_t k = 0; k < poses.evaluators.size(); ++k) {
+        spatial::LightOutcome o;
+        try {
+            o = poses.evaluators[k]->Evaluate(light, options);
+        } catch (const DomainError& e) {
+            throw InputError(SpatialErrorField(e, lightField, CameraPathField(k)) + ": " +
+                             e.what());
+        }
+        PoseBuffers now;
+        now.truth = std::move(o.truth);
+        for (spatial::MethodOutcome& m : o.methods)
+            now.shades.push_back(std::move(m.buffers.shades));
+        if (before)
+            for (std::size_t m = 0; m < shimmer.size(); ++m)
+                shimmer[m] +=
+                    ShimmerPercent(before->shades[m], before->truth, now.shades[m], now.truth);
+        before = std::move(now);
+    }
+    if (poses.evaluators.size() > 1)
+        for (double& s : shimmer) s /= static_cast<double>(poses.evaluators.size() - 1);
+    return shimmer;
 }
 
 std::size_t CameraPathSteps(const spatial::Scene& scene, const std::vector<std::string>& methods) {

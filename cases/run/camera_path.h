@@ -7,13 +7,24 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
 
 namespace lexel::cases {
+
+// The shimmering share between two poses, in percent: of the pixels counted (lit or shadowed) at
+// both with the same ray truth at both, those whose decision differs (0 when there are none).
+// The four spans are per frame pixel, of one size.
+double ShimmerPercent(std::span<const spatial::Shade> before,
+                      std::span<const std::uint8_t> truthBefore,
+                      std::span<const spatial::Shade> after,
+                      std::span<const std::uint8_t> truthAfter);
 
 struct PoseOutcome {
     bool changed = true;                       // the new matrix replaced the kept one
@@ -46,5 +57,25 @@ std::vector<CameraPathStudy> RunCameraPathStudy(const spatial::Scene& scene,
 // The calls RunCameraPathStudy makes to onMethodDone: lights × poses × (methods, and optimal when
 // they lack it).
 std::size_t CameraPathSteps(const spatial::Scene& scene, const std::vector<std::string>& methods);
+
+// The first poses of scene.cameraPath, each as the scene seen from it and that scene's evaluator
+// (which holds a reference to it: keep the two together; moving PathPoses keeps them valid).
+struct PathPoses {
+    std::vector<spatial::Scene> scenes;
+    std::vector<std::unique_ptr<spatial::Evaluator>> evaluators;
+};
+// Poses 0 ... count − 1 (count ≤ scene.cameraPath.size()). Throws InputError naming the pose
+// (/camera_path/k) as MakeEvaluator does.
+PathPoses MakePathPoses(const spatial::Scene& scene, const spatial::RenderBackend& backend,
+                        std::size_t count);
+
+// The shimmer of `light` along `poses`, per method of options.methods in percent: the mean over
+// consecutive pose pairs of the share of the pixels counted at both with unchanged truth whose
+// decision changes (as CameraPathStudy::shimmerPercent, without the hysteresis). Each pose is
+// measured at phase 0 alone (options.phases and keepBuffers are set here). With fewer than two
+// poses every share is 0. Throws InputError naming `lightField` and the pose for input the
+// evaluation cannot serve.
+std::vector<double> ShimmerAlong(const PathPoses& poses, const spatial::Light& light,
+                                 spatial::EvaluationOptions options, const std::string& lightField);
 
 }  // namespace lexel::cases

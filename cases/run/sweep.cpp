@@ -9,6 +9,7 @@
 #include "lexel/cases/load/memory_budget.h"
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/report/text_table.h"
+#include "lexel/cases/run/camera_path.h"
 #include "lexel/cases/run/evaluator_setup.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
@@ -42,28 +43,44 @@ std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights,
 namespace {
 
 // Lights evaluated at once: as many as there are, unless their buffers together would exceed the
-// memory budget (memory_budget.h); at least one (the loader refused cases where one does not fit).
-int LightsInFlight(const spatial::Scene& scene, std::size_t methods) {
+// memory budget (memory_budget.h) beside the case camera's and the shimmer poses' frames; at
+// least one (the loader refused cases where one does not fit without poses).
+int LightsInFlight(const spatial::Scene& scene, std::size_t methods, int shimmerPoses) {
     spatial::EvaluationSizes sizes;
     sizes.frame = scene.camera.resolution;
     sizes.readback = scene.readback;
     sizes.shadowMap = scene.shadowMap;
     sizes.triangles = scene.geometry.triangles.size();
     sizes.methods = static_cast<int>(methods);
-    sizes.keepBuffers = false;
+    sizes.keepBuffers = shimmerPoses > 0;  // the poses' shades
     const spatial::EvaluationMemory memory = spatial::EstimateEvaluationMemory(sizes);
-    const double fit = std::floor((kMemoryBudgetBytes - memory.shared) / memory.perLight);
+    const double frames = 1.0 + shimmerPoses;
+    const double fit = std::floor((kMemoryBudgetBytes - frames * memory.shared) / memory.perLight);
     return static_cast<int>(std::clamp(fit, 1.0, 1e9));
+}
+
+// The poses the shimmer is measured over: none for shimmerPoses 0.
+PathPoses ShimmerPoses(const spatial::Scene& scene, const spatial::RenderBackend& backend,
+                       int shimmerPoses) {
+    if (shimmerPoses == 0) return {};
+    if (shimmerPoses < 2 || shimmerPoses > kMaxShimmerPoses ||
+        static_cast<std::size_t>(shimmerPoses) > scene.cameraPath.size())
+        throw InputError("/camera_path: the shimmer along " + std::to_string(shimmerPoses) +
+                         " poses needs that many (2 ... " + std::to_string(kMaxShimmerPoses) +
+                         "), the case has " + std::to_string(scene.cameraPath.size()));
+    return MakePathPoses(scene, backend, static_cast<std::size_t>(shimmerPoses));
 }
 
 }  // namespace
 
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
                      const std::vector<Light>& lights, const SweepLightDone& onLightDone,
-                     BackendKind backendKind, const std::vector<std::size_t>& indices) {
+                     BackendKind backendKind, const std::vector<std::size_t>& indices,
+                     int shimmerPoses) {
     const Stopwatch timer;
     const auto backend = MakeRenderBackend(backendKind, scene.geometry);
     const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
+    const PathPoses poses = ShimmerPoses(scene, *backend, shimmerPoses);
     SweepResult r;
     r.caseName = scene.name;
     r.methods = methods;
@@ -76,12 +93,14 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     r.cells.assign(lights.size(), std::vector<SweepCell>(methods.size()));
     r.receiverPixels.assign(lights.size(), 0);
     r.phases = scene.phases;
+    r.shimmerPoses = shimmerPoses;
     spatial::EvaluationOptions options;
     options.methods = methods;
     options.phases = scene.phases;
     // Lights in batches of what the memory budget holds at once; with the usual sizes one batch of
     // all lights, evaluated in parallel as they come.
-    const auto batch = static_cast<std::size_t>(LightsInFlight(scene, methods.size()));
+    const auto batch =
+        static_cast<std::size_t>(LightsInFlight(scene, methods.size(), shimmerPoses));
     for (std::size_t first = 0; first < lights.size(); first += batch) {
         const std::size_t last = std::min(lights.size(), first + batch);
         tbb::parallel_for(first, last, [&](std::size_t l) {
@@ -90,13 +109,16 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
             spatial::EvaluationOptions lightOptions = options;
             lightOptions.given =
                 spatial::GivenMatricesOf(scene.methods, methods, true, r.indices[l]);
+            const std::string light =
+                "light " + std::to_string(r.indices[l]) + " " + LightLabel(lights[l]);
             try {
                 outcome = evaluator->Evaluate(lights[l], lightOptions);
             } catch (const DomainError& e) {
-                const std::string light =
-                    "light " + std::to_string(r.indices[l]) + " " + LightLabel(lights[l]);
                 throw InputError(SpatialErrorField(e, light) + ": " + e.what());
             }
+            const std::vector<double> shimmer =
+                poses.evaluators.empty() ? std::vector<double>{}
+                                         : ShimmerAlong(poses, lights[l], lightOptions, light);
             for (std::size_t m = 0; m < methods.size(); ++m) {
                 const spatial::MethodOutcome& o = outcome.methods[m];
                 r.cells[l][m] = {o.metrics.misclassified,
@@ -113,6 +135,8 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                 r.cells[l][m].misclassifiedMean = o.metrics.misclassifiedMean;
                 r.cells[l][m].misclassifiedError = o.metrics.misclassifiedError;
                 r.cells[l][m].e = o.metrics.e;
+                r.cells[l][m].storageFactorP99 = o.metrics.storageFactorP99;
+                if (!shimmer.empty()) r.cells[l][m].shimmer = shimmer[m];
                 if (o.pages) {
                     SweepCell& c = r.cells[l][m];
                     c.cascades = static_cast<int>(o.pages->resident);

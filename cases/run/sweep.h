@@ -14,6 +14,10 @@
 
 namespace lexel::cases {
 
+// The most camera_path poses a sweep's shimmer is measured over: each pose keeps its own frame
+// and evaluator in memory for the whole sweep (EvaluationMemory::shared apiece).
+inline constexpr int kMaxShimmerPoses = 16;
+
 // Per light and method, what a sweep keeps (matrices and buffers are dropped).
 struct SweepCell {
     std::int64_t misclassified = 0;
@@ -28,6 +32,7 @@ struct SweepCell {
     // Lloyd 2006's storage factor measured (MethodOutcome::storageFactor): texels for a worst
     // perspective aliasing of 1 over the frame's pixels.
     double storageFactor = 0.0;
+    double storageFactorP99 = 0.0;  // the same for the 99th percentile of the pixels' aliasing
     // Virtual shadow maps (vsm*): pages requested, resident and dropped, and the LOD bias; -1
     // for the other methods.
     std::int64_t pagesRequested = -1, pagesResident = -1, pagesDropped = -1;
@@ -37,6 +42,9 @@ struct SweepCell {
     double misclassifiedMean = 0.0, misclassifiedError = 0.0;
     // The edge energy e (MethodOutcome::e; NaN for warped and virtual maps).
     double e = std::numeric_limits<double>::quiet_NaN();
+    // With shimmer poses (RunSweep): the shimmer along the camera path's first poses, in % of the
+    // stable pixels per step (ShimmerAlong, camera_path.h); NaN when not measured.
+    double shimmer = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SweepResult {
@@ -50,6 +58,8 @@ struct SweepResult {
     std::vector<std::int64_t> receiverPixels;   // per light
     double seconds = 0.0;                       // wall time of the whole sweep
     int phases = 1;  // the sub-texel phases each cell's mean is over (Scene::phases)
+    // The camera_path poses each cell's shimmer is over (0: shimmer not measured).
+    int shimmerPoses = 0;
 };
 
 // The lights of the sweep: the case's light_sweep, its count overridden by `lights` when > 0 and
@@ -70,12 +80,14 @@ using SweepLightDone = std::function<void(std::size_t light, const std::vector<S
 // for input the evaluation cannot serve, BackendUnavailable when `backend` cannot be made. With
 // the GL backend the lights still run in parallel; their GPU passes take turns on the one context.
 // `indices`: each light's index in the whole sweep (r.indices, and the light an error names);
-// empty: 0, 1, ...
+// empty: 0, 1, ... `shimmerPoses` in 2 ... kMaxShimmerPoses: each cell's shimmer along the first
+// that many poses of scene.cameraPath, each pose at phase 0 (one more evaluation per pose and
+// light, not in the cells' times; InputError naming /camera_path when the case has fewer); 0: none.
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
                      const std::vector<spatial::Light>& lights,
                      const SweepLightDone& onLightDone = {},
                      BackendKind backend = BackendKind::kCpu,
-                     const std::vector<std::size_t>& indices = {});
+                     const std::vector<std::size_t>& indices = {}, int shimmerPoses = 0);
 
 // "point (x, y, z)" or "directional (x, y, z)", 4 significant digits.
 std::string LightLabel(const spatial::Light& light);

@@ -77,6 +77,9 @@ std::string IdentityDifference(const SweepIdentity& a, const SweepIdentity& b) {
         return differ("cascades", std::to_string(a.cascades), std::to_string(b.cascades));
     if (a.phases != b.phases)
         return differ("phases", std::to_string(a.phases), std::to_string(b.phases));
+    if (a.shimmerPoses != b.shimmerPoses)
+        return differ("shimmer poses", std::to_string(a.shimmerPoses),
+                      std::to_string(b.shimmerPoses));
     if (a.lights != b.lights)
         return differ("number of lights", std::to_string(a.lights), std::to_string(b.lights));
     if (a.lightsHash != b.lightsHash)
@@ -88,7 +91,7 @@ SweepResult RunSweepShare(const spatial::Scene& scene, const std::vector<std::st
                           const std::vector<Light>& allLights,
                           const std::vector<std::size_t>& indices, const SweepDone& done,
                           const std::function<void(const SweepLightRecord&)>& onLightDone,
-                          BackendKind backend) {
+                          BackendKind backend, int shimmerPoses) {
     std::vector<std::size_t> pending;
     std::vector<Light> pendingLights;
     for (std::size_t i : indices)
@@ -101,11 +104,12 @@ SweepResult RunSweepShare(const spatial::Scene& scene, const std::vector<std::st
         [&](std::size_t l, const std::vector<SweepCell>& cells, std::int64_t receiverPixels) {
             if (onLightDone) onLightDone({pending[l], pendingLights[l], receiverPixels, cells});
         },
-        backend, pending);
+        backend, pending, shimmerPoses);
     SweepResult r;
     r.caseName = scene.name;
     r.methods = methods;
     r.phases = scene.phases;
+    r.shimmerPoses = shimmerPoses;
     r.seconds = fresh.seconds;
     std::size_t next = 0;  // the next of `fresh`
     for (std::size_t i : indices) {
@@ -171,6 +175,7 @@ SweepResult ResultOf(const SweepRecord& record) {
     r.caseName = record.identity.caseName;
     r.methods = record.identity.methods;
     r.phases = record.identity.phases;
+    r.shimmerPoses = record.identity.shimmerPoses;
     r.seconds = record.seconds;
     for (const SweepLightRecord& light : record.lights) {
         r.indices.push_back(light.index);

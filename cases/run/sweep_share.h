@@ -31,14 +31,15 @@ std::vector<std::size_t> ShardLights(std::size_t lights, SweepShard shard);
 
 // What makes two runs parts of one sweep: the case (its name and the FNV-1a 64 hash of the case
 // file's bytes), the methods in order, the backend, the partitioned methods' count, the sub-texel
-// phases and the whole sweep's lights (their number and the hash of their shortest round-trip
-// coordinates).
+// phases, the camera_path poses of the shimmer and the whole sweep's lights (their number and the
+// hash of their shortest round-trip coordinates).
 struct SweepIdentity {
     std::string caseName, caseHash;
     std::vector<std::string> methods;
     std::string backend;
     int cascades = 0;
-    int phases = 1;  // Scene::phases
+    int phases = 1;        // Scene::phases
+    int shimmerPoses = 0;  // RunSweep's shimmerPoses
     std::size_t lights = 0;
     std::string lightsHash;
     bool operator==(const SweepIdentity&) const = default;
@@ -74,12 +75,12 @@ struct SweepDone {
 // Evaluates the lights `indices` of `allLights` that `done` lacks (RunSweep), calling
 // `onLightDone` (any thread) with each new one, and returns the share's result: done and new
 // lights in the order of `indices`, r.indices their indices in the whole sweep, r.seconds this
-// run's wall time. Throws as RunSweep.
+// run's wall time. `shimmerPoses` as RunSweep's. Throws as RunSweep.
 SweepResult RunSweepShare(const spatial::Scene& scene, const std::vector<std::string>& methods,
                           const std::vector<spatial::Light>& allLights,
                           const std::vector<std::size_t>& indices, const SweepDone& done,
                           const std::function<void(const SweepLightRecord&)>& onLightDone,
-                          BackendKind backend);
+                          BackendKind backend, int shimmerPoses = 0);
 
 // The cascade-count study's extra sweeps over `share`'s lights (RunCascadeCountStudy), skipping
 // those in `done`; `onLightDone` after each new light (any thread). Returns [count][light][method]

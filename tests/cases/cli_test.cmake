@@ -521,9 +521,29 @@ file(STRINGS "${WORK}/sweep/lights.csv" rows)
 list(LENGTH rows nRows)
 list(GET rows 0 header)
 if(NOT nRows EQUAL 5 OR NOT header STREQUAL
-   "light,kind,x,y,z,receiver_pixels,focused_misclassified,focused_h,focused_e,focused_ms,focused_storage_factor,normal_misclassified,normal_h,normal_e,normal_ms,normal_storage_factor")
+   "light,kind,x,y,z,receiver_pixels,focused_misclassified,focused_h,focused_e,focused_ms,focused_storage_factor,focused_storage_factor_p99,normal_misclassified,normal_h,normal_e,normal_ms,normal_storage_factor,normal_storage_factor_p99")
     message(FATAL_ERROR "unexpected ${WORK}/sweep/lights.csv:\n${rows}")
 endif()
+# --shimmer-poses: each light's shimmer along the case's camera_path, one column per method, its
+# summary in the JSON; the case must have that many poses.
+file(READ "${small}" smallText)
+string(JSON walking SET "${smallText}" camera_path
+       "[{\"position\": [0, 3, -9], \"target\": [0, 0.5, 0]}, {\"position\": [0, 3, -8.5], \"target\": [0, 0.5, 0.5]}]")
+file(WRITE "${WORK}/small_walking.json" "${walking}")
+expect_run(0 "\"mean_shimmer\": [0-9.e-]+" "^lexel: wrote "
+           sweep "${WORK}/small_walking.json" --lights 2 --methods focused --methods tsm
+           --shimmer-poses 2 --format json --out "${WORK}/sweep_shimmer")
+file(STRINGS "${WORK}/sweep_shimmer/lights.csv" rows)
+list(GET rows 0 header)
+if(NOT header MATCHES ",focused_shimmer,.*,tsm_shimmer(,|$)")
+    message(FATAL_ERROR "lights.csv with --shimmer-poses: ${header}")
+endif()
+expect_run(2 "^$" "^lexel: error: --shimmer-poses: 3 poses, but the case's camera_path has 2\n$"
+           sweep "${WORK}/small_walking.json" --lights 2 --methods focused --shimmer-poses 3)
+expect_run(2 "^$" "^lexel: error: --shimmer-poses: 2 poses, but the case's camera_path has 0\n$"
+           sweep "${small}" --lights 2 --methods focused --shimmer-poses 2)
+expect_run(2 "^$" "--shimmer-poses: Value 1 not in range 2 to 16"
+           sweep "${small}" --lights 2 --methods focused --shimmer-poses 1)
 file(READ "${WORK}/sweep/table1.csv" written)
 if(NOT written MATCHES "^table,set,method,[^\n]*\nreport,all,focused,[^\n]*\nreport,all,normal,[^\n]*\nfair,all,normal,[^\n]*\n$")
     message(FATAL_ERROR "unexpected ${WORK}/sweep/table1.csv:\n${written}")

@@ -38,6 +38,9 @@ SweepCell AwkwardCell(std::int64_t k) {
     c.lodBias = 0.125;
     c.misclassifiedMean = 1000.0 + static_cast<double>(k) + 1.0 / 7.0;  // a phase mean
     c.misclassifiedError = k == 1 ? 0.0 : 0.1 + 1e-17 * static_cast<double>(k);
+    c.e = k == 0 ? std::numeric_limits<double>::quiet_NaN() : 1.0 / 7.0;
+    c.shimmer = k == 2 ? std::numeric_limits<double>::quiet_NaN() : 0.1 + 1.0 / 3.0;
+    c.storageFactorP99 = 2.0 / 3.0 + static_cast<double>(k);
     return c;
 }
 
@@ -50,6 +53,7 @@ SweepRecord WholeRecord(std::size_t lights) {
                   .backend = "cpu",
                   .cascades = 2,
                   .phases = 16,
+                  .shimmerPoses = 3,
                   .lights = lights,
                   .lightsHash = ""};
     std::vector<spatial::Light> all;
@@ -93,7 +97,8 @@ TEST(SweepRecord, EveryCellReadsBackBitForBit) {
             for (const auto field :
                  {&SweepCell::h, &SweepCell::ms, &SweepCell::hGrazing, &SweepCell::footprintMean,
                   &SweepCell::footprintMax, &SweepCell::storageFactor, &SweepCell::lodBias,
-                  &SweepCell::misclassifiedMean, &SweepCell::misclassifiedError})
+                  &SweepCell::misclassifiedMean, &SweepCell::misclassifiedError, &SweepCell::e,
+                  &SweepCell::shimmer, &SweepCell::storageFactorP99})
                 EXPECT_TRUE(SameBits(a.*field, b.*field)) << l << ' ' << m;
             EXPECT_EQ(a.winner, b.winner);
             EXPECT_EQ(a.pagesRequested, b.pagesRequested);
@@ -105,6 +110,15 @@ TEST(SweepRecord, EveryCellReadsBackBitForBit) {
     EXPECT_TRUE(std::signbit(read.lights[0].cells[1].hGrazing));
     // Written again, the same text.
     EXPECT_EQ(SweepRecordText(read), text);
+}
+
+// Shards measured along different camera-path lengths are not one sweep.
+TEST(SweepRecord, IdentityNamesTheShimmerPoses) {
+    const SweepIdentity a = WholeRecord(1).identity;
+    SweepIdentity b = a;
+    b.shimmerPoses = 0;
+    EXPECT_EQ(IdentityDifference(a, b), "shimmer poses ('3' vs '0')");
+    EXPECT_EQ(IdentityDifference(a, a), "");
 }
 
 TEST(SweepRecord, ShardsMergeIntoTheWholeRecord) {
