@@ -1,7 +1,8 @@
 // Virtual shadow maps (spatial/virtual_shadow_map.h, spatial/harness/page_shading.h): the page
 // size and pool at the single map's budget, page matrices that tile their level, the clipmap's
 // window about the camera, and on shipped scenes a pool never exceeded, the most requested pages
-// kept, and every frame pixel served at a level within one of what its own footprint asks for.
+// kept, every readback pixel served at the level its footprint asks for, and all but a few in a
+// thousand frame pixels within one level of it.
 #include "lexel/spatial/virtual_shadow_map.h"
 
 #include <gtest/gtest.h>
@@ -191,15 +192,61 @@ TEST(VirtualShadowMap, FramePixelsAreServedAtTheLevelTheirFootprintAsksFor) {
             }
             EXPECT_EQ(finer, 0) << what;
             EXPECT_EQ(uncovered, 0) << what;  // the coarsest page covers every visible point
-            // At the footprint's own level: nearly every pixel; within one level: all but a
-            // few in a thousand, the rest coarser still (pixels between readback samples, at
-            // depth edges, whose own page and the next no readback pixel asked for).
+            // At the footprint's own level: nearly every pixel; within one level: all but a few in
+            // a thousand (measured over these 18 lights: 99.96% of the pixels, the worst light
+            // 99.75%: 115 of 46,184 coarser still on a street light): frame pixels between the 180²
+            // readback's samples, at depth edges and on slivers, whose own page no readback pixel
+            // asked for (every readback pixel is served at its own level: the next test).
             EXPECT_GE(own, counted * 98 / 100) << what << ": " << own << " of " << counted;
-            EXPECT_GE(own + oneCoarser, counted * 995 / 1000)
+            EXPECT_GE(own + oneCoarser, counted * 997 / 1000)
                 << what << ": " << own + oneCoarser << " of " << counted;
             std::cout << what << ": " << own << " of " << counted << " at their level, "
                       << oneCoarser << " one coarser, " << counted - own - oneCoarser
                       << " coarser still, bias " << v.lodBias << "\n";
+        }
+    }
+}
+
+// The same check, exact, for the pixels that ask: with the pool fitted (the bias raised until every
+// request is resident), every readback pixel that faces the light is served at the level its
+// footprint asks for, and the serving page's own w_l/w_i there (measured on the page's matrix)
+// over 2^bias is in [1, 2): the page's texels are at most as wide as the frame pixel there, and
+// more than half as wide.
+TEST(VirtualShadowMap, EveryReadbackPixelIsServedAtItsOwnLevel) {
+    for (const char* file : {"walkthrough.json", "courtyard.json", "street.json"}) {
+        const Fixture f(file);
+        const Readback& readback = f.evaluator.readback();
+        for (const Light& light : f.Lights(3)) {
+            const std::string what = std::string(file) + " " + cases::LightLabel(light);
+            const LightSpace lightSpace(light, f.evaluator.bounds());
+            const VirtualShadowMap v = BuildVirtualShadowMap(f.Context(lightSpace), readback);
+            ASSERT_EQ(v.dropped, 0) << what;
+            std::int64_t asked = 0;
+            for (std::size_t i = 0; i < readback.buffer.triangle.size(); ++i) {
+                if (!readback.buffer.Covered(i)) continue;
+                const glm::dvec3& ws = readback.buffer.wsPosition[i];
+                if (!(glm::dot(readback.buffer.wsNormal[i], lightSpace.DirectionToLight(ws)) > 0.0))
+                    continue;
+                const std::optional<double> footprint =
+                    FootprintLevel(v.layout, f.scene.camera, lightSpace, ws);
+                ASSERT_TRUE(footprint) << what;
+                const int wanted = RequestedLevel(v.layout, *footprint, v.lodBias);
+                if (wanted <= v.layout.minLevel || wanted >= v.layout.maxLevel) continue;
+                if (!v.layout.PageAt(wanted, lightSpace.ToLight(ws))) continue;  // outside a clip
+                ++asked;
+                int level = 0;
+                const std::optional<std::size_t> page =
+                    v.ServingPage(f.scene.camera, lightSpace, ws, &level);
+                ASSERT_TRUE(page) << what << " readback pixel " << i;
+                ASSERT_EQ(level, wanted) << what << " readback pixel " << i;
+                const double ratio =
+                    PerspectiveAliasing(f.scene.camera, lightSpace,
+                                        v.layout.PageMatrix(v.resident[*page]), ws) /
+                    std::exp2(v.lodBias);
+                ASSERT_GE(ratio, 1.0 - 1e-9) << what << " readback pixel " << i;
+                ASSERT_LT(ratio, 2.0 + 1e-9) << what << " readback pixel " << i;
+            }
+            EXPECT_GT(asked, 10000) << what;
         }
     }
 }
