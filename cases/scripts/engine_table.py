@@ -2,23 +2,23 @@
 """Summarize phase-averaged `lexel sweep --out DIR` runs of several methods against one (RESULTS.md,
 "What engines ship"; cases/scripts/engine_table.sh runs the sweeps).
 
-Usage: engine_table.py [--reference METHOD] [--shimmer RUN.json] DIR [DIR ...]
-       (each DIR a sweep's --out directory, holding lights.csv; RUN.json a `lexel run
-       --format json` of a case with a camera_path)
+Usage: engine_table.py [--reference METHOD] DIR [DIR ...]
+       (each DIR a sweep's --out directory, holding lights.csv)
 
 Prints two Markdown tables. Pooled over every light of every DIR, one row per method: its mean
 phase-averaged misclassified pixels; the paired difference against the reference (default
 `optimal`; per light this − reference, mean ± 95% half-width over the lights, Student t, as a % of
 the reference's mean); the % of lights on which it has fewer (won) and more (lost) misclassified
 pixels than the reference beyond the noise of the two phase means (|difference| > 1.96 ×
-√(se² + se_ref²), as `lexel sweep` counts wins); the median effective storage factor; the mean
-time per light in ms and as a multiple of the reference's in the same sweeps; with --shimmer, its
-shimmer along the camera path (mean over the run's lights, % of stable pixels per step). Then the
+√(se² + se_ref²), as `lexel sweep` counts wins); the median over the lights of the effective
+storage factor from each light's worst pixel and from its 99th-percentile pixel; the mean
+time per light in ms and as a multiple of the reference's in the same sweeps; where every sweep
+ran with --shimmer-poses, its shimmer along the case's camera path (the mean over the lights of
+lights.csv's <method>_shimmer, % of stable pixels per step). Then the
 residual noise (the median over lights and methods of a light's standard error over its mean) and
 one row per DIR: each method's paired difference against the reference. Bad input: one line, exit
 status 2.
 """
-import json
 import math
 import os
 import statistics
@@ -28,7 +28,9 @@ sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fair_table import fail, mean_ci, parse_args, read_rows  # noqa: E402
 
-MEAN, SE, STORAGE, MS = "_misclassified_mean", "_misclassified_se", "_storage_factor", "_ms"
+MEAN, SE, MS = "_misclassified_mean", "_misclassified_se", "_ms"
+STORAGE, STORAGE99 = "_storage_factor", "_storage_factor_p99"
+SHIMMER = "_shimmer"  # only in sweeps run with --shimmer-poses
 
 
 def read_set(d, reference):
@@ -38,12 +40,16 @@ def read_set(d, reference):
     def column(m, suffix):
         # Only a storage factor may be empty (no pixel measured); it is left out of the median.
         try:
-            return [math.nan if r[m + suffix] == "" and suffix == STORAGE else float(r[m + suffix])
+            return [math.nan if r[m + suffix] == "" and suffix in (STORAGE, STORAGE99)
+                    else float(r[m + suffix])
                     for r in rows]
         except (KeyError, ValueError):
             fail(f"{d}/lights.csv: {m}{suffix} is missing or not a number")
 
-    return {m: {s: column(m, s) for s in (MEAN, SE, STORAGE, MS)} for m in methods}
+    def suffixes(m):
+        return (MEAN, SE, STORAGE, STORAGE99, MS) + ((SHIMMER,) if m + SHIMMER in rows[0] else ())
+
+    return {m: {s: column(m, s) for s in suffixes(m)} for m in methods}
 
 
 def paired_percent(ours, ref):
@@ -64,35 +70,24 @@ def wins(cells, ref):
     return f"{100 * won / n:.0f}% / {100 * lost / n:.0f}%"
 
 
-def read_shimmer(path):
-    try:
-        with open(path) as f:
-            run = json.load(f)
-    except (OSError, ValueError) as e:
-        fail(f"--shimmer {path}: cannot read it as JSON ({e})")
-    studies = run.get("camera_path") if isinstance(run, dict) else None
-    if not studies:
-        fail(f"--shimmer {path}: no camera_path (run a case that has one, --format json)")
-    per_method = {}
-    for study in studies:
-        for m, v in study.get("shimmer_percent", {}).items():
-            per_method.setdefault(m, []).append(v)
-    return {m: sum(v) / len(v) for m, v in per_method.items()}
+def median(values):
+    finite = [v for v in values if math.isfinite(v)]
+    return f"{statistics.median(finite):.3g}" if finite else "–"
 
 
 def pooled(sets, m, suffix):
     return [v for s in sets for v in s[m][suffix]]
 
 
-def main(reference, shimmer_path, dirs):
+def main(reference, dirs):
     sets = [read_set(d, reference) for d in dirs]
     methods = [m for m in sets[0] if all(m in s for s in sets)]
-    shimmer = read_shimmer(shimmer_path) if shimmer_path else None
+    with_shimmer = all(SHIMMER in s[m] for s in sets for m in methods)
     lights = sum(len(s[reference][MEAN]) for s in sets)
     head = ["method", "mean misclassified", f"vs {reference}",
-            f"lights won / lost vs {reference}", "median storage factor",
+            f"lights won / lost vs {reference}", "median storage factor (max, p99)",
             f"ms per light (× {reference})"]
-    if shimmer is not None:
+    if with_shimmer:
         head.append("shimmer (%)")
     print(f"Pooled over {len(dirs)} {'set' if len(dirs) == 1 else 'sets'}, {lights} lights:\n")
     print("| " + " | ".join(head) + " |")
@@ -100,15 +95,14 @@ def main(reference, shimmer_path, dirs):
     ref = {s: pooled(sets, reference, s) for s in (MEAN, SE)}
     ref_ms = sum(pooled(sets, reference, MS)) or math.nan
     for m in methods:
-        cells = {s: pooled(sets, m, s) for s in (MEAN, SE, STORAGE, MS)}
-        storage = [v for v in cells[STORAGE] if math.isfinite(v)]
+        cells = {s: pooled(sets, m, s) for s in (MEAN, SE, STORAGE, STORAGE99, MS)}
         row = [m, f"{sum(cells[MEAN]) / lights:.0f}",
                "–" if m == reference else paired_percent(cells[MEAN], ref[MEAN]),
                "–" if m == reference else wins(cells, ref),
-               f"{statistics.median(storage):.3g}" if storage else "–",
+               f"{median(cells[STORAGE])}, {median(cells[STORAGE99])}",
                f"{sum(cells[MS]) / lights:.2f} ({sum(cells[MS]) / ref_ms:.2g}×)"]
-        if shimmer is not None:
-            row.append(f"{shimmer[m]:.3f}" if m in shimmer else "–")
+        if with_shimmer:
+            row.append(f"{sum(pooled(sets, m, SHIMMER)) / lights:.3f}")
         print("| " + " | ".join(row) + " |")
     noise = [se / mean for s in sets for m in methods
              for mean, se in zip(s[m][MEAN], s[m][SE]) if mean > 0]
@@ -128,8 +122,7 @@ def main(reference, shimmer_path, dirs):
 
 
 if __name__ == "__main__":
-    usage = "usage: engine_table.py [--reference METHOD] [--shimmer RUN.json] DIR ..."
-    values, dirs = parse_args(sys.argv[1:], {"--reference": "method name", "--shimmer": "file"},
-                              usage)
+    usage = "usage: engine_table.py [--reference METHOD] DIR ..."
+    values, dirs = parse_args(sys.argv[1:], {"--reference": "method name"}, usage)
     reference = values["--reference"][-1] if values["--reference"] else "optimal"
-    main(reference, values["--shimmer"][-1] if values["--shimmer"] else None, dirs)
+    main(reference, dirs)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The table of what engines ship (RESULTS.md, "What engines ship"): every shipped 3D case's
 # point and directional lights (lexel sweep), each method's phase-averaged misclassified pixels
-# against `optimal`, its effective storage factor and its cost, and the shimmer along the
-# walkthrough's camera path (lexel run); then cases/scripts/engine_table.py prints the tables.
+# against `optimal`, its effective storage factor, its cost and its shimmer along the first three
+# poses of the case's camera path; then cases/scripts/engine_table.py prints the tables.
 #
 # Usage: cases/scripts/engine_table.sh LEXEL OUTDIR [LIGHTS [PHASES]]   (defaults 100 and 8)
 # Run from the repository root. About 35 minutes on 2 cores with the defaults; each sweep shows
@@ -22,10 +22,8 @@ for scene in walkthrough courtyard street meshes; do
     for type in point directional; do
         dir="$out/${scene}_$type"
         "$lexel" sweep "cases/spatial/$scene.json" --lights "$lights" --light-type "$type" \
-            --phases "$phases" "${args[@]}" --out "$dir" > "$dir.txt"
+            --phases "$phases" --shimmer-poses 3 "${args[@]}" --out "$dir" > "$dir.txt"
         dirs+=("$dir")
     done
 done
-"$lexel" run cases/spatial/walkthrough.json --no-map-truth "${args[@]}" --format json \
-    > "$out/walkthrough_path.json"
-python3 "$(dirname "$0")/engine_table.py" --shimmer "$out/walkthrough_path.json" "${dirs[@]}"
+python3 "$(dirname "$0")/engine_table.py" "${dirs[@]}"
