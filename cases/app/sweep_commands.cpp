@@ -244,6 +244,9 @@ int SweepCommand(const SweepFlags& flags) {
         throw InputError("--shimmer-poses: " + std::to_string(flags.shimmerPoses) +
                          " poses, but the case's camera_path has " +
                          std::to_string(scene.cameraPath.size()));
+    if (const std::string excess = SweepMemoryExcess(scene, methods.size(), flags.shimmerPoses);
+        flags.shimmerPoses > 0 && !excess.empty())
+        throw InputError("--shimmer-poses: the sweep " + excess);
     const BackendKind backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(methods, backend);
     const ReportTable1 report =

@@ -62,6 +62,9 @@ SweepIdentity ParseIdentity(const JsonField& f) {
     id.cascades = static_cast<int>(f["cascades"].Integer(0, 1 << 20));
     id.phases = static_cast<int>(f["phases"].Integer(1, spatial::kMaxPhases));
     id.shimmerPoses = static_cast<int>(f["shimmer_poses"].Integer(0, kMaxShimmerPoses));
+    if (id.shimmerPoses == 1)
+        f["shimmer_poses"].Fail("must be 0 (none) or 2 ... " + std::to_string(kMaxShimmerPoses) +
+                                ", got 1");
     id.lights = static_cast<std::size_t>(f["lights"].Integer(0, kMaxCount));
     id.lightsHash = f["lights_fnv1a64"].String();
     return id;

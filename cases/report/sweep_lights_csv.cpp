@@ -34,9 +34,9 @@ std::function<CellValue(const LightRow&)> CellField(std::size_t m, T SweepCell::
 }
 
 // The columns of lights.csv: the light, then per method its misclassified pixels (phase 0's), h,
-// e and time; over several phases the mean and standard error; with shimmer poses the shimmer;
-// the multi-start methods' winning
-// start; the virtual shadow maps' pages.
+// e, time and storage factors (worst and 99th-percentile pixel); over several phases the mean and
+// standard error; with shimmer poses the shimmer; the multi-start methods' winning start; the
+// virtual shadow maps' pages.
 ColumnTable<LightRow> LightColumns(const SweepResult& r) {
     const auto position = [](int axis) {
         return [axis](const LightRow& row) {

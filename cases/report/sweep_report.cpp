@@ -805,6 +805,7 @@ nlohmann::json SweepJson(const SweepResult& r) {
     doc["case"] = r.caseName;
     doc["lights"] = r.lights.size();
     doc["phases"] = r.phases;
+    doc["shimmer_poses"] = r.shimmerPoses;
     if (const auto view = ReportView(r)) doc["report_table"] = ViewJson(r, *view, true);
     if (const auto view = FairView(r)) doc["fair_table"] = ViewJson(r, *view, false);
     if (const auto view = EqualTexelView(r)) doc["equal_texel_table"] = ViewJson(r, *view, false);

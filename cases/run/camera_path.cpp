@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 #include <span>
+#include <stdexcept>
 
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/run/evaluator_setup.h"
@@ -106,6 +107,9 @@ double ShimmerPercent(std::span<const spatial::Shade> before,
                       std::span<const std::uint8_t> truthBefore,
                       std::span<const spatial::Shade> after,
                       std::span<const std::uint8_t> truthAfter) {
+    if (before.size() != after.size() || truthBefore.size() != after.size() ||
+        truthAfter.size() != after.size())
+        throw std::invalid_argument("ShimmerPercent: the two poses' frames differ in size");
     std::int64_t stable = 0, flipped = 0;
     for (std::size_t i = 0; i < after.size(); ++i) {
         if (!Counted(before[i]) || !Counted(after[i]) || truthBefore[i] != truthAfter[i]) continue;

@@ -20,7 +20,7 @@ namespace lexel::cases {
 
 // The shimmering share between two poses, in percent: of the pixels counted (lit or shadowed) at
 // both with the same ray truth at both, those whose decision differs (0 when there are none).
-// The four spans are per frame pixel, of one size.
+// The four spans are per frame pixel, of one size (std::invalid_argument otherwise).
 double ShimmerPercent(std::span<const spatial::Shade> before,
                       std::span<const std::uint8_t> truthBefore,
                       std::span<const spatial::Shade> after,

@@ -11,6 +11,7 @@
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/camera_path.h"
 #include "lexel/cases/run/evaluator_setup.h"
+#include "lexel/cases/run/spatial_run.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/harness/evaluation.h"
@@ -42,10 +43,10 @@ std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights,
 
 namespace {
 
-// Lights evaluated at once: as many as there are, unless their buffers together would exceed the
-// memory budget (memory_budget.h) beside the case camera's and the shimmer poses' frames; at
-// least one (the loader refused cases where one does not fit without poses).
-int LightsInFlight(const spatial::Scene& scene, std::size_t methods, int shimmerPoses) {
+// What one light's evaluation and the frames shared by all need (with shimmer poses, one frame
+// per pose beside the case camera's, and the shades kept).
+spatial::EvaluationMemory SweepMemory(const spatial::Scene& scene, std::size_t methods,
+                                      int shimmerPoses) {
     spatial::EvaluationSizes sizes;
     sizes.frame = scene.camera.resolution;
     sizes.readback = scene.readback;
@@ -53,10 +54,26 @@ int LightsInFlight(const spatial::Scene& scene, std::size_t methods, int shimmer
     sizes.triangles = scene.geometry.triangles.size();
     sizes.methods = static_cast<int>(methods);
     sizes.keepBuffers = shimmerPoses > 0;  // the poses' shades
-    const spatial::EvaluationMemory memory = spatial::EstimateEvaluationMemory(sizes);
-    const double frames = 1.0 + shimmerPoses;
-    const double fit = std::floor((kMemoryBudgetBytes - frames * memory.shared) / memory.perLight);
+    spatial::EvaluationMemory memory = spatial::EstimateEvaluationMemory(sizes);
+    memory.shared *= 1.0 + shimmerPoses;
+    return memory;
+}
+
+// Lights evaluated at once: as many as there are, unless their buffers together would exceed the
+// memory budget (memory_budget.h) beside the shared frames; at least one (the loader refused
+// cases where one does not fit without poses, SweepMemoryExcess those that do not with them).
+int LightsInFlight(const spatial::Scene& scene, std::size_t methods, int shimmerPoses) {
+    const spatial::EvaluationMemory memory = SweepMemory(scene, methods, shimmerPoses);
+    const double fit = std::floor((kMemoryBudgetBytes - memory.shared) / memory.perLight);
     return static_cast<int>(std::clamp(fit, 1.0, 1e9));
+}
+
+// The methods the shimmer is measured for: a case's own matrices (Scene::methods) are given for
+// the case camera alone and do not refit along the path, so they have none (NaN), as lexel run's
+// camera-path study leaves them out.
+std::vector<std::string> ShimmerMethods(const spatial::Scene& scene,
+                                        const std::vector<std::string>& methods) {
+    return CameraPathMethods(scene, methods);
 }
 
 // The poses the shimmer is measured over: none for shimmerPoses 0.
@@ -65,13 +82,20 @@ PathPoses ShimmerPoses(const spatial::Scene& scene, const spatial::RenderBackend
     if (shimmerPoses == 0) return {};
     if (shimmerPoses < 2 || shimmerPoses > kMaxShimmerPoses ||
         static_cast<std::size_t>(shimmerPoses) > scene.cameraPath.size())
-        throw InputError("/camera_path: the shimmer along " + std::to_string(shimmerPoses) +
-                         " poses needs that many (2 ... " + std::to_string(kMaxShimmerPoses) +
-                         "), the case has " + std::to_string(scene.cameraPath.size()));
+        throw InputError("/camera_path: the shimmer is measured along 2 to " +
+                         std::to_string(kMaxShimmerPoses) + " of its poses; asked for " +
+                         std::to_string(shimmerPoses) + ", the case has " +
+                         std::to_string(scene.cameraPath.size()));
     return MakePathPoses(scene, backend, static_cast<std::size_t>(shimmerPoses));
 }
 
 }  // namespace
+
+std::string SweepMemoryExcess(const spatial::Scene& scene, std::size_t methods, int shimmerPoses) {
+    return MemoryBudgetExcess(SweepMemory(scene, methods, shimmerPoses).Total(1),
+                              std::to_string(shimmerPoses) + " camera_path frames besides the " +
+                                  "camera's, one light in flight");
+}
 
 SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>& methods,
                      const std::vector<Light>& lights, const SweepLightDone& onLightDone,
@@ -80,7 +104,9 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     const Stopwatch timer;
     const auto backend = MakeRenderBackend(backendKind, scene.geometry);
     const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
-    const PathPoses poses = ShimmerPoses(scene, *backend, shimmerPoses);
+    // No poses to render when no light is left to evaluate (a resumed sweep that had finished).
+    const PathPoses poses = ShimmerPoses(scene, *backend, lights.empty() ? 0 : shimmerPoses);
+    const std::vector<std::string> shimmerMethods = ShimmerMethods(scene, methods);
     SweepResult r;
     r.caseName = scene.name;
     r.methods = methods;
@@ -116,9 +142,12 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
             } catch (const DomainError& e) {
                 throw InputError(SpatialErrorField(e, light) + ": " + e.what());
             }
-            const std::vector<double> shimmer =
-                poses.evaluators.empty() ? std::vector<double>{}
-                                         : ShimmerAlong(poses, lights[l], lightOptions, light);
+            std::vector<double> shimmer;  // per shimmerMethods
+            if (!poses.evaluators.empty()) {
+                spatial::EvaluationOptions poseOptions = options;
+                poseOptions.methods = shimmerMethods;
+                shimmer = ShimmerAlong(poses, lights[l], poseOptions, light);
+            }
             for (std::size_t m = 0; m < methods.size(); ++m) {
                 const spatial::MethodOutcome& o = outcome.methods[m];
                 r.cells[l][m] = {o.metrics.misclassified,
@@ -136,7 +165,10 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                 r.cells[l][m].misclassifiedError = o.metrics.misclassifiedError;
                 r.cells[l][m].e = o.metrics.e;
                 r.cells[l][m].storageFactorP99 = o.metrics.storageFactorP99;
-                if (!shimmer.empty()) r.cells[l][m].shimmer = shimmer[m];
+                const auto path =
+                    std::find(shimmerMethods.begin(), shimmerMethods.end(), methods[m]);
+                if (!shimmer.empty() && path != shimmerMethods.end())
+                    r.cells[l][m].shimmer = shimmer[path - shimmerMethods.begin()];
                 if (o.pages) {
                     SweepCell& c = r.cells[l][m];
                     c.cascades = static_cast<int>(o.pages->resident);

@@ -43,7 +43,8 @@ struct SweepCell {
     // The edge energy e (MethodOutcome::e; NaN for warped and virtual maps).
     double e = std::numeric_limits<double>::quiet_NaN();
     // With shimmer poses (RunSweep): the shimmer along the camera path's first poses, in % of the
-    // stable pixels per step (ShimmerAlong, camera_path.h); NaN when not measured.
+    // stable pixels per step (ShimmerAlong, camera_path.h); NaN when not measured and for a case's
+    // own matrices (Scene::methods: given for the case camera alone, they do not refit).
     double shimmer = std::numeric_limits<double>::quiet_NaN();
 };
 
@@ -88,6 +89,10 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                      const SweepLightDone& onLightDone = {},
                      BackendKind backend = BackendKind::kCpu,
                      const std::vector<std::size_t>& indices = {}, int shimmerPoses = 0);
+
+// With `shimmerPoses` pose frames besides the camera's (RunSweep) and one light in flight:
+// MemoryBudgetExcess's text when the sweep exceeds the memory budget, else empty.
+std::string SweepMemoryExcess(const spatial::Scene& scene, std::size_t methods, int shimmerPoses);
 
 // "point (x, y, z)" or "directional (x, y, z)", 4 significant digits.
 std::string LightLabel(const spatial::Light& light);

@@ -3,7 +3,8 @@
 "What engines ship"; cases/scripts/engine_table.sh runs the sweeps).
 
 Usage: engine_table.py [--reference METHOD] DIR [DIR ...]
-       (each DIR a sweep's --out directory, holding lights.csv)
+       (each DIR a sweep's --out directory, holding lights.csv, from a lexel sweep --phases K:
+       one written before the sweep kept <method>_storage_factor_p99 is refused)
 
 Prints two Markdown tables. Pooled over every light of every DIR, one row per method: its mean
 phase-averaged misclassified pixels; the paired difference against the reference (default

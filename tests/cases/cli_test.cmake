@@ -538,10 +538,49 @@ list(GET rows 0 header)
 if(NOT header MATCHES ",focused_shimmer,.*,tsm_shimmer(,|$)")
     message(FATAL_ERROR "lights.csv with --shimmer-poses: ${header}")
 endif()
+# Shards of one walk merge with their shimmer; a shard of another walk (no shimmer) is refused.
+foreach(k 0 1)
+    expect_run(0 "" "" sweep "${WORK}/small_walking.json" --lights 2 --methods focused
+               --methods tsm --shimmer-poses 2 --shard ${k}/2 --out "${WORK}/walk_shard${k}")
+endforeach()
+expect_run(0 "" "" merge "${WORK}/walk_shard0" "${WORK}/walk_shard1" --out "${WORK}/walk_merged")
+# The merged lights.csv holds the whole sweep's shimmer, light for light.
+file(STRINGS "${WORK}/sweep_shimmer/lights.csv" whole)
+file(STRINGS "${WORK}/walk_merged/lights.csv" merged)
+list(GET whole 0 header)
+string(REPLACE "," ";" columns "${header}")
+list(FIND columns focused_shimmer at)
+foreach(l 1 2)
+    list(GET whole ${l} a)
+    list(GET merged ${l} b)
+    string(REPLACE "," ";" a "${a}")
+    string(REPLACE "," ";" b "${b}")
+    list(GET a ${at} shimmerWhole)
+    list(GET b ${at} shimmerMerged)
+    if(at EQUAL -1 OR NOT shimmerWhole STREQUAL shimmerMerged)
+        message(FATAL_ERROR "light ${l}: shimmer ${shimmerMerged} merged, ${shimmerWhole} whole")
+    endif()
+endforeach()
+expect_run(0 "" "" sweep "${WORK}/small_walking.json" --lights 2 --methods focused
+           --methods tsm --shard 1/2 --out "${WORK}/still_shard1")
+expect_run(2 "^$" "they differ in shimmer poses \\('2' vs '0'\\)"
+           merge "${WORK}/walk_shard0" "${WORK}/still_shard1" --out "${WORK}/refused_walk")
 expect_run(2 "^$" "^lexel: error: --shimmer-poses: 3 poses, but the case's camera_path has 2\n$"
            sweep "${WORK}/small_walking.json" --lights 2 --methods focused --shimmer-poses 3)
 expect_run(2 "^$" "^lexel: error: --shimmer-poses: 2 poses, but the case's camera_path has 0\n$"
            sweep "${small}" --lights 2 --methods focused --shimmer-poses 2)
+# Each pose keeps its frame: 16 of 4000² exceed the memory budget, refused before any is made.
+set(poses "")
+foreach(k RANGE 15)
+    string(APPEND poses "${comma}{\"position\": [0, 3, -9.${k}], \"target\": [0, 0.5, 0]}")
+    set(comma ", ")
+endforeach()
+string(JSON bigWalk SET "${smallText}" camera_path "[${poses}]")
+string(JSON bigWalk SET "${bigWalk}" camera width 4000)
+string(JSON bigWalk SET "${bigWalk}" camera height 4000)
+file(WRITE "${WORK}/big_walk.json" "${bigWalk}")
+expect_run(2 "^$" "^lexel: error: --shimmer-poses: the sweep needs about [0-9.]+ GiB \\(16 camera_path frames besides the camera's, one light in flight\\), above lexel's memory budget of 8 GiB\n$"
+           sweep "${WORK}/big_walk.json" --lights 2 --methods focused --shimmer-poses 16)
 expect_run(2 "^$" "--shimmer-poses: Value 1 not in range 2 to 16"
            sweep "${small}" --lights 2 --methods focused --shimmer-poses 1)
 file(READ "${WORK}/sweep/table1.csv" written)

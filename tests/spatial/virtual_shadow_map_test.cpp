@@ -208,10 +208,11 @@ TEST(VirtualShadowMap, FramePixelsAreServedAtTheLevelTheirFootprintAsksFor) {
 }
 
 // The same check, exact, for the pixels that ask: with the pool fitted (the bias raised until every
-// request is resident), every readback pixel that faces the light is served at the level its
-// footprint asks for, and the serving page's own w_l/w_i there (measured on the page's matrix)
-// over 2^bias is in [1, 2): the page's texels are at most as wide as the frame pixel there, and
-// more than half as wide.
+// request is resident), every readback pixel that faces the light and asks for an interior level
+// (not the finest or the coarsest, whose clamp the test above skips too, and inside its clipmap
+// window) is served at that level — by construction once nothing is dropped — and what the test
+// measures independently: the serving page's own w_l/w_i there (on the page's matrix) over
+// 2^bias is in [1, 2), its texels at most as wide as the frame pixel there and more than half.
 TEST(VirtualShadowMap, EveryReadbackPixelIsServedAtItsOwnLevel) {
     for (const char* file : {"walkthrough.json", "courtyard.json", "street.json"}) {
         const Fixture f(file);
