@@ -15,7 +15,8 @@ pixels than the reference beyond the noise of the two phase means (|difference| 
 storage factor from each light's worst pixel and from its 99th-percentile pixel; the mean
 time per light in ms and as a multiple of the reference's in the same sweeps; where every sweep
 ran with --shimmer-poses, its shimmer along the case's camera path (the mean over the lights of
-lights.csv's <method>_shimmer, % of stable pixels per step). Then the
+lights.csv's <method>_shimmer, % of stable pixels per step) and its paired difference against the
+reference's (as a % of the reference's mean shimmer). Then the
 residual noise (the median over lights and methods of a light's standard error over its mean) and
 one row per DIR: each method's paired difference against the reference. Bad input: one line, exit
 status 2.
@@ -103,7 +104,10 @@ def main(reference, dirs):
                f"{median(cells[STORAGE])}, {median(cells[STORAGE99])}",
                f"{sum(cells[MS]) / lights:.2f} ({sum(cells[MS]) / ref_ms:.2g}×)"]
         if with_shimmer:
-            row.append(f"{sum(pooled(sets, m, SHIMMER)) / lights:.3f}")
+            shimmer = pooled(sets, m, SHIMMER)
+            row.append(f"{sum(shimmer) / lights:.3f}" + (
+                "" if m == reference else
+                f" ({paired_percent(shimmer, pooled(sets, reference, SHIMMER))})"))
         print("| " + " | ".join(row) + " |")
     noise = [se / mean for s in sets for m in methods
              for mean, se in zip(s[m][MEAN], s[m][SE]) if mean > 0]

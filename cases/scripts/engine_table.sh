@@ -5,7 +5,7 @@
 # poses of the case's camera path; then cases/scripts/engine_table.py prints the tables.
 #
 # Usage: cases/scripts/engine_table.sh LEXEL OUTDIR [LIGHTS [PHASES]]   (defaults 100 and 8)
-# Run from the repository root. About 35 minutes on 2 cores with the defaults; each sweep shows
+# Run from the repository root. About an hour on 2 cores with the defaults; each sweep shows
 # its progress on a terminal.
 set -euo pipefail
 if [[ $# -lt 2 || $# -gt 4 ]]; then
