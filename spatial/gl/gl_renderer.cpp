@@ -440,7 +440,11 @@ void GlRenderer::RenderWarpedShadowMap(int map, const LightSpace& lightSpace, co
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, warpTriangleBuffer_);
     glBindVertexArray(warpVertexArray_);
     glPatchParameteri(GL_PATCH_VERTICES, 3);
-    glDrawArrays(GL_PATCHES, 0, static_cast<GLsizei>(pieces.unitVertices.size()));
+    const std::vector<std::size_t> batches =
+        WarpDrawBatches(pieces.longestEdge, kWarpSegmentTexels, maxTessLevel_);
+    for (std::size_t b = 0; b + 1 < batches.size(); ++b)  // gl_VertexID counts from `first`
+        glDrawArrays(GL_PATCHES, static_cast<GLint>(3 * batches[b]),
+                     static_cast<GLsizei>(3 * (batches[b + 1] - batches[b])));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDisable(GL_DEPTH_CLAMP);
     EndPass();

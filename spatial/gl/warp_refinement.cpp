@@ -46,6 +46,13 @@ struct Refiner {
     void Emit(const std::array<Vertex, 3>& v, std::int32_t triangle) const {
         for (const Vertex& x : v) out->unitVertices.push_back(glm::vec3(x.unit));
         out->triangle.push_back(triangle);
+        double longest = std::numeric_limits<double>::infinity();
+        if (v[0].texel && v[1].texel && v[2].texel) {
+            longest = 0.0;
+            for (int k = 0; k < 3; ++k)
+                longest = std::max(longest, glm::length(*v[k].texel - *v[(k + 1) % 3].texel));
+        }
+        out->longestEdge.push_back(longest);
     }
 
     void Refine(const std::array<Vertex, 3>& v, std::int32_t triangle, int depth) const {
@@ -61,6 +68,28 @@ struct Refiner {
 };
 
 }  // namespace
+
+std::vector<std::size_t> WarpDrawBatches(std::span<const double> longestEdge, double segmentTexels,
+                                         double maxLevel) {
+    std::vector<std::size_t> starts;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < longestEdge.size(); ++i) {
+        // The control stage's level (warp_shaders.h): ceil(length / segment) in [1, maxLevel];
+        // NaN and +inf (behind the light's plane) at maxLevel.
+        const double level =
+            longestEdge[i] <= maxLevel * segmentTexels
+                ? std::clamp(std::ceil(longestEdge[i] / segmentTexels), 1.0, maxLevel)
+                : maxLevel;
+        const double triangles = level * level;
+        if (starts.empty() || sum + triangles > kMaxTessTrianglesPerDraw) {
+            starts.push_back(i);
+            sum = 0.0;
+        }
+        sum += triangles;
+    }
+    starts.push_back(longestEdge.size());
+    return starts;
+}
 
 WarpPieces RefineForWarp(std::span<const glm::vec3> unitPositions,
                          std::span<const glm::uvec3> triangles, const glm::dmat4& clipFromUnit,

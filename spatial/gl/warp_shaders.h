@@ -12,7 +12,7 @@
 //     texel centre's ray (warp.Inverse of the texel centre: the base coordinates of each column
 //     and row centre, in double, in a second buffer) to the patch's triangle plane, in double.
 // Where the tessellated triangles' straight edges miss the warp's curve the GPU map's coverage
-// differs from the ray-cast map's (measured: gl_tests, RtwOnGl).
+// differs from the ray-cast map's (measured: gl_tests, GlTest.Rtw*).
 #pragma once
 
 #include <string_view>
