@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "lexel/cases/load/memory_budget.h"
@@ -68,12 +69,21 @@ int LightsInFlight(const spatial::Scene& scene, std::size_t methods, int shimmer
     return static_cast<int>(std::clamp(fit, 1.0, 1e9));
 }
 
-// The methods the shimmer is measured for: a case's own matrices (Scene::methods) are given for
-// the case camera alone and do not refit along the path, so they have none (NaN), as lexel run's
-// camera-path study leaves them out.
-std::vector<std::string> ShimmerMethods(const spatial::Scene& scene,
-                                        const std::vector<std::string>& methods) {
-    return CameraPathMethods(scene, methods);
+// Per method of `methods`, the shimmer of `light` along `poses` (ShimmerAlong); NaN for a case's
+// own matrices (Scene::methods), which are given for the case camera alone and do not refit along
+// the path (lexel run's study leaves them out likewise: CameraPathMethods). Empty without poses.
+std::vector<double> LightShimmer(const PathPoses& poses, const spatial::Scene& scene,
+                                 const std::vector<std::string>& methods,
+                                 spatial::EvaluationOptions options, const Light& light,
+                                 const std::string& lightField) {
+    if (poses.evaluators.empty()) return {};
+    options.methods = CameraPathMethods(scene, methods);
+    const std::vector<double> along = ShimmerAlong(poses, light, options, lightField);
+    std::vector<double> shimmer(methods.size(), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t k = 0; k < along.size(); ++k)
+        shimmer[std::find(methods.begin(), methods.end(), options.methods[k]) - methods.begin()] =
+            along[k];
+    return shimmer;
 }
 
 // The poses the shimmer is measured over: none for shimmerPoses 0.
@@ -106,7 +116,6 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
     // No poses to render when no light is left to evaluate (a resumed sweep that had finished).
     const PathPoses poses = ShimmerPoses(scene, *backend, lights.empty() ? 0 : shimmerPoses);
-    const std::vector<std::string> shimmerMethods = ShimmerMethods(scene, methods);
     SweepResult r;
     r.caseName = scene.name;
     r.methods = methods;
@@ -142,12 +151,8 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
             } catch (const DomainError& e) {
                 throw InputError(SpatialErrorField(e, light) + ": " + e.what());
             }
-            std::vector<double> shimmer;  // per shimmerMethods
-            if (!poses.evaluators.empty()) {
-                spatial::EvaluationOptions poseOptions = options;
-                poseOptions.methods = shimmerMethods;
-                shimmer = ShimmerAlong(poses, lights[l], poseOptions, light);
-            }
+            const std::vector<double> shimmer =
+                LightShimmer(poses, scene, methods, options, lights[l], light);
             for (std::size_t m = 0; m < methods.size(); ++m) {
                 const spatial::MethodOutcome& o = outcome.methods[m];
                 r.cells[l][m] = {o.metrics.misclassified,
@@ -165,10 +170,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                 r.cells[l][m].misclassifiedError = o.metrics.misclassifiedError;
                 r.cells[l][m].e = o.metrics.e;
                 r.cells[l][m].storageFactorP99 = o.metrics.storageFactorP99;
-                const auto path =
-                    std::find(shimmerMethods.begin(), shimmerMethods.end(), methods[m]);
-                if (!shimmer.empty() && path != shimmerMethods.end())
-                    r.cells[l][m].shimmer = shimmer[path - shimmerMethods.begin()];
+                if (!shimmer.empty()) r.cells[l][m].shimmer = shimmer[m];
                 if (o.pages) {
                     SweepCell& c = r.cells[l][m];
                     c.cascades = static_cast<int>(o.pages->resident);
