@@ -26,6 +26,34 @@ struct PoseBuffers {
     std::vector<std::vector<spatial::Shade>> shades;  // per study method
 };
 
+// The shimmer along a walk, pose by pose: each pose's buffers against the previous pose's
+// (ShimmerPercent per method), then the mean over the consecutive pairs.
+class ShimmerWalk {
+  public:
+    explicit ShimmerWalk(std::size_t methods) : sum_(methods, 0.0) {}
+    void Add(PoseBuffers now) {
+        if (before_) {
+            for (std::size_t m = 0; m < sum_.size(); ++m)
+                sum_[m] +=
+                    ShimmerPercent(before_->shades[m], before_->truth, now.shades[m], now.truth);
+            ++pairs_;
+        }
+        before_ = std::move(now);
+    }
+    // Per method, the mean over the pairs in percent (0 with fewer than two poses).
+    std::vector<double> Mean() const {
+        std::vector<double> mean = sum_;
+        if (pairs_ > 0)
+            for (double& s : mean) s /= static_cast<double>(pairs_);
+        return mean;
+    }
+
+  private:
+    std::vector<double> sum_;
+    std::optional<PoseBuffers> before_;
+    std::size_t pairs_ = 0;
+};
+
 // `poseScene` is the scene seen from the pose; the evaluator keeps a reference to it, so it must
 // outlive *evaluator.
 spatial::LightOutcome EvaluatePose(const spatial::Scene& poseScene,
@@ -57,9 +85,8 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
     CameraPathStudy study;
     study.methods = methods;
     study.methods.push_back(kOptimalWithHysteresis);
-    study.shimmerPercent.assign(study.methods.size(), 0.0);
+    ShimmerWalk walk(study.methods.size());
     std::optional<spatial::LightMatrix> previous;
-    std::optional<PoseBuffers> before;
     for (std::size_t k = 0; k < scene.cameraPath.size(); ++k) {
         // Declared before the evaluator, which holds a reference to it (it used to be a local of
         // EvaluatePose: Misclassified below then read a destroyed scene).
@@ -89,15 +116,9 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
         for (std::size_t m = 0; m < methods.size(); ++m)
             now.shades.push_back(std::move(o.methods[m].buffers.shades));
         now.shades.push_back(std::move(withHysteresis));
-        if (before)
-            for (std::size_t m = 0; m < study.methods.size(); ++m)
-                study.shimmerPercent[m] +=
-                    ShimmerPercent(before->shades[m], before->truth, now.shades[m], now.truth);
-        before = std::move(now);
+        walk.Add(std::move(now));
     }
-    if (scene.cameraPath.size() > 1)
-        for (double& s : study.shimmerPercent)
-            s /= static_cast<double>(scene.cameraPath.size() - 1);
+    study.shimmerPercent = walk.Mean();
     return study;
 }
 
@@ -151,8 +172,7 @@ std::vector<double> ShimmerAlong(const PathPoses& poses, const spatial::Light& l
                                  const std::string& lightField) {
     options.phases = 1;
     options.keepBuffers = true;
-    std::vector<double> shimmer(options.methods.size(), 0.0);
-    std::optional<PoseBuffers> before;
+    ShimmerWalk walk(options.methods.size());
     for (std::size_t k = 0; k < poses.evaluators.size(); ++k) {
         spatial::LightOutcome o;
         try {
@@ -165,15 +185,9 @@ std::vector<double> ShimmerAlong(const PathPoses& poses, const spatial::Light& l
         now.truth = std::move(o.truth);
         for (spatial::MethodOutcome& m : o.methods)
             now.shades.push_back(std::move(m.buffers.shades));
-        if (before)
-            for (std::size_t m = 0; m < shimmer.size(); ++m)
-                shimmer[m] +=
-                    ShimmerPercent(before->shades[m], before->truth, now.shades[m], now.truth);
-        before = std::move(now);
+        walk.Add(std::move(now));
     }
-    if (poses.evaluators.size() > 1)
-        for (double& s : shimmer) s /= static_cast<double>(poses.evaluators.size() - 1);
-    return shimmer;
+    return walk.Mean();
 }
 
 std::size_t CameraPathSteps(const spatial::Scene& scene, const std::vector<std::string>& methods) {
