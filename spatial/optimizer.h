@@ -47,9 +47,9 @@ struct OptimizerOptions {
     // its energy. 0: off (today's optimal-refined). kCollapseFactor is the guarded methods'.
     double collapseFactor = 0.0;
     // The sample budget: with more boundary samples than this, the search, the refinement and
-    // every choice among candidates run on every k-th of them (ThinSamples, samples.h), so a finer
-    // readback costs no more search time than the budget's; 0: every sample (the report's). The
-    // returned energies are then over the kept samples.
+    // every choice among candidates run on this many of them, chosen by their pixels
+    // (ThinSamples, samples.h), so a finer readback costs no more search time than the budget's;
+    // 0: every sample (the report's). The returned energies are then over the kept samples.
     std::size_t maxSamples = 0;
 };
 

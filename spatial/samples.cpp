@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "lexel/solvers/footprint_metrics.h"
 #include "lexel/spatial/energy_gradient.h"
@@ -85,29 +86,50 @@ void AddPriorPoints(const Readback& readback, const LightSpace& lightSpace,
     }
 }
 
-// Every `stride`-th entry of `values`, when it holds one per sample (samples built by hand may
-// leave the pixels, world points or normals empty: those stay as they are).
+// The entries of `values` whose sample is kept, when it holds one per sample (samples built by
+// hand may leave the pixels, world points or normals empty: those stay as they are).
 template <typename T>
-void KeepEvery(std::vector<T>& values, std::size_t count, std::size_t stride) {
-    if (values.size() != count) return;
+void KeepWhere(std::vector<T>& values, const std::vector<bool>& keep) {
+    if (values.size() != keep.size()) return;
     std::size_t kept = 0;
-    for (std::size_t s = 0; s < count; s += stride) values[kept++] = values[s];
+    for (std::size_t s = 0; s < keep.size(); ++s)
+        if (keep[s]) values[kept++] = values[s];
     values.resize(kept);
 }
 
 }  // namespace
 
+std::uint64_t ThinningPriority(std::uint32_t pixel) {
+    // SplitMix64's finalizer (Steele, Lea and Flood, "Fast splittable pseudorandom number
+    // generators", OOPSLA 2014): a fixed, well-mixed value per pixel.
+    std::uint64_t z = pixel + 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
 LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples) {
     const std::size_t n = samples.lsX.size();
     if (maxSamples == 0 || n <= maxSamples) return samples;
-    const std::size_t stride = (n + maxSamples - 1) / maxSamples;
+    // Each sample's priority (of its index where the samples, built by hand, have no pixels),
+    // ties broken by order; the maxSamples least are kept, in their order.
+    std::vector<std::pair<std::uint64_t, std::size_t>> ranked(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t pixel =
+            samples.pixel.size() == n ? samples.pixel[i] : static_cast<std::uint32_t>(i);
+        ranked[i] = {ThinningPriority(pixel), i};
+    }
+    const auto budget = static_cast<std::ptrdiff_t>(maxSamples);
+    std::nth_element(ranked.begin(), ranked.begin() + budget, ranked.end());
+    std::vector<bool> keep(n, false);
+    for (std::ptrdiff_t k = 0; k < budget; ++k) keep[ranked[k].second] = true;
     LightSamples out = samples;
-    KeepEvery(out.lsX, n, stride);
-    KeepEvery(out.dXdx1, n, stride);
-    KeepEvery(out.dXdx2, n, stride);
-    KeepEvery(out.pixel, n, stride);
-    KeepEvery(out.wsX, n, stride);
-    KeepEvery(out.edgeNormal, n, stride);
+    KeepWhere(out.lsX, keep);
+    KeepWhere(out.dXdx1, keep);
+    KeepWhere(out.dXdx2, keep);
+    KeepWhere(out.pixel, keep);
+    KeepWhere(out.wsX, keep);
+    KeepWhere(out.edgeNormal, keep);
     return out;
 }
 

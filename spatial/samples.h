@@ -64,14 +64,21 @@ inline constexpr std::size_t kPriorPoints = 64;
 LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightSpace,
                               std::span<const Shade> shades);
 
-// At most `maxSamples` of the boundary samples: every k-th in their order (pixel order for
-// MakeLightSamples), k = ⌈n / maxSamples⌉, starting with the first, each with its derivatives,
-// pixel, world point and edge normal. The relevant points, their hull and the prior's points are
-// kept whole, as is boundaryPixels. All of them when n ≤ maxSamples or maxSamples = 0. A finer
-// readback resolves the shadow edges better, but its boundary samples grow with its width and the
-// optimizer's time with them; thinned to a budget, the samples keep where the edges lie
-// (OptimizerOptions::maxSamples; RESULTS.md, issue 25).
+// At most `maxSamples` of the boundary samples: those whose readback pixels have the least fixed
+// priority (ThinningPriority, a hash of the pixel), in their order, each with its derivatives,
+// pixel, world point and edge normal — a uniform random subset that is the same for the same
+// pixels, so the energies over it estimate the energies over all samples without bias, along
+// edges of every direction alike. Whether a sample is kept depends on its own pixel and the
+// budget's threshold alone: readbacks that differ in one boundary pixel (a GPU's and the CPU's,
+// or two camera poses) keep sets that differ in at most two samples. The relevant points, their
+// hull and the prior's points are kept whole, as is boundaryPixels. All of them when
+// n ≤ maxSamples or maxSamples = 0. A finer readback resolves the shadow edges better, but its
+// boundary samples grow with its width and the optimizer's time with them; thinned to a budget,
+// the samples keep where the edges lie (OptimizerOptions::maxSamples; RESULTS.md, issue 25).
 LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples);
+
+// ThinSamples' priority of a readback pixel: SplitMix64's finalizer of its index.
+std::uint64_t ThinningPriority(std::uint32_t pixel);
 
 // The boundary pixels of an image of shadow decisions, ascending: a kLit or kShadowed pixel with
 // an 8-neighbour that is kShadowed or kLit the other way. `shades` is row-major with
