@@ -8,7 +8,8 @@
 // ray_caster.h.
 //
 // The walkthrough benchmarks (BM_Walkthrough*) time the harness on the shipped
-// cases/spatial/walkthrough.json (report §3's scene), loaded once:
+// cases/spatial/walkthrough.json (report §3's scene) at the report's 180² readback (the case ships
+// 720² with a sample budget; BM_WalkthroughFineReadbackBudget times that), loaded once:
 //   - the passes of report Algorithm 1 steps 1–2 and of the experiment, on all TBB workers:
 //     camera pass at 750² (pixels/s), readback at 180² with its screen derivatives and its 3D
 //     hull (pixels/s), the first light's shadow map at 400² through the focused matrix
@@ -45,7 +46,6 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
-#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -272,7 +272,7 @@ struct Walkthrough {
     std::unique_ptr<RenderBackend> backend;
     Bounds bounds;
     CameraBuffer frame;  // scene.camera.resolution (750²)
-    Readback readback;   // scene.readback (180²)
+    Readback readback;   // scene.readback
     std::vector<PerLight> lights;
 
     BaselineContext Context(const LightSpace& lightSpace) const {
@@ -281,11 +281,14 @@ struct Walkthrough {
     }
 };
 
-// The walkthrough with its readback at `readback` (the case's own, 180², when empty).
-Walkthrough LoadWalkthrough(std::optional<Resolution> readback) {
+// The report's readback (§3: a 180×180 sample resolution).
+constexpr Resolution kReportReadback{180, 180};
+
+// The walkthrough with its readback at `readback`.
+Walkthrough LoadWalkthrough(Resolution readback) {
     Walkthrough w;
     w.scene = lexel::cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
-    if (readback) w.scene.readback = *readback;
+    w.scene.readback = readback;
     w.backend = MakeCpuRenderer(w.scene.geometry);
     w.bounds = w.scene.geometry.ComputeBounds();
     w.frame = w.backend->RenderCamera(w.scene.camera, w.scene.camera.resolution);
@@ -303,7 +306,7 @@ Walkthrough LoadWalkthrough(std::optional<Resolution> readback) {
 }
 
 const Walkthrough& Case() {
-    static const Walkthrough w = LoadWalkthrough(std::nullopt);
+    static const Walkthrough w = LoadWalkthrough(kReportReadback);
     return w;
 }
 

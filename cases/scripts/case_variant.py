@@ -2,14 +2,16 @@
 """Write a copy of a 3D case file with its readback, shadow map or sample budget changed.
 
 Usage: case_variant.py CASE.json OUT.json [--readback W H] [--shadow-map W H]
-                       [--max-samples N] [--name NAME]
+                       [--max-samples N|all] [--name NAME]
 
 lexel takes the readback, the map size and the optimizer's sample budget (`optimizer.max_samples`)
 from the case file, so a study of any of them (RESULTS.md,
 "What the edge energy misses") runs on a variant of a shipped case. The copy is the case with
 those fields replaced, its name suffixed (default: "<name>-readback<W>x<H>"), and every relative
 `geometry[].mesh` path made absolute, so the copy may live anywhere. The sweep's record tells the
-two apart by the case file's hash. Bad input: one line on stderr, exit status 2, no file written.
+two apart by the case file's hash. `--max-samples all` removes the budget (Algorithm 1 on every
+sample): with `--readback 180 180` it gives a shipped case (720² readback, budget 512) the
+report's own 180² set-up. Bad input: one line on stderr, exit status 2, no file written.
 """
 import argparse
 import json
@@ -29,6 +31,19 @@ def resolution(values, flag):
     return {"width": w, "height": h}
 
 
+def budget(text):
+    """--max-samples: an integer in [1, 16384²], or "all" (no budget)."""
+    if text == "all":
+        return text
+    try:
+        n = int(text)
+    except ValueError:
+        fail(f"--max-samples: must be an integer in [1, 16384²] or 'all', got '{text}'")
+    if not 1 <= n <= 16384 * 16384:
+        fail(f"--max-samples: must be in [1, 16384²], got {n}")
+    return n
+
+
 class Parser(argparse.ArgumentParser):
     def error(self, message):  # argparse's usage + message, as one line
         fail(message)
@@ -40,13 +55,11 @@ def main():
     parser.add_argument("out")
     parser.add_argument("--readback", nargs=2, type=int, metavar=("W", "H"))
     parser.add_argument("--shadow-map", nargs=2, type=int, metavar=("W", "H"))
-    parser.add_argument("--max-samples", type=int, metavar="N")
+    parser.add_argument("--max-samples", type=budget, metavar="N|all")
     parser.add_argument("--name")
     args = parser.parse_args()
     if not args.readback and not args.shadow_map and args.max_samples is None:
         fail("give --readback W H, --shadow-map W H or --max-samples N (nothing to change)")
-    if args.max_samples is not None and not 1 <= args.max_samples <= 16384 * 16384:
-        fail(f"--max-samples: must be in [1, 16384²], got {args.max_samples}")
     if os.path.abspath(args.out) == os.path.abspath(args.case):
         fail("OUT.json: must not be the case file itself")
     try:
@@ -67,8 +80,14 @@ def main():
         optimizer = case.get("optimizer", {})
         if not isinstance(optimizer, dict):
             fail(f"{args.case}: /optimizer must be an object")
-        optimizer["max_samples"] = args.max_samples
-        case["optimizer"] = optimizer
+        if args.max_samples == "all":
+            optimizer.pop("max_samples", None)
+        else:
+            optimizer["max_samples"] = args.max_samples
+        if optimizer:
+            case["optimizer"] = optimizer
+        else:
+            case.pop("optimizer", None)
         suffix += f"-samples{args.max_samples}"
     case["name"] = args.name or str(case.get("name", "case")) + suffix
     base = os.path.dirname(os.path.abspath(args.case))

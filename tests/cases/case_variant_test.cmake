@@ -44,6 +44,18 @@ if(NOT code EQUAL 0 OR NOT out MATCHES "optimal")
     message(FATAL_ERROR "lexel run on the budgeted variant: exit ${code}: ${err}")
 endif()
 
+# --max-samples all takes the budget away again (the report's set-up of a shipped case).
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/budget.json" "${WORK}/all.json"
+                        --readback 40 30 --max-samples all
+                RESULT_VARIABLE code ERROR_VARIABLE err)
+file(READ "${WORK}/all.json" json)
+string(JSON optimizer ERROR_VARIABLE missing GET "${json}" optimizer)
+string(JSON name GET "${json}" name)
+if(NOT code EQUAL 0 OR NOT missing MATCHES "not found" OR NOT name MATCHES "-samplesall$")
+    message(FATAL_ERROR "case_variant.py --max-samples all: optimizer '${optimizer}', name ${name} "
+                        "(exit ${code}: ${err})")
+endif()
+
 # A relative mesh path is made absolute against the case file's directory.
 execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${DATA}/spatial_missing_mesh.json"
                         "${WORK}/mesh.json" --readback 90 90
@@ -55,7 +67,8 @@ if(NOT code EQUAL 0 OR NOT IS_ABSOLUTE "${mesh}" OR NOT mesh MATCHES "^${DATA}/"
 endif()
 
 # Bad input: one line naming the flag or file, exit 2, nothing written.
-foreach(bad "--readback;0;90" "" "--readback;90;90;--name" "--max-samples;0")
+foreach(bad "--readback;0;90" "" "--readback;90;90;--name" "--max-samples;0"
+            "--max-samples;many")
     execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${DATA}/spatial_small.json" "${WORK}/bad.json"
                             ${bad}
                     RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)

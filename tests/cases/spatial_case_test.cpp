@@ -441,7 +441,11 @@ TEST(SpatialCase, ShippedWalkthroughIsTheReportScene) {
     EXPECT_EQ(scene.camera.resolution.width, 750);
     EXPECT_EQ(scene.camera.position.y, 1.7);  // slightly above the floor
     EXPECT_EQ(scene.shadowMap.width, 400);
-    EXPECT_EQ(scene.readback.width, 180);
+    // The report's 180² readback, four times finer each way, with the optimizer's sample budget
+    // (RESULTS.md, "The shipped cases at 720²"); case_variant.py gives back the 180².
+    EXPECT_EQ(scene.readback.width, 720);
+    EXPECT_EQ(scene.readback.height, 720);
+    EXPECT_EQ(scene.optimizerMaxSamples, 512u);
     ASSERT_TRUE(scene.lightSweep.has_value());
     EXPECT_EQ(scene.lightSweep->count, 500);
     EXPECT_EQ(scene.lightSweep->seed, 7u);

@@ -5,9 +5,17 @@
 //   - optimal-report (Algorithm 1 as published) and optimal (from every baseline's start), from
 //     the GL readback and the GPU's boundary samples: the sample pixels differ in at most 1% of
 //     the CPU's, the GL matrix's h over the CPU's samples is within 1% of the CPU optimum, and
-//     its misclassified pixels are within max(5, 5e-4 × counted) of the CPU's.
-// Measured on llvmpipe: identical sample pixels and p4 on all 22 lights, h equal to 5e-11,
-// misclassified within 16 (focused) and 12 (optimal) pixels of ~270,000 counted.
+//     the GL matrix misclassifies within max(5, 5e-4 × counted) pixels of what the CPU backend
+//     counts for the same matrix.
+// Measured on llvmpipe at the shipped 720² readback with the budget of 512 samples: the sample
+// pixels differ on at most 11 of 3,500–13,600 per light (pixels that see another triangle across
+// an edge); `optimal`'s p4 within 0.016° and its h within 0.005% of the CPU's, `optimal-report`'s
+// within 0.075° and 3e-10; mean misclassified 1030 / 1029 (optimal) and 1547 / 1560
+// (optimal-report), cpu / gl, where a matrix a fraction of a degree apart moves one light's count
+// by its texel grid's phase (light 15: 2127 against 2411). At the report's 180² the sample pixels
+// were identical. The budget keeps samples by their own pixels (ThinSamples), so a few different
+// pixels change a few kept samples; keeping every k-th in pixel order shifted them all and moved
+// `optimal`'s p4 by up to 8°.
 #include "lexel/spatial/gl/gl_backend.h"
 
 #include <gtest/gtest.h>
@@ -44,8 +52,8 @@ double AngleDeg(const glm::dvec3& a, const glm::dvec3& b) {
 // The optimal-family checks for one light and method: samples, energy, misclassified.
 struct OptimalAgreement {
     double worstAngle = 0.0, worstEnergy = 0.0, sumCpu = 0.0, sumGpu = 0.0;
-    void Check(std::size_t light, const LightOutcome& c, const LightOutcome& g, std::size_t m,
-               std::int64_t bound) {
+    void Check(const Evaluator& cpuEval, std::size_t light, const LightOutcome& c,
+               const LightOutcome& g, std::size_t m, std::int64_t bound) {
         const MethodOutcome &co = c.methods[m], &go = g.methods[m];
         // The energy of the GL matrix over the CPU's samples against the CPU optimum.
         const double hGpuOnCpu = Energy(go.matrix, c.samples);
@@ -53,9 +61,13 @@ struct OptimalAgreement {
         worstAngle = std::max(worstAngle, angle);
         worstEnergy = std::max(worstEnergy, hGpuOnCpu / co.metrics.h - 1.0);
         EXPECT_LE(hGpuOnCpu, 1.01 * co.metrics.h) << co.method << ", light " << light;
-        EXPECT_LE(std::abs(go.metrics.misclassified - co.metrics.misclassified), bound)
-            << co.method << ", light " << light << ": misclassifies " << go.metrics.misclassified
-            << " (gl) and " << co.metrics.misclassified << " (cpu) of " << c.receiverPixels;
+        // The GL matrix measured by each backend: where the two matrices differ by a fraction of
+        // a degree their counts differ by the texel grid's phase (5-15%), not by the backend.
+        const std::int64_t glMatrixOnCpu = cpuEval.Misclassified(g.light, go.matrix);
+        EXPECT_LE(std::abs(go.metrics.misclassified - glMatrixOnCpu), bound)
+            << co.method << ", light " << light << ": its GL matrix misclassifies "
+            << go.metrics.misclassified << " (gl) and " << glMatrixOnCpu << " (cpu) of "
+            << c.receiverPixels;
         sumCpu += co.metrics.misclassified;
         sumGpu += go.metrics.misclassified;
         std::cout << "[   INFO   ] light " << light << ", " << co.method << ": "
@@ -114,8 +126,8 @@ TEST_F(GlTest, EvaluationAgreesWithTheCpuBackendPerLight) {
                   << cf.metrics.misclassified << " / " << gf.metrics.misclassified
                   << " (cpu / gl), samples " << c.samples.lsX.size() << " / "
                   << g.samples.lsX.size() << '\n';
-        report.Check(l, c, g, 1, bound);
-        multiStart.Check(l, c, g, 2, bound);
+        report.Check(cpuEval, l, c, g, 1, bound);
+        multiStart.Check(cpuEval, l, c, g, 2, bound);
     }
     report.Summary("optimal-report", lights.size());
     multiStart.Summary("optimal", lights.size());

@@ -10,4 +10,14 @@ const Scene& Walkthrough() {
     return scene;
 }
 
+const Scene& ReportWalkthrough() {
+    static const Scene scene = [] {
+        Scene report = Walkthrough();
+        report.readback = {180, 180};
+        report.optimizerMaxSamples = 0;
+        return report;
+    }();
+    return scene;
+}
+
 }  // namespace lexel::spatial::testing

@@ -32,7 +32,10 @@ class GlTest : public ::testing::Test {
 };
 
 // cases/spatial/walkthrough.json, loaded once (report §3's scene: 17k triangles, 750² frame,
-// 180² readback, 400² maps).
+// 400² maps; a 720² readback with the optimizer's budget of 512 samples).
 const Scene& Walkthrough();
+
+// The same scene as the report set it up: a 180² readback and every sample to the optimizer.
+const Scene& ReportWalkthrough();
 
 }  // namespace lexel::spatial::testing
