@@ -442,7 +442,7 @@ TEST(SpatialCase, ShippedWalkthroughIsTheReportScene) {
     EXPECT_EQ(scene.camera.position.y, 1.7);  // slightly above the floor
     EXPECT_EQ(scene.shadowMap.width, 400);
     // The report's 180² readback, four times finer each way, with the optimizer's sample budget
-    // (RESULTS.md, "The shipped cases at 720²"); case_variant.py gives back the 180².
+    // (RESULTS.md, "Re-measured at the shipped readback"); case_variant.py gives back the 180².
     EXPECT_EQ(scene.readback.width, 720);
     EXPECT_EQ(scene.readback.height, 720);
     EXPECT_EQ(scene.optimizerMaxSamples, 512u);
