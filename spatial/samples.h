@@ -67,8 +67,8 @@ LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightS
 // At most `maxSamples` of the boundary samples: those whose readback pixels have the least fixed
 // priority (ThinningPriority, a hash of the pixel), in their order, each with its derivatives,
 // pixel, world point and edge normal — a uniform random subset that is the same for the same
-// pixels, so the energies over it estimate the energies over all samples without bias, along
-// edges of every direction alike. Whether a sample is kept depends on its own pixel and the
+// pixels, so the mean energy per kept sample estimates the mean over all samples without bias,
+// along edges of every direction alike. Whether a sample is kept depends on its own pixel and the
 // budget's threshold alone: readbacks that differ in one boundary pixel (a GPU's and the CPU's,
 // or two camera poses) keep sets that differ in at most two samples. The relevant points, their
 // hull and the prior's points are kept whole, as is boundaryPixels. All of them when

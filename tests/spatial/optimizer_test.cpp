@@ -395,7 +395,8 @@ TEST(Optimizer, CollapseGuardRejectsARefinementThatStarvesTheView) {
     EXPECT_GE(collapsed, 1);  // the construction does produce a collapse to reject
 }
 
-// The walkthrough's readback (report §3) and lights of both kinds around it.
+// The walkthrough's readback (report §3's scene at the case's 720²) and lights of both kinds
+// around it.
 struct WalkthroughFrame {
     Scene scene;
     std::unique_ptr<RenderBackend> renderer;

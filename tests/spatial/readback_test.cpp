@@ -96,7 +96,8 @@ std::set<std::vector<double>> AsSet(const std::vector<glm::dvec3>& points) {
 }
 
 TEST(RelevantHullVertices, ImagePrefilterKeepsTheHullOfAllRelevantPoints) {
-    // The walkthrough (report §3): 36 objects on a floor, 17,244 relevant points at 180².
+    // The walkthrough (report §3): 36 objects on a floor, at the case's 720² readback (17,244
+    // relevant points at the report's 180²).
     const Scene scene = cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
     const auto renderer = MakeCpuRenderer(scene.geometry);
     const Readback rb = RenderReadback(*renderer, scene.camera, scene.readback);

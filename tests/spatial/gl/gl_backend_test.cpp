@@ -61,6 +61,9 @@ struct OptimalAgreement {
         worstAngle = std::max(worstAngle, angle);
         worstEnergy = std::max(worstEnergy, hGpuOnCpu / co.metrics.h - 1.0);
         EXPECT_LE(hGpuOnCpu, 1.01 * co.metrics.h) << co.method << ", light " << light;
+        // The budget's choice of samples follows the few differing pixels only: the axes stay
+        // together (measured within 0.075°; keeping every k-th sample moved them by up to 8°).
+        EXPECT_LT(angle, 0.5) << co.method << ", light " << light;
         // The GL matrix measured by each backend: where the two matrices differ by a fraction of
         // a degree their counts differ by the texel grid's phase (5-15%), not by the backend.
         const std::int64_t glMatrixOnCpu = cpuEval.Misclassified(g.light, go.matrix);
