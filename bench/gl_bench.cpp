@@ -54,9 +54,8 @@ struct Walkthrough {
 const Walkthrough& Case() {
     static const Walkthrough w = [] {
         Walkthrough w;
-        w.scene = lexel::cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json");
-        w.scene.readback = {180, 180};  // the report's (the case ships 720² with a budget)
-        w.scene.optimizerMaxSamples = 0;
+        w.scene = WithReportReadback(
+            lexel::cases::LoadSpatialScene(LEXEL_CASES_DIR "/spatial/walkthrough.json"));
         w.bounds = w.scene.geometry.ComputeBounds();
         w.cpu = MakeCpuRenderer(w.scene.geometry);
         w.frame = w.cpu->RenderCamera(w.scene.camera, w.scene.camera.resolution);

@@ -281,9 +281,6 @@ struct Walkthrough {
     }
 };
 
-// The report's readback (§3: a 180×180 sample resolution).
-constexpr Resolution kReportReadback{180, 180};
-
 // The walkthrough with its readback at `readback`.
 Walkthrough LoadWalkthrough(Resolution readback) {
     Walkthrough w;

@@ -29,12 +29,10 @@ int main(int argc, char** argv) {
     using namespace lexel::spatial;
     const std::filesystem::path outDir = lexel::notebooks::OutputDirectory(argc, argv);
     const std::string outPath = (outDir / "10_algorithm1_3d.png").string();
-    Scene scene = lexel::cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) /
-                                                 "spatial/walkthrough.json");
     // The report's set-up: a 180² readback, every sample to the search (the case ships 720²
     // with a budget of 512 samples, for `optimal`).
-    scene.readback = {180, 180};
-    scene.optimizerMaxSamples = 0;
+    const Scene scene = WithReportReadback(lexel::cases::LoadSpatialScene(
+        std::filesystem::path(LEXEL_CASES_DIR) / "spatial/walkthrough.json"));
     const auto backend = MakeCpuRenderer(scene.geometry);
     const Evaluator evaluator(scene, *backend);  // renders the frame and the 180² readback once
 

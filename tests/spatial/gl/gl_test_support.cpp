@@ -11,12 +11,7 @@ const Scene& Walkthrough() {
 }
 
 const Scene& ReportWalkthrough() {
-    static const Scene scene = [] {
-        Scene report = Walkthrough();
-        report.readback = {180, 180};
-        report.optimizerMaxSamples = 0;
-        return report;
-    }();
+    static const Scene scene = WithReportReadback(Walkthrough());
     return scene;
 }
 
