@@ -15,7 +15,8 @@ std::vector<OptimizerStart> StandardStarts(const BaselineContext& context) {
         {"psm-tight", PsmTightLightMatrix(context)},
         {"normal", NormalLightMatrix(context)},
     };
-    if (context.floorPlane) starts.push_back({"plane-optimal", PlaneOptimalLightMatrix(context)});
+    if (context.floorPlane)
+        starts.push_back({"plane-optimal", PlaneOptimalLightMatrix(context), false});
     return starts;
 }
 
@@ -58,7 +59,7 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
         const OptimizerStart& start = starts[k];
         out.startH.push_back(Energy(start.matrix, samples, options.energy));
         out.searchH.push_back(std::numeric_limits<double>::infinity());
-        if (out.startH[k] < bestH) {
+        if (start.mapCompetes && out.startH[k] < bestH) {
             bestH = out.startH[k];
             out.result = OptimizerResult{};
             out.result.matrix = start.matrix;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <list>
 #include <optional>
+#include <string>
+#include <tuple>
 
 #include "bindings.h"
 #include "lexel/spatial/baselines.h"
@@ -257,8 +259,12 @@ void DefOptimizing(py::module_& m, const char* name, F&& f, const std::string& d
 std::vector<OptimizerStart> ToStarts(const py::object& obj) {
     std::vector<OptimizerStart> starts;
     for (const py::handle item : py::iter(obj)) {
-        const auto pair = item.cast<std::pair<std::string, LightMatrix>>();
-        starts.push_back({pair.first, pair.second});
+        const auto tuple = item.cast<py::tuple>();
+        if (tuple.size() != 2 && tuple.size() != 3)
+            throw py::value_error("starts: each is (name, matrix) or (name, matrix, map_competes)");
+        OptimizerStart start{tuple[0].cast<std::string>(), tuple[1].cast<LightMatrix>()};
+        if (tuple.size() == 3) start.mapCompetes = tuple[2].cast<bool>();
+        starts.push_back(std::move(start));
     }
     if (starts.empty()) throw py::value_error("starts: needs at least one (name, matrix)");
     return starts;
@@ -290,8 +296,8 @@ void BindResults(py::module_& m) {
                       "Wall time of the Ceres refinement, ms.");
 
     py::class_<MultiStartResult>(m, "MultiStartResult",
-                                 "`optimal`'s result: the winner among every start's map and "
-                                 "Algorithm 1 from every start's axis.")
+                                 "`optimal`'s result: the winner among the competing starts' "
+                                 "maps and Algorithm 1 from every start's axis.")
         .def_readonly("result", &MultiStartResult::result, "The winner's OptimizerResult.")
         .def_property_readonly(
             "matrix", [](const MultiStartResult& r) { return r.result.matrix; },
@@ -328,14 +334,15 @@ void BindOptimizer(py::module_& m) {
     m.def(
         "standard_starts",
         [](const Context& context) {
-            std::vector<std::pair<std::string, LightMatrix>> out;
+            std::vector<std::tuple<std::string, LightMatrix, bool>> out;
             for (const OptimizerStart& s : StandardStarts(context.View()))
-                out.emplace_back(s.name, s.matrix);
+                out.emplace_back(s.name, s.matrix, s.mapCompetes);
             return out;
         },
         py::arg("context"),
-        "`optimal`'s starts, [(name, LightMatrix)]: focused-tight, lispsm-tight, lispsm-engine, "
-        "psm-tight, normal, and plane-optimal when the context has a floor plane.");
+        "`optimal`'s starts, [(name, LightMatrix, map_competes)]: focused-tight, lispsm-tight, "
+        "lispsm-engine, psm-tight, normal, and plane-optimal when the context has a floor plane "
+        "(its search competes, its own map does not: map_competes is False).");
     DefOptimizing(
         m, "optimize_from_starts",
         [](const LightSamples& samples, const py::object& startsObj, const py::object& map,
@@ -348,9 +355,9 @@ void BindOptimizer(py::module_& m) {
             py::gil_scoped_release release;
             return OptimizeFromStarts(samples, starts, r, o);
         },
-        "Algorithm 1 from each start's axis, [(name, LightMatrix)] (standard_starts, or your "
-        "own); the least energy among the starts' maps and the searches wins. Returns a "
-        "MultiStartResult.",
+        "Algorithm 1 from each start's axis, [(name, LightMatrix)] or [(name, LightMatrix, "
+        "map_competes)] (standard_starts, or your own); the least energy among the competing "
+        "starts' maps and the searches wins. Returns a MultiStartResult.",
         py::arg("samples"), py::arg("starts"), py::arg("map"));
     DefOptimizing(
         m, "optimal",
@@ -365,7 +372,7 @@ void BindOptimizer(py::module_& m) {
         },
         "lexel's `optimal` (`optimal-refined` with refine=True): Algorithm 1 from every "
         "baseline's start (standard_starts), the least energy wins, so on its own energy it "
-        "never loses to a baseline it started from. The context must hold the light's samples. "
+        "never loses to a baseline whose map competes. The context must hold the light's samples. "
         "Returns a MultiStartResult.",
         py::arg("context"));
 }

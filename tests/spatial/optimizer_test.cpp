@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -347,6 +348,60 @@ TEST(Optimizer, SampleBudgetSearchesOnTheThinnedSamples) {
     EXPECT_EQ(budgeted.result.matrix.p4, byHand.result.matrix.p4);
     EXPECT_EQ(budgeted.winner, byHand.winner);
     EXPECT_EQ(budgeted.startH, byHand.startH);
+}
+
+TEST(MultiStart, AStartWhoseMapDoesNotCompeteWinsOnlyByItsSearch) {
+    // OptimizerStart::mapCompetes: a start's map with the least energy of all wins when it
+    // competes and is passed over when it does not, while the search from its axis still runs.
+    // The map: the search's own result from another axis, zoomed twice (u' = 2u), so every
+    // footprint halves and h falls to a quarter, below what any search reaches (the zoom leaves
+    // the view; nothing in the multi-start checks coverage of a start's map).
+    const BoxOnFloor box;
+    Light light;
+    light.position = {-30, 25, -25};
+    const LightSpace ls(light, box.bounds);
+    const Resolution map{400, 400};
+    const LightSamples s =
+        testing::SamplesFromBoundsMap(*box.renderer, box.readback, ls, box.bounds, map);
+    const OptimizerResult searched = OptimizeLightMatrix(s, {0, 0, 1}, map, {});
+    const glm::dvec3 tilted = glm::normalize(searched.matrix.p4 + glm::dvec3(0.05, 0.0, 0.0));
+    const OptimizerResult other = OptimizeLightMatrix(s, tilted, map, {});
+    const LightMatrix zoomed = other.matrix.ThenAffine(glm::dmat3(2, 0, 0, 0, 2, 0, 0, 0, 1));
+    ASSERT_NEAR(Energy(zoomed, s), other.h / 4, 1e-9 * other.h);
+
+    std::vector<OptimizerStart> starts = {{"axis", searched.matrix, true},
+                                          {"zoomed", zoomed, true}};
+    const MultiStartResult competing = OptimizeFromStarts(s, starts, map);
+    ASSERT_EQ(competing.winner, "zoomed");
+    ASSERT_TRUE(competing.startMapWon);
+
+    starts[1].mapCompetes = false;
+    const MultiStartResult passedOver = OptimizeFromStarts(s, starts, map);
+    EXPECT_FALSE(passedOver.startMapWon);
+    EXPECT_EQ(passedOver.result.h, std::min(passedOver.searchH[0], passedOver.searchH[1]));
+    EXPECT_GT(passedOver.result.h, Energy(zoomed, s));
+    EXPECT_EQ(passedOver.startH, competing.startH);    // still reported
+    EXPECT_EQ(passedOver.searchH, competing.searchH);  // and its axis still searched
+    EXPECT_TRUE(std::isfinite(passedOver.searchH[1]));
+}
+
+TEST(MultiStart, PlaneOptimalsMapIsTheOnlyStartThatDoesNotCompete) {
+    const BoxOnFloor box;
+    Light light;
+    light.position = {-30, 25, -25};
+    const LightSpace ls(light, box.bounds);
+    BaselineContext context;
+    context.lightSpace = &ls;
+    context.camera = box.camera;
+    context.map = {400, 400};
+    context.wsBounds = box.bounds;
+    context.wsRelevant = box.readback.wsRelevant;
+    EXPECT_EQ(StandardStarts(context).size(), 5u);  // no floor plane: no plane-optimal
+    context.floorPlane = glm::dvec4(0.0, 1.0, 0.0, 0.0);
+    const std::vector<OptimizerStart> starts = StandardStarts(context);
+    ASSERT_EQ(starts.size(), 6u);
+    for (const OptimizerStart& start : starts)
+        EXPECT_EQ(start.mapCompetes, start.name != "plane-optimal") << start.name;
 }
 
 TEST(Optimizer, CollapseGuardRejectsARefinementThatStarvesTheView) {
