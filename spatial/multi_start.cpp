@@ -3,6 +3,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
 
 namespace lexel::spatial {
@@ -80,6 +81,10 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
             out.startMapWon = false;
         }
     }
+    if (out.winner.empty())  // no competing map and no search has a finite energy
+        throw DomainError(Subject::kLight,
+                          "OptimizeFromStarts: no competing start's map and no search from a "
+                          "start's axis has a finite energy");
     const double bestBeforeRefine = bestH;
     if (options.refine && bestSearch < starts.size()) {
         OptimizerResult refined =

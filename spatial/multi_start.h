@@ -32,7 +32,7 @@ std::vector<OptimizerStart> StandardStarts(const BaselineContext& context);
 struct MultiStartResult {
     OptimizerResult result;       // the winner (h, matrix); times summed over every search
     std::string winner;           // the start whose map or search won
-    bool startMapWon = false;     // the start's own map, not a search from it, had the least h
+    bool startMapWon = false;     // a competing start's own map, not a search, had the least h
     std::vector<double> startH;   // per start: h of its own map (also where it does not compete)
     std::vector<double> searchH;  // per start: h after Algorithm 1 from its axis (+inf: skipped,
                                   // the axis repeats an earlier start's)
@@ -43,7 +43,7 @@ struct MultiStartResult {
 // (mapCompetes) and the searches wins. With options.refine, the best search's axis is also
 // refined (optimal-refined) and competes too. `starts` must not be empty (std::invalid_argument).
 // With options.maxSamples, everything (startH too) runs on the same thinned samples. Throws
-// DomainError as OptimizeLightMatrix does.
+// DomainError as OptimizeLightMatrix does, and when no candidate has a finite energy.
 MultiStartResult OptimizeFromStarts(const LightSamples& samples,
                                     std::span<const OptimizerStart> starts, Resolution map,
                                     const OptimizerOptions& options = {});

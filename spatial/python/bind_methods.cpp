@@ -306,7 +306,7 @@ void BindResults(py::module_& m) {
             "h", [](const MultiStartResult& r) { return r.result.h; }, "Its energy.")
         .def_readonly("winner", &MultiStartResult::winner, "The start whose map or search won.")
         .def_readonly("start_map_won", &MultiStartResult::startMapWon,
-                      "The start's own map, not a search from it, had the least energy.")
+                      "A competing start's own map, not a search, had the least energy.")
         .def_readonly("start_h", &MultiStartResult::startH, "Per start: its own map's energy.")
         .def_readonly("search_h", &MultiStartResult::searchH,
                       "Per start: after Algorithm 1 from its axis (inf: skipped, the axis "

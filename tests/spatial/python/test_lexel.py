@@ -239,6 +239,17 @@ class ReferenceTest(unittest.TestCase):
                     # `optimal` never loses to a competing start's map, on its own energy.
                     competing = [h for h, (_, _, c) in zip(best.start_h, starts) if c]
                     self.assertLessEqual(best.h, min(competing), key)
+                # optimize_from_starts on the same starts, as triples, is `optimal` itself; as
+                # pairs every map competes, so plane-optimal's may win and h can only fall.
+                same = lexel.optimize_from_starts(samples, starts, self.map)
+                self.assertEqual(same.h, lexel.optimal(context).h)
+                self.assertEqual(same.winner, lexel.optimal(context).winner)
+                pairs = lexel.optimize_from_starts(samples, [(n, m) for n, m, _ in starts],
+                                                   self.map)
+                self.assertLessEqual(pairs.h, same.h)
+                self.assertEqual(pairs.h, min(same.h, min(pairs.start_h)))
+                with self.assertRaisesRegex(ValueError, r"^starts: each is \(name, matrix\)"):
+                    lexel.optimize_from_starts(samples, [("a", starts[0][1], True, 1)], self.map)
 
     def test_partitions(self):
         count = self.ref["inputs"]["partition_count"]
