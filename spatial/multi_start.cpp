@@ -1,5 +1,6 @@
 #include "lexel/spatial/multi_start.h"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -81,7 +82,7 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
             out.startMapWon = false;
         }
     }
-    if (out.winner.empty())  // no competing map and no search has a finite energy
+    if (!std::isfinite(bestH))  // no competing map and no search has a finite energy
         throw DomainError(Subject::kLight,
                           "OptimizeFromStarts: no competing start's map and no search from a "
                           "start's axis has a finite energy");
