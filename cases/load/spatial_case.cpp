@@ -266,9 +266,9 @@ spatial::Light ReadLight(const JsonField& field) {
     return light;
 }
 
-// The partitioned methods' defaults: {"count", "lambda", "allocation"}.
+// The partitioned methods' defaults: {"count", "lambda", "allocation", "energy"}.
 spatial::PartitionOptions ReadPartitions(const JsonField& field) {
-    field.ExpectObject({}, {"count", "lambda", "allocation"});
+    field.ExpectObject({}, {"count", "lambda", "allocation", "energy"});
     spatial::PartitionOptions options;
     if (field.Has("count"))
         options.count = static_cast<int>(field["count"].Integer(1, spatial::kMaxCascades));
@@ -279,6 +279,12 @@ spatial::PartitionOptions ReadPartitions(const JsonField& field) {
             field["allocation"].Fail("must be equal or lagrange, got '" + allocation + "'");
         options.allocation = allocation == "equal" ? spatial::CascadeAllocation::kEqual
                                                    : spatial::CascadeAllocation::kLagrange;
+    }
+    if (field.Has("energy")) {
+        const std::string energy = field["energy"].String();
+        if (energy != "e" && energy != "h")
+            field["energy"].Fail("must be e or h, got '" + energy + "'");
+        options.energy = energy == "e" ? spatial::kEdgeEnergy : spatial::EnergyOptions{};
     }
     return options;
 }

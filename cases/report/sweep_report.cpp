@@ -76,7 +76,7 @@ std::optional<View> EqualTexelView(const SweepResult& r) {
         return std::nullopt;
     std::vector<std::string> names = {spatial::kOptimalMethod};
     names.insert(names.end(), partitioned.begin(), partitioned.end());
-    for (const std::string& m : r.methods)  // the opt-in ones (sdsm-optimal-e) too
+    for (const std::string& m : r.methods)  // the opt-in ones (sdsm-optimal-h) too
         if (spatial::IsPartitionedMethod(m) && !Contains(names, m)) names.push_back(m);
     return ViewOf(r, names, spatial::kOptimalMethod);
 }

@@ -105,7 +105,7 @@ SchemeValue AnalyticStorageOf(const std::string& method, int partitions,
     };
     const std::string k = std::to_string(partitions);
     if (method == "pssm" || method.rfind("sdsm", 0) == 0) {
-        if (method == "sdsm-optimal")
+        if (method.rfind("sdsm-optimal", 0) == 0)
             return scheme("ZP + W (k = " + k + ")", spatial::Scheme::ZpWarp(partitions));
         return scheme("ZP (k = " + k + ")", spatial::Scheme::Zp(partitions));
     }

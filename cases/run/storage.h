@@ -54,7 +54,7 @@ spatial::ViewFrustum FrustumOf(const spatial::Camera& camera);
 // scheme's label and value. Single maps: focused* unwarped, lispsm* LiSPSM (η = 0), psm* PSM
 // (η = 1); optimal*, plane-optimal, normal: the best single map, the smallest S̄ over n'
 // (BestSingleMapStorage). Partitioned (k maps): pssm, sdsm* ZP (unwarped, logarithmic splits),
-// zp-lispsm and sdsm-optimal ZP + W, fp-lispsm FP + W (one map per face, no z-split). tsm*: the
+// zp-lispsm and sdsm-optimal* ZP + W, fp-lispsm FP + W (one map per face, no z-split). tsm*: the
 // single map of n' = (f − n) / (3 sin γ), the 80% rule with the focus at mid-depth; vsm*: ZP with
 // k = ⌈log₂ f/n⌉ unwarped maps (ρ ≤ 2: a level per halving of the texel, as its pages have).
 // Warped: logpsm LogPSM (LogPsmStorageFactor: S̄_opt with the light overhead); rtw* "adaptive

@@ -7,13 +7,14 @@
 // of depths and a texel covers about the same number of pixels in every slice. Each cascade is
 // then fitted to its own visible points: SDSM with the light-space box, `sdsm-optimal` with
 // Algorithm 1 (10) from that box and the other standard starts, on the partition's own boundary
-// samples. The budget is fair: k maps of (W/√k)×(H/√k), the single map's texels in all.
+// samples, minimizing `optimal`'s edge energy e = Σ‖n̂ᵀJ⁻¹‖ plus its footprint prior. The budget
+// is fair: k maps of (W/√k)×(H/√k), the single map's texels in all.
 //
-// This program prints each cascade's interval, map, points, pixels and h for `sdsm` and
+// This program prints each cascade's interval, map, points, pixels and e for `sdsm` and
 // `sdsm-optimal`, and writes one figure: the four maps of each (rows 1–2; green: the visible
 // points a cascade serves, red: its boundary samples) and the error images of optimal (one map),
 // sdsm and sdsm-optimal (row 3; red: false shadow, blue: missed shadow). The checks: the intervals
-// tile the camera's depth range, each cascade's h under Algorithm 1 is at most SDSM's (it starts
+// tile the camera's depth range, each cascade's e under Algorithm 1 is at most SDSM's (it starts
 // from SDSM's box), and the cascades' texels add up to at most the single map's.
 //
 // Public API: lexel::spatial (partitions.h, cascades.h). The scene, rendering, exact shadow rays
@@ -42,13 +43,28 @@ std::vector<Cascade> CascadesOf(const MethodOutcome& m) {
     return cascades;
 }
 
-void PrintCascades(const MethodOutcome& m) {
-    std::printf("%s: %lld misclassified, h %.6g\n", m.method.c_str(),
-                static_cast<long long>(m.metrics.misclassified), m.metrics.h);
-    for (const CascadeOutcome& c : m.cascades)
-        std::printf("  z in [%8.4g, %8.4g)  %3d×%-3d  %6zu points  %7lld pixels  h %.6g\n",
+// Each cascade's e (kEdgeEnergy) over the samples and prior points it serves.
+std::vector<double> CascadeEnergies(const MethodOutcome& m, const LightOutcome& o,
+                                    const Evaluator& evaluator, const Camera& camera) {
+    const std::vector<Cascade> cascades = CascadesOf(m);
+    std::vector<double> e;
+    for (std::size_t i = 0; i < cascades.size(); ++i)
+        e.push_back(Energy(
+            cascades[i].matrix,
+            SamplesOfCascade(o.samples, evaluator.readback().wsRelevant, camera, cascades, i),
+            kEdgeEnergy));
+    return e;
+}
+
+void PrintCascades(const MethodOutcome& m, const std::vector<double>& e) {
+    std::printf("%s: %lld misclassified, e %.6g\n", m.method.c_str(),
+                static_cast<long long>(m.metrics.misclassified), m.metrics.e);
+    for (std::size_t i = 0; i < m.cascades.size(); ++i) {
+        const CascadeOutcome& c = m.cascades[i];
+        std::printf("  z in [%8.4g, %8.4g)  %3d×%-3d  %6zu points  %7lld pixels  e %.6g\n",
                     c.cascade.zNear, c.cascade.zFar, c.cascade.map.width, c.cascade.map.height,
-                    c.cascade.visiblePoints, static_cast<long long>(c.pixels), c.h);
+                    c.cascade.visiblePoints, static_cast<long long>(c.pixels), e[i]);
+    }
 }
 
 }  // namespace
@@ -67,13 +83,15 @@ int main(int argc, char** argv) {
     const MethodOutcome& optimal = o.methods[0];
     const MethodOutcome& sdsm = o.methods[1];
     const MethodOutcome& sdsmOptimal = o.methods[2];
-    std::printf("optimal (one %d×%d map): %lld misclassified, h %.6g\n", scene.shadowMap.width,
+    std::printf("optimal (one %d×%d map): %lld misclassified, e %.6g\n", scene.shadowMap.width,
                 scene.shadowMap.height, static_cast<long long>(optimal.metrics.misclassified),
-                optimal.metrics.h);
-    PrintCascades(sdsm);
-    PrintCascades(sdsmOptimal);
-    std::printf("h, sdsm → sdsm-optimal: %.6g → %.6g; misclassified %lld → %lld\n", sdsm.metrics.h,
-                sdsmOptimal.metrics.h, static_cast<long long>(sdsm.metrics.misclassified),
+                optimal.metrics.e);
+    const std::vector<double> eSdsm = CascadeEnergies(sdsm, o, evaluator, scene.camera);
+    const std::vector<double> eOptimal = CascadeEnergies(sdsmOptimal, o, evaluator, scene.camera);
+    PrintCascades(sdsm, eSdsm);
+    PrintCascades(sdsmOptimal, eOptimal);
+    std::printf("e, sdsm → sdsm-optimal: %.6g → %.6g; misclassified %lld → %lld\n", sdsm.metrics.e,
+                sdsmOptimal.metrics.e, static_cast<long long>(sdsm.metrics.misclassified),
                 static_cast<long long>(sdsmOptimal.metrics.misclassified));
 
     lexel::notebooks::Claims claims;
@@ -87,25 +105,27 @@ int main(int argc, char** argv) {
     bool lower = true;
     long long texels = 0;
     for (std::size_t i = 0; i < cascades.size(); ++i) {
-        lower = lower && sdsmOptimal.cascades[i].h <= sdsm.cascades[i].h;
+        lower = lower && eOptimal[i] <= eSdsm[i];
         texels += sdsm.cascades[i].cascade.map.Count();
     }
-    claims.Check(lower, "Algorithm 1 lowers or keeps every cascade's h (total %.6g <= %.6g)",
-                 sdsmOptimal.metrics.h, sdsm.metrics.h);
+    claims.Check(lower, "Algorithm 1 lowers or keeps every cascade's e (total %.6g <= %.6g)",
+                 sdsmOptimal.metrics.e, sdsm.metrics.e);
     claims.Check(texels <= static_cast<long long>(scene.shadowMap.Count()),
                  "the cascades use %lld of the %lld texels", texels,
                  static_cast<long long>(scene.shadowMap.Count()));
 
     std::vector<Image> images;
     std::vector<std::string> captions;
-    for (const MethodOutcome* m : {&sdsm, &sdsmOptimal})
+    for (const MethodOutcome* m : {&sdsm, &sdsmOptimal}) {
+        const std::vector<double>& e = m == &sdsm ? eSdsm : eOptimal;
         for (std::size_t c = 0; c < m->buffers.cascadeMaps.size(); ++c) {
             const LightSamples served = SamplesOfCascade(o.samples, evaluator.readback().wsRelevant,
                                                          scene.camera, CascadesOf(*m), c);
             images.push_back(ShadowMapImage(m->buffers.cascadeMaps[c], served));
-            captions.push_back(m->method + " " + std::to_string(c) + ": h " +
-                               std::to_string(static_cast<long long>(m->cascades[c].h)));
+            captions.push_back(m->method + " " + std::to_string(c) + ": e " +
+                               std::to_string(static_cast<long long>(e[c])));
         }
+    }
     for (const MethodOutcome* m : {&optimal, &sdsm, &sdsmOptimal}) {
         images.push_back(
             MisclassificationImage(evaluator.frame(), lightSpace, m->buffers.shades, o.truth));

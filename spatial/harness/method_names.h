@@ -36,11 +36,11 @@ bool IsVirtualMethod(std::string_view name);
 // Methods that run only when asked for by name: not in SpatialMethodNames (so every default list
 // and its outputs stay as they are), yet computed by ComputeLightMatrix and described by
 // SpatialMethodDescription. `optimal-refined-h`: optimal-h's best start refined on h (today's
-// optimal-refined before issue 25 moved it to e); `sdsm-optimal-e`: sdsm-optimal on e (measured
-// worse than on h at equal texels, RESULTS.md, so not the default);
+// optimal-refined before issue 25 moved it to e); `sdsm-optimal-h`: sdsm-optimal's searches and
+// its Lagrange costs on h (eq. 6) whatever the case's cascade energy;
 // `optimal-oracle` (oracle.h): the bound, which the Evaluator computes against the truth
-// (ComputeLightMatrix refuses it). `optimal` and `optimal-refined` are on e with the footprint
-// prior (kEdgeEnergy, energy.h; the refinement under the collapse guard).
+// (ComputeLightMatrix refuses it). `optimal`, `optimal-refined` and `sdsm-optimal` are on e with
+// the footprint prior (kEdgeEnergy, energy.h; the refinement under the collapse guard).
 std::vector<std::string> OptInMethodNames();
 // Whether ComputeLightMatrix knows the name: SpatialMethodNames or OptInMethodNames.
 bool IsSpatialMethod(std::string_view name);

@@ -28,8 +28,9 @@ struct NamedPartition {
     std::string_view name;
     PartitionScheme scheme;
     bool snap = false;
-    // sdsm-optimal's energy: e with the prior (kEdgeEnergy) instead of the case's (h by default).
-    bool onEdgeEnergy = false;
+    // sdsm-optimal-h: h as published (eq. 6) instead of the case's energy (e with the prior by
+    // default), for its searches and the Lagrange allocation's costs.
+    bool onReportEnergy = false;
     bool optIn = false;  // run only when named (OptInMethodNames)
 };
 
@@ -41,7 +42,7 @@ constexpr NamedPartition kPartitions[] = {
     {"zp-lispsm", PartitionScheme::kZpLispsm},
     {"fp-lispsm", PartitionScheme::kFpLispsm},
     {"sdsm-optimal", PartitionScheme::kSdsmOptimal},
-    {"sdsm-optimal-e", PartitionScheme::kSdsmOptimal, false, true, true},
+    {"sdsm-optimal-h", PartitionScheme::kSdsmOptimal, false, true, true},
 };
 
 }  // namespace
@@ -60,7 +61,7 @@ std::vector<std::string> VirtualMethodNames() { return {"vsm", "vsm-dynamic"}; }
 bool IsVirtualMethod(std::string_view name) { return name == "vsm" || name == "vsm-dynamic"; }
 
 std::vector<std::string> OptInMethodNames() {
-    return {"optimal-refined-h", "sdsm-optimal-e", kOracleMethod};
+    return {"optimal-refined-h", "sdsm-optimal-h", kOracleMethod};
 }
 
 namespace {
@@ -192,13 +193,13 @@ constexpr MethodDescription kDescriptions[] = {
     {"sdsm-rect", "sdsm's partitions, each fitted with the minimum-area rectangle"},
     {"zp-lispsm", "cascades: Lloyd et al. 2006's log z-partitions, LiSPSM in each"},
     {"fp-lispsm", "Lloyd et al. 2006's face partitioning: a LiSPSM map per face wedge"},
-    {"sdsm-optimal", "sdsm's partitions, optimal-h (multi-start on h) in each"},
+    {"sdsm-optimal", "sdsm's partitions, optimal (multi-start on e) in each"},
     {"tsm", "Martin & Tan 2004: the trapezoid around the visible points, 80% focus rule"},
     {"tsm-report", "tsm as the paper fits it: the view frustum and scene bounds"},
     {"vsm", "virtual shadow map: 16k² pages at the footprint's level, the single map's texels"},
     {"vsm-dynamic", "vsm with the LOD bias raised until its pages fit the pool (UE5)"},
     {"optimal-refined-h", "optimal-h, its best start refined on h by Ceres LBFGS"},
-    {"sdsm-optimal-e", "sdsm's partitions, optimal (multi-start on e) in each"},
+    {"sdsm-optimal-h", "sdsm's partitions, optimal-h (multi-start on h) in each"},
     {kOracleMethod, "bound: the best single matrix by the measured error (scored on the rays)"},
 };
 
@@ -314,7 +315,7 @@ MethodMatrix Partitioned(const NamedPartition& partition, const MethodContext& c
         throw std::invalid_argument(std::string(partition.name) + " needs the samples");
     PartitionOptions options = context.partitions;
     options.snap = partition.snap;
-    if (partition.onEdgeEnergy) options.energy = kEdgeEnergy;
+    if (partition.onReportEnergy) options.energy = EnergyOptions{};
     MethodMatrix m;
     m.cascades =
         PartitionedLightMatrices(partition.scheme, context.baseline, *context.samples, options);

@@ -397,7 +397,7 @@ const NamedScheme kSchemes[] = {
     {"fp-lispsm", PartitionScheme::kFpLispsm,
      "Lloyd et al. 2006's face partitioning: a LiSPSM map per face wedge"},
     {"sdsm-optimal", PartitionScheme::kSdsmOptimal,
-     "sdsm's partitions, Algorithm 1 (multi-start) in each"},
+     "sdsm's partitions, Algorithm 1 (multi-start on the energy, e by default) in each"},
 };
 
 std::vector<Cascade> ToCascades(const py::object& obj) {
@@ -429,11 +429,14 @@ void BindPartitions(py::module_& m) {
     m.def(
         "partitioned_light_matrices",
         [](const std::string& name, const Context& context, int count, double lambda,
-           const std::string& allocation, bool snap) {
+           const std::string& allocation, bool snap, const std::string& energy) {
             PartitionOptions o;
             o.count = count;
             o.lambda = lambda;
             o.snap = snap;
+            OptimizerOptions energyOnly;  // h unless the name selects another (lexel.ENERGIES)
+            SelectOptimizerEnergy(py::str(energy), &energyOnly);
+            o.energy = energyOnly.energy;
             if (count < 1 || count > kMaxCascades)
                 throw py::value_error("count: must be in [1, " + std::to_string(kMaxCascades) +
                                       "], got " + std::to_string(count));
@@ -457,11 +460,14 @@ void BindPartitions(py::module_& m) {
         },
         py::arg("scheme"), py::arg("context"), py::kw_only(), py::arg("count") = 4,
         py::arg("pssm_lambda") = 0.5, py::arg("allocation") = "equal", py::arg("snap") = false,
+        py::arg("energy") = "e",
         "k cascades of a partitioned method (lexel.PARTITION_SCHEMES) whose texels add up to "
         "context.map's: 'equal' allocation (k maps of (W/sqrt k) x (H/sqrt k)) or 'lagrange' "
         "(texels moved toward the partitions with the larger cost). count: k in [1, 16]; "
         "pssm_lambda: PSSM's blend of the logarithmic and uniform splits; snap: SDSM's texel "
-        "snapping (directional lights). The context must hold the light's samples.");
+        "snapping (directional lights); energy: what sdsm-optimal's searches minimize and the "
+        "Lagrange allocation's cost, 'e' (as optimal) or 'h' (eq. 6, as sdsm-optimal-h). The "
+        "context must hold the light's samples.");
     m.def(
         "partitioned_energy",
         [](const py::object& cascadesObj, const Context& context) {

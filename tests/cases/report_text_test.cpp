@@ -392,15 +392,15 @@ TEST(SweepReport, EOrderingsCountLikeHOrderings) {
     EXPECT_NE(text.find("e orders"), std::string::npos) << text;
 }
 
-// An opt-in partitioned method (sdsm-optimal-e) is compared at equal texels like the others.
+// An opt-in partitioned method (sdsm-optimal-h) is compared at equal texels like the others.
 TEST(SweepReport, OptInPartitionedMethodsJoinTheEqualTexelTable) {
     SweepResult r = FairSweep({{{{100, 0, 1.0, 0.0}, {80, 0, 2.0, 0.0}}}}, 1);
-    r.methods[1] = "sdsm-optimal-e";
+    r.methods[1] = "sdsm-optimal-h";
     const nlohmann::json doc = SweepJson(r);
     ASSERT_TRUE(doc.contains("equal_texel_table"));
     const nlohmann::json& methods = doc["equal_texel_table"]["methods"];
     ASSERT_EQ(methods.size(), 2u);
-    EXPECT_EQ(methods[1]["method"], "sdsm-optimal-e");
+    EXPECT_EQ(methods[1]["method"], "sdsm-optimal-h");
     EXPECT_DOUBLE_EQ(methods[1]["percent_more"].get<double>(), -20.0);
 }
 

@@ -351,12 +351,15 @@ TEST(SpatialCase, CascadesBlockSetsThePartitionDefaults) {
     EXPECT_EQ(defaults.partitions.count, 4);
     EXPECT_EQ(defaults.partitions.lambda, 0.5);
     EXPECT_EQ(defaults.partitions.allocation, spatial::CascadeAllocation::kEqual);
+    EXPECT_EQ(defaults.partitions.energy.kind, spatial::EnergyKind::kEdge);  // as optimal's
+    EXPECT_EQ(defaults.partitions.energy.priorWeight, spatial::kDefaultPriorWeight);
     const spatial::Scene scene =
         FromPatch(R"([{"op": "add", "path": "/cascades", "value": )"
-                  R"({"count": 8, "lambda": 0.75, "allocation": "lagrange"}}])");
+                  R"({"count": 8, "lambda": 0.75, "allocation": "lagrange", "energy": "h"}}])");
     EXPECT_EQ(scene.partitions.count, 8);
     EXPECT_EQ(scene.partitions.lambda, 0.75);
     EXPECT_EQ(scene.partitions.allocation, spatial::CascadeAllocation::kLagrange);
+    EXPECT_TRUE(scene.partitions.energy.IsReport());
     auto add = [](const std::string& value) {
         return ErrorFor(R"([{"op": "add", "path": "/cascades", "value": )" + value + "}]");
     };
@@ -365,8 +368,9 @@ TEST(SpatialCase, CascadesBlockSetsThePartitionDefaults) {
     EXPECT_EQ(add(R"({"lambda": 1.5})"), "/cascades/lambda: must be in [0, 1], got 1.5");
     EXPECT_EQ(add(R"({"allocation": "greedy"})"),
               "/cascades/allocation: must be equal or lagrange, got 'greedy'");
+    EXPECT_EQ(add(R"({"energy": "L2"})"), "/cascades/energy: must be e or h, got 'L2'");
     EXPECT_EQ(add(R"({"splits": 2})"),
-              "/cascades/splits: unknown key (allowed here: count, lambda, allocation)");
+              "/cascades/splits: unknown key (allowed here: count, lambda, allocation, energy)");
     EXPECT_EQ(add("4"), "/cascades: must be an object, got an integer");
 }
 

@@ -249,7 +249,7 @@ TEST(Partitions, EveryVisiblePointLiesInItsCascadesMap) {
     }
 }
 
-// On e (sdsm-optimal-e) and on h (sdsm-optimal), with either allocation: each cascade's energy,
+// On e (sdsm-optimal) and on h (sdsm-optimal-h), with either allocation: each cascade's energy,
 // and their sum, at most SDSM's (the Lagrange allocation on the same energy's law).
 TEST(Partitions, SdsmOptimalNeverHasALargerEnergyThanSdsm) {
     const Walkthrough& w = SharedWalkthrough();
@@ -314,6 +314,37 @@ TEST(Partitions, AnEmptyPartitionIsReportedNotNaN) {
     EXPECT_TRUE(std::isfinite(m.metrics.footprintMax));
     EXPECT_GE(m.metrics.misclassified, 0);
     EXPECT_LE(m.metrics.misclassified, o.receiverPixels);
+}
+
+// `sdsm-optimal` searches on the case's cascade energy (e with the prior by default), and
+// `sdsm-optimal-h` on h whatever the case says: each is PartitionedLightMatrices on that energy.
+TEST(Partitions, SdsmOptimalIsOnTheCasesEnergyAndSdsmOptimalHOnH) {
+    const Walkthrough& w = SharedWalkthrough();
+    const PartitionRun run = RunLight(w, w.lights.front());
+    MethodContext context;
+    context.baseline = run.context;
+    context.samples = &run.outcome.samples;
+    const auto sameMaps = [](const std::vector<Cascade>& a, const std::vector<Cascade>& b) {
+        if (a.size() != b.size()) return false;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (a[i].matrix.p1 != b[i].matrix.p1 || a[i].matrix.p2 != b[i].matrix.p2 ||
+                a[i].matrix.p4 != b[i].matrix.p4 || a[i].map.width != b[i].map.width)
+                return false;
+        return true;
+    };
+    const auto direct = [&](const EnergyOptions& energy) {
+        PartitionOptions options;
+        options.energy = energy;
+        return PartitionedLightMatrices(PartitionScheme::kSdsmOptimal, run.context,
+                                        run.outcome.samples, options);
+    };
+    const std::vector<Cascade> onE = direct(kEdgeEnergy), onH = direct(EnergyOptions{});
+    ASSERT_FALSE(sameMaps(onE, onH));  // the two energies choose different maps on this light
+    EXPECT_TRUE(sameMaps(ComputeLightMatrix("sdsm-optimal", context).cascades, onE));
+    EXPECT_TRUE(sameMaps(ComputeLightMatrix("sdsm-optimal-h", context).cascades, onH));
+    context.partitions.energy = EnergyOptions{};  // a case's "cascades": {"energy": "h"}
+    EXPECT_TRUE(sameMaps(ComputeLightMatrix("sdsm-optimal", context).cascades, onH));
+    EXPECT_TRUE(sameMaps(ComputeLightMatrix("sdsm-optimal-h", context).cascades, onH));
 }
 
 }  // namespace

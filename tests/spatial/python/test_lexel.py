@@ -273,6 +273,13 @@ class ReferenceTest(unittest.TestCase):
                     served = sum(len(lexel.samples_of_cascade(cascades, k, context))
                                  for k in range(len(cascades)))
                     self.assertLessEqual(served, len(samples))
+            # On h (sdsm-optimal-h) each cascade starts from SDSM's box: h at most SDSM's.
+            on_h = {name: lexel.partitioned_energy(lexel.partitioned_light_matrices(
+                name, context, count=count, energy="h"), context)
+                    for name in ("sdsm", "sdsm-optimal")}
+            self.assertLessEqual(on_h["sdsm-optimal"], on_h["sdsm"], l)
+            with self.assertRaisesRegex(ValueError, r"^energy: unknown energy 'L2'"):
+                lexel.partitioned_light_matrices("sdsm", context, energy="L2")
 
 
 # ---------------------------------------------------------------------------------------------
