@@ -19,7 +19,8 @@
 //                 wedge whose view direction is the wedge's bisector (for directional lights; a
 //                 point light uses the direction from the light to the scene's centre);
 //   sdsm-optimal  SDSM's partitions with Algorithm 1 on each (multi-start, multi_start.h, with
-//                 SDSM's box among the starts), on the partition's own visible points and samples.
+//                 SDSM's box among the starts) minimizing PartitionOptions::energy, on the
+//                 partition's own visible points and samples.
 // Points and samples are assigned to partitions exactly as pixels are shaded (CascadeFor).
 #pragma once
 

@@ -15,7 +15,9 @@
 // points a cascade serves, red: its boundary samples) and the error images of optimal (one map),
 // sdsm and sdsm-optimal (row 3; red: false shadow, blue: missed shadow). The checks: the intervals
 // tile the camera's depth range, each cascade's e under Algorithm 1 is at most SDSM's (it starts
-// from SDSM's box), and the cascades' texels add up to at most the single map's.
+// from SDSM's box; it judges maps on the case's 512 kept samples, so over every sample, as here,
+// this is a check rather than a theorem), and the cascades' texels add up to at most the single
+// map's.
 //
 // Public API: lexel::spatial (partitions.h, cascades.h). The scene, rendering, exact shadow rays
 // and images: lexel's test bench (lexel::harness, lexel::cases).

@@ -57,7 +57,7 @@ struct GivenMatrix {
 struct MethodContext {
     BaselineContext baseline;               // its samples are set: plane-optimal uses them
     const LightSamples* samples = nullptr;  // boundary samples and relevant points (light space)
-    PartitionOptions partitions;            // k, λ and the allocation of the partitioned methods
+    PartitionOptions partitions;  // k, λ, the allocation and the energy of the partitioned methods
     const Readback* readback =
         nullptr;       // the readback (vsm*'s page requests, rtw's importance map)
     Resolution frame;  // the final frame's size (rtw's sampling rates)

@@ -79,7 +79,7 @@ struct Scene {
     std::optional<glm::dvec4> floorPlane;
     std::optional<LightSweep> lightSweep;
     std::vector<Camera> cameraPath;   // optional sequence of poses (temporal hysteresis)
-    PartitionOptions partitions;      // the partitioned methods' k, λ and texel allocation
+    PartitionOptions partitions;      // the partitioned methods' k, λ, texel allocation and energy
     std::vector<CaseMethod> methods;  // the case's own methods
     // Sub-texel phases every method's errors are averaged over (EvaluationOptions::phases,
     // sub_texel_phase.h): 1 measures each map once, as computed.

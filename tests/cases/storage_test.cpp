@@ -55,6 +55,7 @@ TEST(StorageRun, EachMethodIsComparedWithItsScheme) {
     EXPECT_EQ(value("zp-lispsm", 8).scheme, "ZP + W (k = 8)");
     EXPECT_NEAR(value("zp-lispsm", 8).storage, 9.50116, 1e-5);
     EXPECT_NEAR(value("sdsm-optimal", 2).storage, 53.0402, 1e-4);
+    EXPECT_EQ(value("sdsm-optimal-h", 2).scheme, "ZP + W (k = 2)");  // on h, the same scheme
     EXPECT_NEAR(value("focused-tight", 1).storage, 865159.4, 0.1);
     EXPECT_NEAR(value("lispsm", 1).storage, 865.159, 1e-3);
     EXPECT_NEAR(value("psm-tight", 1).storage, 865.159, 1e-3);

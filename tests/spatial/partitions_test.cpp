@@ -1,7 +1,8 @@
 // Partitioned shadow maps (cascades.h, partitions.h): PSSM's split formula, the Lagrange texel
 // allocation's exchange optimality, and on the shipped walkthrough for point and directional
 // lights: the intervals tile the camera's depth range, every visible point lies in its cascade's
-// map, sdsm-optimal never has a larger h than sdsm, and an empty partition is reported, not NaN.
+// map, sdsm-optimal never has a larger energy than sdsm (on e and on h), each optimized method
+// searches on its energy, and an empty partition is reported, not NaN.
 #include "lexel/spatial/partitions.h"
 
 #include <gtest/gtest.h>

@@ -278,6 +278,11 @@ class ReferenceTest(unittest.TestCase):
                 name, context, count=count, energy="h"), context)
                     for name in ("sdsm", "sdsm-optimal")}
             self.assertLessEqual(on_h["sdsm-optimal"], on_h["sdsm"], l)
+            on_e = lexel.partitioned_light_matrices("sdsm-optimal", context, count=count)
+            on_h_maps = lexel.partitioned_light_matrices("sdsm-optimal", context, count=count,
+                                                         energy="h")
+            self.assertTrue(any(not np.array_equal(a.matrix.p4, b.matrix.p4)
+                                for a, b in zip(on_e, on_h_maps)), l)  # the energy is used
             with self.assertRaisesRegex(ValueError, r"^energy: unknown energy 'L2'"):
                 lexel.partitioned_light_matrices("sdsm", context, energy="L2")
 
