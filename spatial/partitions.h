@@ -47,8 +47,9 @@ struct PartitionOptions {
     bool snap = false;  // sdsm: snap its boxes to whole texels (directional lights)
     // The energy sdsm-optimal's multi-start minimizes per partition (energy.h) and, for every
     // scheme, the Lagrange allocation's cost: e with the prior by default (c_i = e_i √N_i,
-    // N_i ∝ c_i^(2/3)), as `optimal`: at the 720² readback it beats h per partition (RESULTS.md,
-    // issue 25); EnergyOptions{} (`sdsm-optimal-h`) is h as published (c_i = h_i N_i, N_i ∝ √c_i).
+    // N_i ∝ c_i^(2/3)), as `optimal`: at the 720² readback its searches beat h's per partition and
+    // its Lagrange allocation beats h's, though not the equal split (RESULTS.md, issue 25);
+    // EnergyOptions{} (`sdsm-optimal-h`) is h as published (c_i = h_i N_i, N_i ∝ √c_i).
     EnergyOptions energy = kEdgeEnergy;
     // sdsm-optimal's sample budget per partition (OptimizerOptions::maxSamples; 0: all).
     std::size_t maxSamples = 0;
