@@ -1,0 +1,139 @@
+#!/usr/bin/env python3
+"""Summarize phase-averaged `lexel sweep --out DIR` runs with `optimal-oracle`: the share of one
+method's gap to the bound that another closes (RESULTS.md, "The bound"; issue 25).
+
+Usage: oracle_table.py [--reference METHOD] [--from METHOD] [--bound METHOD]
+                       [--exclude PATTERN:LIGHT ...] [--resamples B] DIR [DIR ...]
+       (each DIR a sweep's --out directory, holding lights.csv)
+
+Per DIR (a set of lights), one Markdown row: each method's mean phase-averaged misclassified
+pixels; how far the reference (default `optimal`) and the method it is compared with (--from,
+default `optimal-h`) lie above the bound (--bound, default `optimal-oracle`), as a % of the
+bound's mean; and "closed", the share of --from's gap to the bound that the reference removes,
+(from − reference) / (from − bound) over the set's sums, with its 95% bootstrap percentile
+interval (B resamples of the set's lights with replacement, default 2000, the share recomputed
+from each resample's sums; a fixed seed, so a run repeats its intervals). Then the average of
+the sets' shares with its interval (the average over the sets of each resample's shares) and the
+share pooled over every light. --exclude drops a light from the DIRs whose name (the last path
+component) matches PATTERN (shell-style: '*directional:8' drops light 8 of every directional
+set). A share whose gap is 0 is undefined: printed as "—" and left out of the average. Bad input:
+one line, exit status 2.
+"""
+import fnmatch
+import os
+import random
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fair_table import fail, parse_args, read_rows  # noqa: E402
+
+MEAN = "_misclassified_mean"
+SEED = 1
+
+
+def closed(triples):
+    """(from − reference) / (from − bound) over the sums of (reference, from, bound) triples;
+    None where the gap is 0."""
+    ref = sum(t[0] for t in triples)
+    frm = sum(t[1] for t in triples)
+    bound = sum(t[2] for t in triples)
+    return (frm - ref) / (frm - bound) if frm != bound else None
+
+
+def percent(x):
+    return "—" if x is None else f"{100 * x:.0f}".replace("-", "−")
+
+
+def interval(values):
+    """The 95% percentile interval of the defined values, or None."""
+    v = sorted(x for x in values if x is not None)
+    if not v:
+        return None
+    return v[int(0.025 * len(v))], v[int(0.975 * len(v))]
+
+
+def read_set(d, names, excluded):
+    rows = read_rows(d, names[0])
+    for m in names[1:]:
+        if m + MEAN not in rows[0]:
+            fail(f"{d}/lights.csv: no phase-averaged counts of {m} (run the sweep with "
+                 f"--method {m} --phases K)")
+    name = os.path.basename(os.path.normpath(d))
+    drop = {light for pattern, light in excluded if fnmatch.fnmatchcase(name, pattern)}
+    rows = [r for r in rows if r["light"] not in drop]
+    if not rows:
+        fail(f"{d}/lights.csv: --exclude leaves no light")
+    methods = [k[: -len(MEAN)] for k in rows[0] if k.endswith(MEAN)]
+    mean = {m: [float(r[m + MEAN]) for r in rows] for m in methods}
+    return name, methods, mean
+
+
+def main(names, excluded, resamples, dirs):
+    reference, frm, bound = names
+    rng = random.Random(SEED)
+    shares, boots, pooled, lines = [], [], [], []
+    sets = [read_set(d, names, excluded) for d in dirs]  # every input checked before any output
+    for name, methods, mean in sets:
+        triples = list(zip(mean[reference], mean[frm], mean[bound]))
+        share = closed(triples)
+        boot = [closed([rng.choice(triples) for _ in triples]) for _ in range(resamples)]
+        ci = interval(boot)
+        shares.append(share)
+        boots.append(boot)
+        pooled += triples
+        n = len(triples)
+        b = sum(mean[bound]) / n
+        above = [f"{100 * (sum(mean[m]) / n / b - 1):+.1f}%" if b > 0 else "—"
+                 for m in (reference, frm)]
+        share_cell = percent(share) + ("%" if share is not None else "")
+        if ci:
+            share_cell += f" ({percent(ci[0])} to {percent(ci[1])})"
+        if not lines:
+            lines.append("| set | lights | " + " | ".join(methods) + f" | {reference} above "
+                         f"{bound} | {frm} above {bound} | closed |")
+            lines.append("| --- | ---: |" + " ---: |" * (len(methods) + 3))
+        cells = [f"{sum(mean[m]) / n:.0f}" for m in methods]
+        lines.append(f"| {name} | {n} | " + " | ".join(cells + above + [share_cell]) + " |")
+    print("\n".join(lines))
+    defined = [i for i, s in enumerate(shares) if s is not None]
+    if defined:
+        average = sum(shares[i] for i in defined) / len(defined)
+        per_resample = []
+        for k in range(resamples):
+            v = [boots[i][k] for i in defined]
+            per_resample.append(None if None in v else sum(v) / len(v))
+        ci = interval(per_resample)
+        text = f"{percent(average)}%" + (f" ({percent(ci[0])} to {percent(ci[1])}%)" if ci else "")
+        sets_text = f"{len(defined)} set" + ("s" if len(defined) != 1 else "")
+        print(f"\nAverage over the {sets_text}: {reference} closes {text} of {frm}'s gap to "
+              f"{bound}; pooled over the {len(pooled)} lights: {percent(closed(pooled))}%.")
+
+
+def parse_exclusions(values):
+    excluded = []
+    for v in values:
+        pattern, sep, light = v.rpartition(":")
+        if not sep or not pattern or not light.isdigit():
+            fail(f"--exclude {v}: wanted PATTERN:LIGHT, e.g. '*directional:8'")
+        excluded.append((pattern, light))
+    return excluded
+
+
+if __name__ == "__main__":
+    usage = ("usage: oracle_table.py [--reference METHOD] [--from METHOD] [--bound METHOD] "
+             "[--exclude PATTERN:LIGHT ...] [--resamples B] DIR ...")
+    values, dirs = parse_args(sys.argv[1:], {"--reference": "method name",
+                                             "--from": "method name",
+                                             "--bound": "method name",
+                                             "--exclude": "PATTERN:LIGHT",
+                                             "--resamples": "count"}, usage)
+    names = tuple(values[o][-1] if values[o] else default for o, default in
+                  (("--reference", "optimal"), ("--from", "optimal-h"),
+                   ("--bound", "optimal-oracle")))
+    if len(set(names)) < 3:
+        fail(f"--reference, --from and --bound: wanted three methods, got {', '.join(names)}")
+    resamples = values["--resamples"][-1] if values["--resamples"] else "2000"
+    if not resamples.isdigit() or not 1 <= int(resamples) <= 1000000:
+        fail(f"--resamples {resamples}: wanted a whole number from 1 to 1000000")
+    main(names, parse_exclusions(values["--exclude"]), int(resamples), dirs)

@@ -1,0 +1,68 @@
+# cases/scripts/oracle_table.py on lights.csv files whose numbers are worked by hand:
+#   set   light  optimal  optimal-h  optimal-oracle  closed: (optimal-h − optimal)/(h − oracle)
+#   pair     0       20        30           10          50%
+#   pair     1       60        60           20           0%
+#   same     0      100       100            0           0%
+# pair: the sums 80, 90, 30 close (90 − 80)/(90 − 30) = 17%; a resample of its two lights is
+# {0, 0} (50%), {1, 1} (0%) or mixed (17%), so with 2000 resamples the 95% interval is 0 to 50
+# (each end drawn about 500 times). Means 40, 45, 15: optimal +166.7% and optimal-h +200.0% above
+# the bound. same: 0% in every resample; its bound's mean is 0, so "above" is undefined (—).
+# Average (17% + 0%)/2 = 8%, interval (0 + 0)/2 to (50 + 0)/2 = 0 to 25%; pooled over the three
+# lights, the sums 180, 190, 30 close (190 − 180)/(190 − 30) = 6%.
+# Invoked by ctest with -DPYTHON=... -DSCRIPT=... -DWORK=...
+include(${CMAKE_CURRENT_LIST_DIR}/script_errors.cmake)
+file(REMOVE_RECURSE "${WORK}")
+set(header "light,optimal_misclassified_mean,optimal-h_misclassified_mean,"
+           "optimal-oracle_misclassified_mean\n")
+file(MAKE_DIRECTORY "${WORK}/pair" "${WORK}/same" "${WORK}/worse" "${WORK}/flat")
+file(WRITE "${WORK}/pair/lights.csv" ${header} "0,20,30,10\n1,60,60,20\n")
+file(WRITE "${WORK}/same/lights.csv" ${header} "0,100,100,0\n")
+# worse: optimal above optimal-h, (30 − 40)/(30 − 10) = −50%. flat: optimal-h at the bound, the
+# share undefined and left out of the average.
+file(WRITE "${WORK}/worse/lights.csv" ${header} "0,40,30,10\n")
+file(WRITE "${WORK}/flat/lights.csv" ${header} "0,10,10,10\n")
+
+function(expect_rows args)
+    execute_process(COMMAND "${PYTHON}" "${SCRIPT}" ${args}
+                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    foreach(wanted IN LISTS ARGN)
+        string(FIND "${out}" "${wanted}" at)
+        if(NOT code EQUAL 0 OR at EQUAL -1)
+            message(FATAL_ERROR "oracle_table.py ${args}: exit ${code}, wanted\n${wanted}\n"
+                                "got\n${out}${err}")
+        endif()
+    endforeach()
+endfunction()
+
+expect_rows("${WORK}/pair;${WORK}/same"
+    "| set | lights | optimal | optimal-h | optimal-oracle | optimal above optimal-oracle | optimal-h above optimal-oracle | closed |"
+    "| pair | 2 | 40 | 45 | 15 | +166.7% | +200.0% | 17% (0 to 50) |"
+    "| same | 1 | 100 | 100 | 0 | — | — | 0% (0 to 0) |"
+    "Average over the 2 sets: optimal closes 8% (0 to 25%) of optimal-h's gap to optimal-oracle; pooled over the 3 lights: 6%.")
+# Without pair's light 1 (the pattern matches pair alone): pair closes 50% in every resample, the
+# average is 25% (25 to 25), and the two lights left pool to (130 − 120)/(130 − 10) = 8%.
+expect_rows("--exclude;p*:1;${WORK}/pair;${WORK}/same"
+    "| pair | 1 | 20 | 30 | 10 | +100.0% | +200.0% | 50% (50 to 50) |"
+    "| same | 1 | 100 | 100 | 0 | — | — | 0% (0 to 0) |"
+    "Average over the 2 sets: optimal closes 25% (25 to 25%)"
+    "pooled over the 2 lights: 8%.")
+expect_rows("${WORK}/worse;${WORK}/flat"
+    "| worse | 1 | 40 | 30 | 10 | +300.0% | +200.0% | −50% (−50 to −50) |"
+    "| flat | 1 | 10 | 10 | 10 | +0.0% | +0.0% | — |"
+    "Average over the 1 set: optimal closes −50% (−50 to −50%)")
+# --reference optimal-h --from optimal: pair's share is (40 − 45)/(40 − 15) = −20%.
+expect_rows("--reference;optimal-h;--from;optimal;${WORK}/pair"
+    "optimal-h above optimal-oracle | optimal above optimal-oracle | closed |"
+    "| pair | 2 | 40 | 45 | 15 | +200.0% | +166.7% | −20% ")
+
+expect_script_errors(oracle_table.py
+                     "--from;psm;${WORK}/pair|pair/lights.csv: no phase-averaged counts of psm"
+                     "--reference;psm;${WORK}/pair|pair/lights.csv: no lights with psm's"
+                     "${WORK}/pair;${WORK}/none|none: cannot read lights.csv"
+                     "--exclude;8;${WORK}/pair|--exclude 8: wanted PATTERN:LIGHT"
+                     "--exclude;same:0;${WORK}/same|same/lights.csv: --exclude leaves no light"
+                     "--resamples;0;${WORK}/pair|--resamples 0: wanted a whole number"
+                     "--bound;optimal;${WORK}/pair|--reference, --from and --bound: wanted three"
+                     "--resamples|--resamples: needs a count"
+                     "--phases;${WORK}/pair|--phases: unknown option"
+                     "--resamples;5|no sweep directory given")
