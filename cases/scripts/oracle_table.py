@@ -84,7 +84,7 @@ def main(names, excluded, resamples, dirs):
         pooled += triples
         n = len(triples)
         b = sum(mean[bound]) / n
-        above = [f"{100 * (sum(mean[m]) / n / b - 1):+.1f}%" if b > 0 else "—"
+        above = [f"{100 * (sum(mean[m]) / n / b - 1):+.1f}%".replace("-", "−") if b > 0 else "—"
                  for m in (reference, frm)]
         share_cell = percent(share) + ("%" if share is not None else "")
         if ci:

@@ -50,7 +50,11 @@ expect_rows("${WORK}/worse;${WORK}/flat"
     "| worse | 1 | 40 | 30 | 10 | +300.0% | +200.0% | −50% (−50 to −50) |"
     "| flat | 1 | 10 | 10 | 10 | +0.0% | +0.0% | — |"
     "Average over the 1 set: optimal closes −50% (−50 to −50%)")
-# --reference optimal-h --from optimal: pair's share is (40 − 45)/(40 − 15) = −20%.
+# --reference optimal-h --from optimal: pair's share is (40 − 45)/(40 − 15) = −20%. A method
+# below the bound is "−" percent above it: with --bound optimal (40) worse's optimal-oracle (10)
+# is 75% below it and optimal-h (30) 25%, and the share is (30 − 10)/(30 − 40) = −200%.
+expect_rows("--bound;optimal;--reference;optimal-oracle;${WORK}/worse"
+    "| worse | 1 | 40 | 30 | 10 | −75.0% | −25.0% | −200% (−200 to −200) |")
 expect_rows("--reference;optimal-h;--from;optimal;${WORK}/pair"
     "optimal-h above optimal-oracle | optimal above optimal-oracle | closed |"
     "| pair | 2 | 40 | 45 | 15 | +200.0% | +166.7% | −20% ")
