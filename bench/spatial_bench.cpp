@@ -518,13 +518,16 @@ void BM_WalkthroughMultiStart(benchmark::State& state) {
 BENCHMARK(BM_WalkthroughMultiStart)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // `optimal` (on the edge energy with its prior, energy.h) against `optimal-h` (on h, the
-// MultiStart benchmark's search), per light in one run on one core, from the same starts:
-// ratio_e_to_h = optimal / optimal-h.
+// MultiStart benchmark's search) and against the same search on e₁ (exponent 1, the band
+// unpowered), per light in one run on one core, from the same starts: ratio_e_to_h = optimal /
+// optimal-h, ratio_e_to_e1 = optimal / e₁'s.
 void BM_WalkthroughMultiStartEdge(benchmark::State& state) {
     tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
     const Walkthrough& w = Case();
     const OptimizerOptions edge = EdgeOptimizerOptions();
-    double reportMs = 0.0, edgeMs = 0.0;
+    OptimizerOptions edge1 = edge;
+    edge1.energy.exponent = 1.0;
+    double reportMs = 0.0, edgeMs = 0.0, edge1Ms = 0.0;
     for (auto _ : state) {
         for (const PerLight& l : w.lights) {
             BaselineContext context = w.Context(l.lightSpace);
@@ -538,12 +541,18 @@ void BM_WalkthroughMultiStartEdge(benchmark::State& state) {
             MultiStartResult e = OptimizeFromStarts(l.samples, starts, w.scene.shadowMap, edge);
             benchmark::DoNotOptimize(e);
             edgeMs += MsSince(start);
+            start = std::chrono::steady_clock::now();
+            MultiStartResult e1 = OptimizeFromStarts(l.samples, starts, w.scene.shadowMap, edge1);
+            benchmark::DoNotOptimize(e1);
+            edge1Ms += MsSince(start);
         }
     }
     const double calls = static_cast<double>(state.iterations()) * w.lights.size();
     state.counters["optimal_search_ms_per_light"] = reportMs / calls;
     state.counters["optimal_e_search_ms_per_light"] = edgeMs / calls;
+    state.counters["optimal_e1_search_ms_per_light"] = edge1Ms / calls;
     state.counters["ratio_e_to_h"] = edgeMs / reportMs;
+    state.counters["ratio_e_to_e1"] = edgeMs / edge1Ms;
 }
 BENCHMARK(BM_WalkthroughMultiStartEdge)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -553,6 +562,9 @@ BENCHMARK(BM_WalkthroughMultiStartEdge)->Unit(benchmark::kMillisecond)->UseRealT
 // pixel, against 17 at 180²) all searched, or thinned to 1024 or 512. Counters: ms per light of
 // each and ratio_* to 180²'s; samples_* the mean samples per light; hull3d_ms_* the readback's
 // per-frame 3D hull at each size, which grows with the readback's pixels, not with the budget.
+// And issue 25's cost rule: `optimal` as shipped (720², 512 samples, e) against `optimal` as the
+// issue found it (the multi-start on h at 180², today's `optimal-h`), ratio_shipped_to_issue, and
+// the same with e's exponent 1 (e₁, the edge energy before the exponent), ratio_e1_to_issue.
 void BM_WalkthroughFineReadbackBudget(benchmark::State& state) {
     tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
     const Walkthrough& coarse = Case();
@@ -572,12 +584,18 @@ void BM_WalkthroughFineReadbackBudget(benchmark::State& state) {
         }
         return ms / static_cast<double>(w.lights.size());
     };
-    double coarseMs = 0.0, fineMs = 0.0, fine1024Ms = 0.0, fine512Ms = 0.0;
+    double coarseMs = 0.0, fineMs = 0.0, fine1024Ms = 0.0, fine512Ms = 0.0, issueMs = 0.0;
+    double e1Ms = 0.0;
     for (auto _ : state) {
+        options = OptimizerOptions{};
+        issueMs += msPerLight(coarse, 0);
+        options = EdgeOptimizerOptions();
         coarseMs += msPerLight(coarse, 0);
         fineMs += msPerLight(fine, 0);
         fine1024Ms += msPerLight(fine, 1024);
         fine512Ms += msPerLight(fine, 512);
+        options.energy.exponent = 1.0;
+        e1Ms += msPerLight(fine, 512);
     }
     const double n = static_cast<double>(state.iterations());
     state.counters["optimal_180_ms"] = coarseMs / n;
@@ -587,6 +605,10 @@ void BM_WalkthroughFineReadbackBudget(benchmark::State& state) {
     state.counters["ratio_720"] = fineMs / coarseMs;
     state.counters["ratio_720_budget1024"] = fine1024Ms / coarseMs;
     state.counters["ratio_720_budget512"] = fine512Ms / coarseMs;
+    state.counters["optimal_h_180_ms"] = issueMs / n;
+    state.counters["ratio_shipped_to_issue"] = fine512Ms / issueMs;
+    state.counters["optimal_e1_720_budget512_ms"] = e1Ms / n;
+    state.counters["ratio_e1_to_issue"] = e1Ms / issueMs;
     const auto meanSamples = [](const Walkthrough& w) {
         double total = 0.0;
         for (const PerLight& l : w.lights) total += static_cast<double>(l.samples.lsX.size());

@@ -16,20 +16,22 @@ glm::dvec2 EdgeNormalOf(const LightSamples& samples, std::size_t k) {
 }
 
 // One summand of the chosen energy, no in-front test (NaN: singular).
-double Summand(const LightMatrix& m, EnergyKind kind, const glm::dvec3& X, const glm::dvec3& D1,
-               const glm::dvec3& D2, const glm::dvec2& n) {
+double Summand(const LightMatrix& m, const EnergyOptions& options, const glm::dvec3& X,
+               const glm::dvec3& D1, const glm::dvec3& D2, const glm::dvec2& n) {
     const double p4[3] = {m.p4.x, m.p4.y, m.p4.z};
-    if (kind == EnergyKind::kReport)
+    if (options.kind == EnergyKind::kReport)
         return SampleEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4, X, D1, D2);
-    return SampleEdgeEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4, X, D1, D2, n);
+    return SampleEdgeEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4, X, D1, D2, n,
+                            options.exponent);
 }
 
 // Σ over the boundary samples, stopping at `bound` (every summand ≥ 0 or +inf).
-double SampleSum(const LightMatrix& m, const LightSamples& s, EnergyKind kind, double bound) {
+double SampleSum(const LightMatrix& m, const LightSamples& s, const EnergyOptions& options,
+                 double bound) {
     double total = 0.0;
     for (std::size_t k = 0; k < s.lsX.size(); ++k) {
         if (!InFront(m.p4, s.lsX[k])) return kInf;
-        const double f = Summand(m, kind, s.lsX[k], s.dXdx1[k], s.dXdx2[k], EdgeNormalOf(s, k));
+        const double f = Summand(m, options, s.lsX[k], s.dXdx1[k], s.dXdx2[k], EdgeNormalOf(s, k));
         total += std::isnan(f) ? kInf : f;
         if (total >= bound) return total;
     }
@@ -44,7 +46,7 @@ double PriorEnergy(const LightMatrix& m, const LightSamples& s, const EnergyOpti
     for (std::size_t k = 0; k < s.lsPrior.size(); ++k) {
         if (!InFront(m.p4, s.lsPrior[k])) continue;
         const double f =
-            Summand(m, options.kind, s.lsPrior[k], s.priorDXdx1[k], s.priorDXdx2[k], {0.0, 0.0});
+            Summand(m, options, s.lsPrior[k], s.priorDXdx1[k], s.priorDXdx2[k], {0.0, 0.0});
         if (std::isfinite(f)) total += f;
     }
     return options.priorWeight * total / static_cast<double>(s.lsPrior.size());
@@ -52,20 +54,23 @@ double PriorEnergy(const LightMatrix& m, const LightSamples& s, const EnergyOpti
 
 double Energy(const LightMatrix& m, const LightSamples& s, const EnergyOptions& options) {
     if (options.IsReport()) return Energy(m, s);
-    const double samplesPart = SampleSum(m, s, options.kind, kInf);
+    const double samplesPart = SampleSum(m, s, options, kInf);
     return samplesPart + PriorEnergy(m, s, options);
 }
 
-WeightedPoints BoundaryPoints(const LightSamples& s) {
-    return {s.lsX, s.dXdx1, s.dXdx2,
+WeightedPoints BoundaryPoints(const LightSamples& s, double exponent) {
+    return {s.lsX,
+            s.dXdx1,
+            s.dXdx2,
             s.edgeNormal.size() == s.lsX.size() ? std::span<const glm::dvec2>(s.edgeNormal)
                                                 : std::span<const glm::dvec2>(),
-            1.0};
+            1.0,
+            exponent};
 }
 
-WeightedPoints PriorPoints(const LightSamples& s, double priorWeight) {
+WeightedPoints PriorPoints(const LightSamples& s, double priorWeight, double exponent) {
     const double weight = s.lsPrior.empty() ? 0.0 : priorWeight / double(s.lsPrior.size());
-    return {s.lsPrior, s.priorDXdx1, s.priorDXdx2, {}, weight};
+    return {s.lsPrior, s.priorDXdx1, s.priorDXdx2, {}, weight, exponent};
 }
 
 namespace {
@@ -90,8 +95,9 @@ glm::dvec3 Gradient(const LightMatrix& m, const LightSamples& s, const EnergyOpt
         return g + ReportPriorGradient(m, s, options.priorWeight, jets);
     }
     const auto edge = jets ? &EdgeEnergyGradientJets : &EdgeEnergyGradientAnalytic;
-    glm::dvec3 g = edge(m, BoundaryPoints(s));
-    if (options.priorWeight != 0.0) g += edge(m, PriorPoints(s, options.priorWeight));
+    glm::dvec3 g = edge(m, BoundaryPoints(s, options.exponent));
+    if (options.priorWeight != 0.0)
+        g += edge(m, PriorPoints(s, options.priorWeight, options.exponent));
     return g;
 }
 
@@ -128,6 +134,9 @@ SearchEnergy::Points ToPoints(std::span<const glm::dvec3> X, std::span<const glm
     }
     return p;
 }
+
+// The points a block of the search energy's loops takes.
+constexpr std::size_t kSummandBlock = 64;
 
 // The summands of points [begin, begin + n) for kind, and their p4·X, without branches: the
 // operations of SampleEnergy and SampleEdgeEnergy in their order (the edge summand squared).
@@ -172,8 +181,25 @@ void Summands(const SearchEnergy::Points& p, std::size_t begin, std::size_t n, E
     }
 }
 
-// A summand of Summands as Energy has it.
-double Finish(EnergyKind kind, double f) { return kind == EnergyKind::kEdge ? std::sqrt(f) : f; }
+// The summands of Summands as Energy has them: e's squared norms to the power p/2 in place, by
+// BandPower's operations in its order, in loops without branches that the compiler vectorizes
+// (this file is built with -fno-math-errno: std::sqrt then needs no errno path, and its result,
+// correctly rounded, is the same packed or not); h's as they are.
+void Finish(const EnergyOptions& options, std::size_t n, double* f) {
+    if (options.kind != EnergyKind::kEdge) return;
+    const double eighths = 8.0 * options.exponent;
+    if (options.exponent == 1.0) {
+        for (std::size_t k = 0; k < n; ++k) f[k] = std::sqrt(f[k]);
+    } else if (eighths == std::floor(eighths) && eighths >= 1.0 && eighths <= 32.0) {
+        double r[kSummandBlock];
+        for (std::size_t k = 0; k < n; ++k) r[k] = std::sqrt(std::sqrt(std::sqrt(std::sqrt(f[k]))));
+        for (std::size_t k = 0; k < n; ++k) f[k] = r[k];
+        for (int j = 1; j < static_cast<int>(eighths); ++j)
+            for (std::size_t k = 0; k < n; ++k) f[k] = f[k] * r[k];
+    } else {
+        for (std::size_t k = 0; k < n; ++k) f[k] = BandPower(f[k], options.exponent);
+    }
+}
 
 }  // namespace
 
@@ -193,16 +219,17 @@ SearchEnergy::SearchEnergy(const LightSamples& samples, const EnergyOptions& opt
 
 double SearchEnergy::operator()(const LightMatrix& m, double bound) const {
     if (report_) return (*report_)(m, bound);
-    constexpr std::size_t kBlock = 64;
+    constexpr std::size_t kBlock = kSummandBlock;
     double w[kBlock], f[kBlock];
     // The samples: SampleSum's sum, stopping at the bound.
     double sum = 0.0;
     for (std::size_t begin = 0; begin < samples_.count; begin += kBlock) {
         const std::size_t n = std::min(kBlock, samples_.count - begin);
         Summands(samples_, begin, n, options_.kind, m, w, f);
+        Finish(options_, n, f);
         for (std::size_t k = 0; k < n; ++k) {
             if (!(w[k] > samples_.frontMargin[begin + k])) return kInf;  // !InFront
-            const double fk = Finish(options_.kind, f[k]);
+            const double fk = f[k];
             sum += std::isnan(fk) ? kInf : fk;
             if (sum >= bound) return sum;
         }
@@ -215,8 +242,9 @@ double SearchEnergy::operator()(const LightMatrix& m, double bound) const {
     for (std::size_t begin = 0; begin < prior_.count; begin += kBlock) {
         const std::size_t n = std::min(kBlock, prior_.count - begin);
         Summands(prior_, begin, n, options_.kind, m, w, f);
+        Finish(options_, n, f);
         for (std::size_t k = 0; k < n; ++k) {
-            const double fk = Finish(options_.kind, f[k]);
+            const double fk = f[k];
             if (w[k] > prior_.frontMargin[begin + k] && std::isfinite(fk)) prior += fk;
         }
         if (begin + n < prior_.count && sum + scale * prior >= bound)
@@ -231,7 +259,7 @@ std::optional<double> RelevantFootprint(const LightMatrix& m, const LightSamples
     for (std::size_t k = 0; k < s.lsPrior.size(); ++k) {
         if (!InFront(m.p4, s.lsPrior[k])) continue;
         // ||J⁻¹||_F = √2 · f_e without a normal.
-        const double f = Summand(m, EnergyKind::kEdge, s.lsPrior[k], s.priorDXdx1[k],
+        const double f = Summand(m, EnergyOptions{EnergyKind::kEdge}, s.lsPrior[k], s.priorDXdx1[k],
                                  s.priorDXdx2[k], glm::dvec2(0.0));
         if (std::isfinite(f)) total += std::sqrt(2.0) * f, ++count;
     }

@@ -4,12 +4,17 @@
 // guard of the refinement.
 //
 //   kReport:  h = Σ_samples ||J⁻¹||_F²                  (texels per pixel)⁻², dimensionless
-//   kEdge:    e = Σ_samples ||nᵀJ⁻¹||₂                    readback pixels per pixel of edge
+//   kEdge:    e = Σ_samples ||nᵀJ⁻¹||₂^p                  (readback pixels per pixel of edge)^p
 // J = ∂u/∂x in texels per readback pixel at a boundary sample, n the unit normal of the shadow
 // edge there in readback pixels (LightSamples::edgeNormal). ||nᵀJ⁻¹|| is how far the edge moves
 // across itself, in pixels, per texel of offset of the quantized edge: with a uniform sub-texel
-// phase the misclassified band is ||nᵀJ⁻¹||/4 pixels per pixel of edge, so e/4 predicts the
-// misclassified pixels near the boundary (derivation: energy_gradient.h). A sample without a
+// phase the misclassified band is ||nᵀJ⁻¹||/4 pixels per pixel of edge, so e₁/4 (p = 1) predicts
+// the misclassified pixels near the boundary (derivation: energy_gradient.h). The shipped p is
+// 5/8 (kDefaultEdgeExponent): a band wider than the shadow it belongs to (a thin leg's, a grazing
+// wall's) misclassifies about the shadow's width whatever the texel does, so the measured error
+// grows more slowly than the band where bands are wide, and a concave p that credits shrinking
+// them less closes more of the gap to the best matrix measured (RESULTS.md, "The edge energy's
+// exponent"). A sample without a
 // defined normal (the 3×3 Sobel gradient of the shadow decisions vanishes, e.g. a one-pixel
 // line of shadow; or samples made without the shades) takes ||J⁻¹||_F/√2, the root mean square
 // of ||nᵀJ⁻¹|| over uniformly distributed n: the expected band when the edge could run any way.
@@ -39,7 +44,7 @@ namespace lexel::spatial {
 
 enum class EnergyKind {
     kReport,  // h, eq. (6) as published: today's Algorithm 1
-    kEdge,    // e = Σ ||nᵀJ⁻¹||₂, the misclassified band's model
+    kEdge,  // e = Σ ||nᵀJ⁻¹||₂^p, the misclassified band's model (EnergyOptions::exponent)
 };
 
 // The prior weight of lexel's methods on e (optimal, sdsm-optimal): one boundary sample's worth.
@@ -48,19 +53,29 @@ inline constexpr double kDefaultPriorWeight = 1.0;
 struct EnergyOptions {
     EnergyKind kind = EnergyKind::kReport;
     double priorWeight = 0.0;  // boundary samples (the header comment); 0: no prior
+    // kEdge: each summand (the prior's too) raised to this power, e_p = Σ ||nᵀJ⁻¹||^p. 1 is the
+    // error model's sum of bands; p < 1 weighs the widest bands less, as the measured error does
+    // where a shadow is thinner than its band (energy_exponent study, RESULTS.md). kReport: unused.
+    double exponent = 1.0;
     // Whether these options give Energy(matrix, samples), h alone, bit for bit.
     bool IsReport() const { return kind == EnergyKind::kReport && priorWeight == 0.0; }
 };
 
+// The edge energy's default exponent p: 5/8, the best of p = 0.5, 0.625, 0.75, 0.875, 1 and 1.5
+// by the share of optimal-h's gap to optimal-oracle closed (RESULTS.md, "The edge energy's
+// exponent"): the wide bands of thin shadows and grazing receivers gain less than e₁ credits.
+inline constexpr double kDefaultEdgeExponent = 0.625;
+
 // e with the footprint prior: what `optimal`, `optimal-refined`, `sdsm-optimal` and their
 // hysteresis minimize (issue 25: it orders methods as their measured errors better than h).
-inline constexpr EnergyOptions kEdgeEnergy{EnergyKind::kEdge, kDefaultPriorWeight};
+inline constexpr EnergyOptions kEdgeEnergy{EnergyKind::kEdge, kDefaultPriorWeight,
+                                           kDefaultEdgeExponent};
 
 // How the energy falls with a map's texels N at a fixed matrix shape: as N^-k. h sums squared
-// footprints (texel areas), k = 1; e sums footprint lengths, k = 1/2. The Lagrange allocation's
-// exponent (lagrange_allocation.h).
-inline constexpr double EnergyExponent(EnergyKind kind) {
-    return kind == EnergyKind::kEdge ? 0.5 : 1.0;
+// footprints (texel areas), k = 1; e_p sums footprint lengths to the power p, k = p/2 (1/2 for
+// e). The Lagrange allocation's exponent (lagrange_allocation.h).
+inline constexpr double EnergyExponent(const EnergyOptions& energy) {
+    return energy.kind == EnergyKind::kEdge ? 0.5 * energy.exponent : 1.0;
 }
 
 // The chosen energy over the samples (plus the prior): +inf if a boundary sample is not in front
@@ -82,8 +97,8 @@ glm::dvec3 EnergyGradientJets(const LightMatrix& matrix, const LightSamples& sam
 
 // The samples of LightSamples as the edge gradients take them (the boundary samples with their
 // normals, weight 1; the prior points with no normal, weight priorWeight / |lsPrior|).
-WeightedPoints BoundaryPoints(const LightSamples& samples);
-WeightedPoints PriorPoints(const LightSamples& samples, double priorWeight);
+WeightedPoints BoundaryPoints(const LightSamples& samples, double exponent = 1.0);
+WeightedPoints PriorPoints(const LightSamples& samples, double priorWeight, double exponent = 1.0);
 
 // The search's energy: Energy(matrix, samples, options) when below `bound`, else some value
 // ≥ bound (+inf where a sample is not in front). BoundedEnergy (samples.h) when

@@ -111,7 +111,10 @@ glm::dvec3 EdgeEnergyGradientAnalytic(const LightMatrix& m, const WeightedPoints
         const double f = root / absDet;
         if (!std::isfinite(f)) continue;
         const double cof[2][2] = {{J[1][1], -J[1][0]}, {-J[0][1], J[0][0]}};
-        const double g = 0.5 / (root * absDet), t = f / s.det;
+        // ∂(f_e^p)/∂J = p f_e^(p−1) ∂f_e/∂J (1 for p = 1: the norm's own derivative).
+        const double power =
+            points.exponent == 1.0 ? 1.0 : points.exponent * std::pow(f, points.exponent - 1.0);
+        const double g = power * 0.5 / (root * absDet), t = power * f / s.det;
         double dF[2][2];
         for (int i = 0; i < 2; ++i)
             for (int j = 0; j < 2; ++j) dF[i][j] = g * dQ[i][j] - t * cof[i][j];
@@ -126,9 +129,9 @@ glm::dvec3 EdgeEnergyGradientJets(const LightMatrix& m, const WeightedPoints& po
     glm::dvec3 grad(0.0);
     for (std::size_t s = 0; s < points.lsX.size(); ++s) {
         if (!InFront(m.p4, points.lsX[s])) continue;
-        const Jet f =
-            SampleEdgeEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4, points.lsX[s],
-                             points.dXdx1[s], points.dXdx2[s], NormalOf(points, s));
+        const Jet f = SampleEdgeEnergy(glm::value_ptr(m.p1), glm::value_ptr(m.p2), p4,
+                                       points.lsX[s], points.dXdx1[s], points.dXdx2[s],
+                                       NormalOf(points, s), points.exponent);
         if (!std::isfinite(f.a)) continue;
         grad += points.weight * glm::dvec3(f.v[0], f.v[1], f.v[2]);
     }

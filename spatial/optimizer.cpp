@@ -125,8 +125,9 @@ struct RefinedEnergy {
             if (!edge)
                 total += SampleEnergy(p1, p2, p4, X, s.dXdx1[k], s.dXdx2[k]);
             else
-                total += SampleEdgeEnergy(p1, p2, p4, X, s.dXdx1[k], s.dXdx2[k],
-                                          normals ? s.edgeNormal[k] : glm::dvec2(0.0));
+                total +=
+                    SampleEdgeEnergy(p1, p2, p4, X, s.dXdx1[k], s.dXdx2[k],
+                                     normals ? s.edgeNormal[k] : glm::dvec2(0.0), energy.exponent);
         }
         *inFront = true;
         if (energy.priorWeight == 0.0 || s.lsPrior.empty()) return total;
@@ -136,7 +137,7 @@ struct RefinedEnergy {
             if (!(ceres::internal::AsScalar(p4[0] * X.x + p4[1] * X.y + p4[2] * X.z) > 0.0))
                 continue;
             const T f = edge ? SampleEdgeEnergy(p1, p2, p4, X, s.priorDXdx1[k], s.priorDXdx2[k],
-                                                glm::dvec2(0.0))
+                                                glm::dvec2(0.0), energy.exponent)
                              : SampleEnergy(p1, p2, p4, X, s.priorDXdx1[k], s.priorDXdx2[k]);
             if (std::isfinite(ceres::internal::AsScalar(f))) prior += f;
         }

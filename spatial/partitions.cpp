@@ -233,7 +233,7 @@ std::vector<Cascade> PartitionedLightMatrices(PartitionScheme scheme,
                             CascadeAllocation::kEqual)
             .front();
     std::vector<double> costs(cascades.size(), 0.0);
-    const double exponent = EnergyExponent(options.energy.kind);
+    const double exponent = EnergyExponent(options.energy);
     for (std::size_t i = 0; i < cascades.size(); ++i) {
         std::vector<glm::dvec3> wsPoints;
         for (const glm::dvec3& x : context.wsRelevant)

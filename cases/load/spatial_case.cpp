@@ -405,10 +405,13 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     if (root.Has("cascades")) scene.partitions = ReadPartitions(root["cascades"]);
     if (root.Has("optimizer")) {
         const JsonField optimizer = root["optimizer"];
-        optimizer.ExpectObject({}, {"max_samples"});
+        optimizer.ExpectObject({}, {"max_samples", "edge_exponent"});
         if (optimizer.Has("max_samples"))
             scene.optimizerMaxSamples =
                 static_cast<std::size_t>(optimizer["max_samples"].Integer(1, kMaxOptimizerSamples));
+        if (optimizer.Has("edge_exponent"))
+            scene.edgeExponent =
+                optimizer["edge_exponent"].NumberIn(0.0, kMaxEdgeExponent, true, false);
     }
     if (root.Has("phases"))
         scene.phases = static_cast<int>(root["phases"].Integer(1, spatial::kMaxPhases));

@@ -24,6 +24,9 @@ inline constexpr long long kMaxSide = 16384;
 // optimizer.max_samples is at most this: every readback pixel of the largest readback (a budget
 // never thins beyond the samples there are, so a larger one would mean no budget).
 inline constexpr long long kMaxOptimizerSamples = kMaxSide * kMaxSide;
+// optimizer.edge_exponent's range, (0, 4]: p = 0 would count every sample alike whatever its band,
+// and a footprint of 10⁴ pixels per texel to the 4th power is still far from overflow.
+inline constexpr double kMaxEdgeExponent = 4.0;
 
 // The range of 3D scenes lexel accepts (world units). Every coordinate of the camera, its targets,
 // the point lights and the transformed geometry is at most kMaxCoordinate in magnitude; the

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""Write a copy of a 3D case file with its readback, shadow map or sample budget changed.
+"""Write a copy of a 3D case file with its readback, shadow map, sample budget or edge exponent
+changed.
 
 Usage: case_variant.py CASE.json OUT.json [--readback W H] [--shadow-map W H]
-                       [--max-samples N|all] [--name NAME]
+                       [--max-samples N|all] [--edge-exponent P] [--name NAME]
 
-lexel takes the readback, the map size and the optimizer's sample budget (`optimizer.max_samples`)
-from the case file, so a study of any of them (RESULTS.md,
+lexel takes the readback, the map size, the optimizer's sample budget (`optimizer.max_samples`)
+and the edge energy's exponent (`optimizer.edge_exponent`, in (0, 4]) from the case file, so a
+study of any of them (RESULTS.md,
 "What the edge energy misses") runs on a variant of a shipped case. The copy is the case with
 those fields replaced, its name suffixed (default: "<name>-readback<W>x<H>"), and every relative
 `geometry[].mesh` path made absolute, so the copy may live anywhere. The sweep's record tells the
@@ -44,6 +46,17 @@ def budget(text):
     return n
 
 
+def exponent(text):
+    """--edge-exponent: a number in (0, 4]."""
+    try:
+        p = float(text)
+    except ValueError:
+        fail(f"--edge-exponent: must be a number in (0, 4], got '{text}'")
+    if not 0 < p <= 4:
+        fail(f"--edge-exponent: must be in (0, 4], got {text}")
+    return p
+
+
 class Parser(argparse.ArgumentParser):
     def error(self, message):  # argparse's usage + message, as one line
         fail(message)
@@ -56,10 +69,13 @@ def main():
     parser.add_argument("--readback", nargs=2, type=int, metavar=("W", "H"))
     parser.add_argument("--shadow-map", nargs=2, type=int, metavar=("W", "H"))
     parser.add_argument("--max-samples", type=budget, metavar="N|all")
+    parser.add_argument("--edge-exponent", type=exponent, metavar="P")
     parser.add_argument("--name")
     args = parser.parse_args()
-    if not args.readback and not args.shadow_map and args.max_samples is None:
-        fail("give --readback W H, --shadow-map W H or --max-samples N (nothing to change)")
+    if (not args.readback and not args.shadow_map and args.max_samples is None
+            and args.edge_exponent is None):
+        fail("give --readback W H, --shadow-map W H, --max-samples N or --edge-exponent P "
+             "(nothing to change)")
     if os.path.abspath(args.out) == os.path.abspath(args.case):
         fail("OUT.json: must not be the case file itself")
     try:
@@ -76,19 +92,24 @@ def main():
     if args.shadow_map:
         case["shadow_map"] = resolution(args.shadow_map, "--shadow-map")
         suffix += "-map{}x{}".format(*args.shadow_map)
-    if args.max_samples is not None:
+    if args.max_samples is not None or args.edge_exponent is not None:
         optimizer = case.get("optimizer", {})
         if not isinstance(optimizer, dict):
             fail(f"{args.case}: /optimizer must be an object")
         if args.max_samples == "all":
             optimizer.pop("max_samples", None)
-        else:
+        elif args.max_samples is not None:
             optimizer["max_samples"] = args.max_samples
+        if args.edge_exponent is not None:
+            optimizer["edge_exponent"] = args.edge_exponent
         if optimizer:
             case["optimizer"] = optimizer
         else:
             case.pop("optimizer", None)
-        suffix += f"-samples{args.max_samples}"
+        if args.max_samples is not None:
+            suffix += f"-samples{args.max_samples}"
+        if args.edge_exponent is not None:
+            suffix += f"-exponent{args.edge_exponent:g}"
     case["name"] = args.name or str(case.get("name", "case")) + suffix
     base = os.path.dirname(os.path.abspath(args.case))
     for item in case.get("geometry", []):

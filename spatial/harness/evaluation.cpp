@@ -64,6 +64,14 @@ std::vector<std::uint8_t> Evaluator::TraceTruth(const LightSpace& lightSpace) co
 
 namespace {
 
+// The e that `optimal` minimizes in this scene (the evaluation's e column): kEdgeEnergy at the
+// case's exponent.
+EnergyOptions EdgeEnergyOf(const Scene& scene) {
+    EnergyOptions e = kEdgeEnergy;
+    e.exponent = scene.edgeExponent;
+    return e;
+}
+
 // Counted pixels (a method shades exactly those lit or shadowed: ShadePoint's facing test is the
 // counting rule) whose decision differs from the rays'; `falseShadow` gets the lit ones it shadows.
 std::int64_t CountWrong(std::span<const Shade> shades, std::span<const std::uint8_t> truth,
@@ -293,7 +301,8 @@ LightMatrix Evaluator::OracleMatrix(const LightSpace& lightSpace, const MethodCo
         RelevantHull::Of(lsCone, glm::normalize(FocusedLightMatrix(context.baseline).p4));
     if (starts.empty() || !hull)
         throw DomainError(Subject::kLight, "optimal-oracle: no single matrix serves this light");
-    const std::vector<glm::dvec2> shifts = SubTexelPhases(phases);
+    // Scored on phases held out of the reported mean (HeldOutSubTexelPhases: no winner's curse).
+    const std::vector<glm::dvec2> shifts = HeldOutSubTexelPhases(phases);
     const auto score = [&](const LightMatrix& matrix) {
         double wrong = 0.0;
         for (const glm::dvec2& shift : shifts)
@@ -332,6 +341,9 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     context.partitions = scene_.partitions;
     context.partitions.maxSamples = scene_.optimizerMaxSamples;
     context.maxSamples = scene_.optimizerMaxSamples;
+    context.edgeExponent = scene_.edgeExponent;
+    if (context.partitions.energy.kind == EnergyKind::kEdge)
+        context.partitions.energy.exponent = scene_.edgeExponent;
     context.baseline = MakeBaselineContext(scene_, lightSpace, bounds_, readback_.wsRelevant,
                                            readback_.wsRelevantHull);
 
@@ -478,7 +490,7 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
         const ShadowMap& map = shading.maps.front();
         metrics.h =
             computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
-        if (!computed.warp) metrics.e = Energy(m->matrix, samples, kEdgeEnergy);
+        if (!computed.warp) metrics.e = Energy(m->matrix, samples, EdgeEnergyOf(scene_));
         for (std::size_t s = 0; s < grazing.size(); ++s)
             if (grazing[s])
                 metrics.hGrazing +=
@@ -494,7 +506,7 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
                 ++m->cascades[shading.cascade[i]].pixels;
         MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
         metrics.e = PartitionedEnergy(cascades, samples, context.baseline.wsRelevant, scene_.camera,
-                                      kEdgeEnergy);
+                                      EdgeEnergyOf(scene_));
     }
     if (keepBuffers && computed.virtualMap) {
         m->buffers.shades = std::move(shading.shades);

@@ -202,8 +202,8 @@ class Evaluator {
 
   private:
     std::vector<std::uint8_t> TraceTruth(const class LightSpace& lightSpace) const;
-    // optimal-oracle (oracle.h): the best single matrix by the measured phase mean against
-    // `truth`; its winning start in *winner.
+    // optimal-oracle (oracle.h): the best single matrix by the measured mean over the phases
+    // held out of `phases` (HeldOutSubTexelPhases) against `truth`; its winning start in *winner.
     LightMatrix OracleMatrix(const LightSpace& lightSpace, const struct MethodContext& context,
                              std::span<const std::uint8_t> truth, int phases,
                              std::string* winner) const;

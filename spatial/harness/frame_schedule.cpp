@@ -38,14 +38,15 @@ BaselineContext FrameBaselineContext(const Scene& scene, const Camera& camera,
 // FrameOptions::optimal's matrix for one light from its samples, timed into t->hull (the 2D
 // hull) and t->search (the rest). Throws std::invalid_argument for a method that is not one.
 LightMatrix TimedOptimizer(const std::string& method, BaselineContext context,
-                           const LightSamples& samples, std::size_t maxSamples, FrameTimes* t) {
+                           const LightSamples& samples, const Scene& scene, FrameTimes* t) {
     if (!IsOptimizerMethod(method))
         throw std::invalid_argument("frame pipeline: '" + method + "' is not an optimizer");
     context.samples = &samples;
     MethodContext methodContext;
     methodContext.baseline = context;
     methodContext.samples = &samples;
-    methodContext.maxSamples = maxSamples;
+    methodContext.maxSamples = scene.optimizerMaxSamples;
+    methodContext.edgeExponent = scene.edgeExponent;
     const Stopwatch clock;
     const MethodMatrix m = ComputeLightMatrix(method, methodContext);
     const double ms = clock.Ms();
@@ -142,7 +143,7 @@ LightMatrix FrameSchedule::MatrixOf(LightStep step, std::size_t light, const Sce
     const LightSamples samples = passes.BoundarySamples(*readback, lightSpace, light, fromKept, t);
     return TimedOptimizer(options.optimal,
                           FrameBaselineContext(scene, camera, lightSpace, wsBounds_, readback),
-                          samples, scene.optimizerMaxSamples, t);
+                          samples, scene, t);
 }
 
 }  // namespace lexel::spatial

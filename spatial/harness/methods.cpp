@@ -287,7 +287,10 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
     if (!context.samples) throw std::invalid_argument(std::string(name) + " needs the samples");
     const Resolution map = context.baseline.map;
     OptimizerOptions options;
-    if (name == kOptimalMethod || name == "optimal-refined") options = EdgeOptimizerOptions();
+    if (name == kOptimalMethod || name == "optimal-refined") {
+        options = EdgeOptimizerOptions();
+        options.energy.exponent = context.edgeExponent;
+    }
     options.maxSamples = context.maxSamples;
     if (name == kOptimalMethod || name == "optimal-refined" || name == "optimal-h" ||
         name == "optimal-refined-h") {

@@ -65,6 +65,8 @@ struct MethodContext {
     std::span<const GivenMatrix> given;
     // The optimal* methods' sample budget (OptimizerOptions::maxSamples; 0: every sample).
     std::size_t maxSamples = 0;
+    // The exponent of optimal's and optimal-refined's edge energy (EnergyOptions::exponent).
+    double edgeExponent = kDefaultEdgeExponent;
 };
 
 // The matrices for light `light` (an index into the fixed lights, or into the sweep's lights when

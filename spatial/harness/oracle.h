@@ -21,7 +21,9 @@
 namespace lexel::spatial {
 
 // The method's name; the Evaluator computes it (it needs the truth), from the fair single-map
-// methods' matrices (FairMethodNames) as starts, scored by the evaluation's own phase mean.
+// methods' matrices (FairMethodNames) as starts, each candidate scored by its mean over K phases
+// held out of the K the evaluation reports (HeldOutSubTexelPhases, sub_texel_phase.h), so that
+// the reported bound is not the minimum of 64 noisy means (the winner's curse).
 inline constexpr const char* kOracleMethod = "optimal-oracle";
 
 struct OracleStart {

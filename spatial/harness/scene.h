@@ -87,6 +87,9 @@ struct Scene {
     // The optimizer's sample budget (OptimizerOptions::maxSamples): every optimal* method and
     // sdsm-optimal's partitions search on at most this many boundary samples; 0: all of them.
     std::size_t optimizerMaxSamples = 0;
+    // The edge energy's exponent p (EnergyOptions::exponent) for every method on e: optimal,
+    // optimal-refined, sdsm-optimal, the Lagrange costs on e and the evaluation's e column.
+    double edgeExponent = kDefaultEdgeExponent;
 };
 
 // The report's §3 set-up of a scene (Chong & Gortler: "a 180x180 sample resolution"): the readback

@@ -20,6 +20,13 @@ std::vector<glm::dvec2> SubTexelPhases(int count) {
     return phases;
 }
 
+std::vector<glm::dvec2> HeldOutSubTexelPhases(int count) {
+    if (count < 1) throw std::invalid_argument("HeldOutSubTexelPhases: count must be at least 1");
+    std::vector<glm::dvec2> phases = SubTexelPhases(2 * count);
+    phases.erase(phases.begin(), phases.begin() + count);
+    return phases;
+}
+
 PhaseMean MeanOverPhases(std::span<const std::int64_t> perPhase) {
     PhaseMean out;
     if (perPhase.empty()) return out;

@@ -26,6 +26,14 @@ inline constexpr int kMaxPhases = 256;
 // smaller one. std::invalid_argument unless count ≥ 1.
 std::vector<glm::dvec2> SubTexelPhases(int count);
 
+// The next `count` phases of the same sequence, δ_count … δ_2count−1: as even a cover of the
+// square, none of them among SubTexelPhases(count). A search that chooses a map by its measured
+// mean (optimal-oracle) scores its candidates on these, so that the mean every method is reported
+// at, over SubTexelPhases(count), is not biased by the choice: the minimum over many candidates
+// of a noisy mean is lower than the chosen map's true mean (the winner's curse), by an amount
+// that grows with the candidates and the noise. std::invalid_argument unless count ≥ 1.
+std::vector<glm::dvec2> HeldOutSubTexelPhases(int count);
+
 // The mean of per-phase counts and the standard error of that mean: s / √K with s the sample
 // standard deviation over the K phases (0 for K = 1: no estimate).
 struct PhaseMean {

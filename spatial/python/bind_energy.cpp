@@ -35,22 +35,17 @@ const NamedEnergy kEnergies[] = {
      [](const LightMatrix& m, const LightSamples& s) { return Energy(m, s); },
      &EnergyGradientAnalytic, &EnergyGradientJets, nullptr},
     {"e",
-     "The edge energy (energy.h): the sum over the boundary samples of ||n^T J^-1||_2, n the "
-     "shadow edge's unit normal in readback pixels (||J^-1||_F/sqrt(2) where it has none), plus "
-     "the footprint prior at weight 1 (one boundary sample's worth of the view's mean "
-     "footprint). Readback pixels per pixel of edge; e/4 models the misclassified band.",
+     "The edge energy (energy.h), what optimal minimizes: the sum over the boundary samples of "
+     "||n^T J^-1||_2^p, n the shadow edge's unit normal in readback pixels (||J^-1||_F/sqrt(2) "
+     "where it has none) and p = 5/8, plus the footprint prior at weight 1 (one boundary "
+     "sample's worth of the view's mean footprint). ||n^T J^-1||/4 is the misclassified band "
+     "in pixels per pixel of edge; p < 1 credits the widest bands less, as measured.",
+     [](const LightMatrix& m, const LightSamples& s) { return Energy(m, s, kEdgeEnergy); },
+     [](const LightMatrix& m, const LightSamples& s) { return EnergyGradient(m, s, kEdgeEnergy); },
      [](const LightMatrix& m, const LightSamples& s) {
-         return Energy(m, s, {EnergyKind::kEdge, kDefaultPriorWeight});
+         return EnergyGradientJets(m, s, kEdgeEnergy);
      },
-     [](const LightMatrix& m, const LightSamples& s) {
-         return EnergyGradient(m, s, {EnergyKind::kEdge, kDefaultPriorWeight});
-     },
-     [](const LightMatrix& m, const LightSamples& s) {
-         return EnergyGradientJets(m, s, {EnergyKind::kEdge, kDefaultPriorWeight});
-     },
-     [](OptimizerOptions* o) {
-         o->energy = {EnergyKind::kEdge, kDefaultPriorWeight};
-     }},
+     [](OptimizerOptions* o) { o->energy = kEdgeEnergy; }},
 };
 
 const NamedEnergy& FindEnergy(const std::string& name) {

@@ -44,6 +44,24 @@ if(NOT code EQUAL 0 OR NOT out MATCHES "optimal")
     message(FATAL_ERROR "lexel run on the budgeted variant: exit ${code}: ${err}")
 endif()
 
+# The edge energy's exponent: optimizer.edge_exponent beside the budget, and lexel runs the variant.
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/budget.json" "${WORK}/exponent.json"
+                        --edge-exponent 1
+                RESULT_VARIABLE code ERROR_VARIABLE err)
+file(READ "${WORK}/exponent.json" json)
+string(JSON exponent GET "${json}" optimizer edge_exponent)
+string(JSON budget GET "${json}" optimizer max_samples)
+string(JSON name GET "${json}" name)
+if(NOT code EQUAL 0 OR NOT exponent EQUAL 1 OR NOT budget EQUAL 5 OR NOT name MATCHES "-samples5-exponent1$")
+    message(FATAL_ERROR "case_variant.py --edge-exponent 1: exponent ${exponent}, budget ${budget}, "
+                        "name ${name} (exit ${code}: ${err})")
+endif()
+execute_process(COMMAND "${LEXEL}" run "${WORK}/exponent.json" --method optimal --no-map-truth
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "optimal")
+    message(FATAL_ERROR "lexel run on the exponent variant: exit ${code}: ${err}")
+endif()
+
 # --max-samples all takes the budget away again (the report's set-up of a shipped case).
 execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/budget.json" "${WORK}/all.json"
                         --readback 40 30 --max-samples all
@@ -68,7 +86,7 @@ endif()
 
 # Bad input: one line naming the flag or file, exit 2, nothing written.
 foreach(bad "--readback;0;90" "" "--readback;90;90;--name" "--max-samples;0"
-            "--max-samples;many")
+            "--max-samples;many" "--edge-exponent;0" "--edge-exponent;x")
     execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${DATA}/spatial_small.json" "${WORK}/bad.json"
                             ${bad}
                     RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -374,11 +374,13 @@ TEST(SpatialCase, CascadesBlockSetsThePartitionDefaults) {
     EXPECT_EQ(add("4"), "/cascades: must be an object, got an integer");
 }
 
-TEST(SpatialCase, OptimizerBlockSetsTheSampleBudget) {
+TEST(SpatialCase, OptimizerBlockSetsTheSampleBudgetAndTheEdgeExponent) {
     EXPECT_EQ(FromPatch("[]").optimizerMaxSamples, 0u);  // every sample
-    const spatial::Scene scene =
-        FromPatch(R"([{"op": "add", "path": "/optimizer", "value": {"max_samples": 1024}}])");
+    EXPECT_EQ(FromPatch("[]").edgeExponent, spatial::kDefaultEdgeExponent);
+    const spatial::Scene scene = FromPatch(
+        R"([{"op": "add", "path": "/optimizer", "value": {"max_samples": 1024, "edge_exponent": 1}}])");
     EXPECT_EQ(scene.optimizerMaxSamples, 1024u);
+    EXPECT_EQ(scene.edgeExponent, 1.0);
     auto add = [](const std::string& value) {
         return ErrorFor(R"([{"op": "add", "path": "/optimizer", "value": )" + value + "}]");
     };
@@ -386,8 +388,11 @@ TEST(SpatialCase, OptimizerBlockSetsTheSampleBudget) {
               "/optimizer/max_samples: must be in [1, 268435456], got 0");
     EXPECT_EQ(add(R"({"max_samples": 1.5})"),
               "/optimizer/max_samples: must be an integer, got 1.5");
+    EXPECT_EQ(add(R"({"edge_exponent": 0})"), "/optimizer/edge_exponent: must be in (0, 4], got 0");
+    EXPECT_EQ(add(R"({"edge_exponent": 4.5})"),
+              "/optimizer/edge_exponent: must be in (0, 4], got 4.5");
     EXPECT_EQ(add(R"({"iterations": 2})"),
-              "/optimizer/iterations: unknown key (allowed here: max_samples)");
+              "/optimizer/iterations: unknown key (allowed here: max_samples, edge_exponent)");
     EXPECT_EQ(add("[]"), "/optimizer: must be an object, got an array");
 }
 

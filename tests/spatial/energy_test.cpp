@@ -112,6 +112,39 @@ TEST(EdgeEnergy, FallbackIsTheRootMeanSquareOverEdgeDirections) {
     EXPECT_NEAR(f(glm::dvec2(0.0)), std::sqrt(meanSquare), 1e-12 * std::sqrt(meanSquare));
 }
 
+TEST(EdgeEnergy, ExponentRaisesEverySummandAndTheTexelLaw) {
+    // e_p = Σ ||nᵀJ⁻¹||^p + w · mean (||J⁻¹||_F/√2)^p with J⁻¹ inverted explicitly; halving p1
+    // and p2 doubles every J⁻¹ (a map with a quarter of the texels), so e_p doubles as 2^p: the
+    // N^(−p/2) of EnergyExponent.
+    std::mt19937_64 rng(17);
+    const LightSamples s = RandomSamples(rng, 30);
+    const LightMatrix m = MatrixFor(s, rng);
+    for (const double p : {0.5, 0.7, 0.75, 1.0, 1.5}) {  // 0.7: std::pow's branch
+        double reference = 0.0, prior = 0.0;
+        for (std::size_t k = 0; k < s.lsX.size(); ++k) {
+            const Eigen::Matrix2d inv = InverseJacobian(m, s.lsX[k], s.dXdx1[k], s.dXdx2[k]);
+            const Eigen::RowVector2d n(s.edgeNormal[k].x, s.edgeNormal[k].y);
+            const double band = n.isZero() ? inv.norm() / std::sqrt(2.0) : (n * inv).norm();
+            reference += std::pow(band, p);
+        }
+        for (std::size_t k = 0; k < s.lsPrior.size(); ++k) {
+            const Eigen::Matrix2d inv =
+                InverseJacobian(m, s.lsPrior[k], s.priorDXdx1[k], s.priorDXdx2[k]);
+            prior += std::pow(inv.norm() / std::sqrt(2.0), p) / double(s.lsPrior.size());
+        }
+        const EnergyOptions options{EnergyKind::kEdge, 2.0, p};
+        const double e = Energy(m, s, options);
+        EXPECT_NEAR(e, reference + 2.0 * prior, 1e-12 * e) << "exponent " << p;
+        EXPECT_EQ(SearchEnergy(s, options)(m), e) << "exponent " << p;
+        LightMatrix coarser = m;
+        coarser.p1 *= 0.5, coarser.p2 *= 0.5;
+        EXPECT_NEAR(Energy(coarser, s, options), std::pow(2.0, p) * e, 1e-12 * e)
+            << "exponent " << p;
+        EXPECT_EQ(EnergyExponent(options), 0.5 * p);
+    }
+    EXPECT_EQ(EnergyExponent(EnergyOptions{}), 1.0);  // h: texel areas
+}
+
 TEST(EdgeEnergy, SingularJacobianIsUnbounded) {
     std::mt19937_64 rng(3);
     LightSamples s = RandomSamples(rng, 3);
@@ -126,6 +159,9 @@ TEST(EnergyFamily, GradientsMatchJetsAndCentralDifferences) {
     const EnergyOptions kinds[] = {{EnergyKind::kEdge, 0.0},
                                    {EnergyKind::kEdge, kDefaultPriorWeight},
                                    {EnergyKind::kEdge, 5.0},
+                                   {EnergyKind::kEdge, 0.0, 0.5},
+                                   {EnergyKind::kEdge, kDefaultPriorWeight, 0.75},
+                                   {EnergyKind::kEdge, 2.0, 1.5},
                                    {EnergyKind::kReport, 0.0},
                                    {EnergyKind::kReport, 2.0}};
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -135,7 +171,8 @@ TEST(EnergyFamily, GradientsMatchJetsAndCentralDifferences) {
         for (const EnergyOptions& options : kinds) {
             const std::string what = Describe(m, s, seed) + ", kind " +
                                      std::to_string(static_cast<int>(options.kind)) + ", prior " +
-                                     std::to_string(options.priorWeight);
+                                     std::to_string(options.priorWeight) + ", exponent " +
+                                     std::to_string(options.exponent);
             const glm::dvec3 analytic = EnergyGradient(m, s, options);
             const glm::dvec3 jets = EnergyGradientJets(m, s, options);
             const double scale = glm::length(analytic);
@@ -171,7 +208,7 @@ TEST(EnergyFamily, SearchEnergyEqualsEnergyBelowTheBoundAndStopsAboveIt) {
     const LightMatrix m = MatrixFor(s, rng);
     for (const EnergyOptions options :
          {EnergyOptions{EnergyKind::kEdge, 0.0}, EnergyOptions{EnergyKind::kEdge, 1.0},
-          EnergyOptions{EnergyKind::kReport, 1.0}}) {
+          EnergyOptions{EnergyKind::kEdge, 1.0, 0.75}, EnergyOptions{EnergyKind::kReport, 1.0}}) {
         const SearchEnergy search(s, options);
         const double e = Energy(m, s, options);
         EXPECT_EQ(search(m), e);

@@ -1,6 +1,6 @@
 // optimal-oracle (issue 25): the compass search finds a known best axis, and on a shipped scene
 // the oracle's measured error is at most every fair single-map method's (it starts from their
-// matrices and is scored by the same phase mean the evaluation reports).
+// matrices, scored on held-out phases).
 #include "lexel/spatial/harness/oracle.h"
 
 #include <gtest/gtest.h>
@@ -58,7 +58,12 @@ TEST(OracleSearch, StopsAtItsBudget) {
     EXPECT_EQ(r.score, -10.0);
 }
 
-TEST(OracleMethod, MeasuresAtMostEveryFairSingleMap) {
+// The oracle chooses its matrix on phases held out of the reported mean (HeldOutSubTexelPhases),
+// so it is no longer at most every start by construction; at 2 phases it is not on this light
+// (792.5 against optimal's 780: with two phases the choice is mostly the grid's luck, the winner's
+// curse the held-out phases keep out of the bound). At 8 phases it measures at most every fair
+// single map on the reported ones.
+TEST(OracleMethod, MeasuresAtMostEveryFairSingleMapAtEightPhases) {
     static const Scene scene = cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) /
                                                        "spatial/walkthrough.json");
     const auto backend = MakeCpuRenderer(scene.geometry);
@@ -66,7 +71,7 @@ TEST(OracleMethod, MeasuresAtMostEveryFairSingleMap) {
     EvaluationOptions options;
     options.methods = FairMethodNames();
     options.methods.push_back(kOracleMethod);
-    options.phases = 2;
+    options.phases = 8;
     const LightOutcome o = evaluator.Evaluate(cases::SweepLightsOf(scene, 1).front(), options);
     const MethodOutcome& oracle = o.methods.back();
     ASSERT_EQ(oracle.method, kOracleMethod);

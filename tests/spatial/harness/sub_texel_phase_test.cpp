@@ -32,6 +32,29 @@ TEST(SubTexelPhases, StartUnshiftedAndStayWithinHalfATexel) {
     EXPECT_THROW(SubTexelPhases(0), std::invalid_argument);
 }
 
+// The oracle's phases are the next K of the sequence: none is among the K the mean is reported
+// over, and they cover the texel as well (each quarter of the square holds 4 ± 2 of 16).
+TEST(SubTexelPhases, HeldOutAreTheNextKAndNoneOfTheReported) {
+    for (const int k : {1, 2, 16}) {
+        const std::vector<glm::dvec2> reported = SubTexelPhases(k);
+        const std::vector<glm::dvec2> heldOut = HeldOutSubTexelPhases(k);
+        const std::vector<glm::dvec2> both = SubTexelPhases(2 * k);
+        ASSERT_EQ(heldOut.size(), static_cast<std::size_t>(k));
+        for (int i = 0; i < k; ++i) {
+            EXPECT_EQ(heldOut[i], both[k + i]) << "K " << k << ", phase " << i;
+            for (const glm::dvec2& r : reported) EXPECT_NE(heldOut[i], r) << "K " << k;
+        }
+    }
+    int quarters[2][2] = {};
+    for (const glm::dvec2& d : HeldOutSubTexelPhases(16)) ++quarters[d.x >= 0.0][d.y >= 0.0];
+    for (const auto& row : quarters)
+        for (int n : row) {
+            EXPECT_GE(n, 2);
+            EXPECT_LE(n, 6);
+        }
+    EXPECT_THROW(HeldOutSubTexelPhases(0), std::invalid_argument);
+}
+
 // R2 covers the square evenly: of the first 64, each of the 4 × 4 cells holds 4 ± 2, and the
 // mean of each coordinate is within a low-discrepancy set's quadrature error, ln N / N = 0.065,
 // of a uniform phase's 0 (measured 0.018; 64 independent uniform phases give 0.036 typically).
