@@ -27,6 +27,15 @@ if(NOT code EQUAL 0 OR NOT out MATCHES "focused-tight")
     message(FATAL_ERROR "lexel run on the variant: exit ${code}: ${err}")
 endif()
 
+# lexel runs `optimal` on a variant.
+function(expect_optimal_runs variant)
+    execute_process(COMMAND "${LEXEL}" run "${variant}" --method optimal --no-map-truth
+                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT code EQUAL 0 OR NOT out MATCHES "optimal")
+        message(FATAL_ERROR "lexel run on ${variant}: exit ${code}: ${err}")
+    endif()
+endfunction()
+
 # The optimizer's sample budget: optimizer.max_samples, and the variant runs `optimal` on it.
 execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${DATA}/spatial_small.json" "${WORK}/budget.json"
                         --max-samples 5
@@ -38,11 +47,7 @@ if(NOT code EQUAL 0 OR NOT budget EQUAL 5 OR NOT name MATCHES "-samples5$")
     message(FATAL_ERROR "case_variant.py --max-samples 5: budget ${budget}, name ${name} "
                         "(exit ${code}: ${err})")
 endif()
-execute_process(COMMAND "${LEXEL}" run "${WORK}/budget.json" --method optimal --no-map-truth
-                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 0 OR NOT out MATCHES "optimal")
-    message(FATAL_ERROR "lexel run on the budgeted variant: exit ${code}: ${err}")
-endif()
+expect_optimal_runs("${WORK}/budget.json")
 
 # The edge energy's exponent: optimizer.edge_exponent beside the budget, and lexel runs the variant.
 execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/budget.json" "${WORK}/exponent.json"
@@ -56,11 +61,7 @@ if(NOT code EQUAL 0 OR NOT exponent EQUAL 1 OR NOT budget EQUAL 5 OR NOT name MA
     message(FATAL_ERROR "case_variant.py --edge-exponent 1: exponent ${exponent}, budget ${budget}, "
                         "name ${name} (exit ${code}: ${err})")
 endif()
-execute_process(COMMAND "${LEXEL}" run "${WORK}/exponent.json" --method optimal --no-map-truth
-                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 0 OR NOT out MATCHES "optimal")
-    message(FATAL_ERROR "lexel run on the exponent variant: exit ${code}: ${err}")
-endif()
+expect_optimal_runs("${WORK}/exponent.json")
 
 # --max-samples all takes the budget away again (the report's set-up of a shipped case).
 execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/budget.json" "${WORK}/all.json"
