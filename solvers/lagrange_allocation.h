@@ -22,7 +22,8 @@
 namespace lexel {
 
 // k = 1 (L1) or 2 (L2) in flatland; any k > 0 holds the same derivation (3D: k = 1 for h, whose
-// squared footprints fall as 1/N with a map's N texels; k = 1/2 for the edge energy e, a length).
+// squared footprints fall as 1/N with a map's N texels; k = p/2 for the edge energy e_p, a length
+// to the power p).
 double AllocationTerm(double error, double exponent);                   // e^(1/(k+1))
 double AllocatedTotal(double termSum, double exponent, double lexels);  // (Σ terms)^(k+1) / L^k
 

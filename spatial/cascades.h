@@ -52,8 +52,8 @@ enum class CascadeAllocation {
 
 // The cascades' resolutions for a budget of total.Count() texels. For kLagrange, costs[i] = c_i ≥
 // 0 (E_i · N_i^k measured at any resolution: h scales as 1/N for square maps, k = 1; the edge
-// energy e as 1/√N, k = 1/2; EnergyExponent): integer texel counts summing to the budget, each
-// cascade with c_i > 0 at least 1 texel, laid out as the squarest map w × h ≤ N_i. A cascade
+// energy e_p as N^(−p/2), k = p/2; EnergyExponent): integer texel counts summing to the budget,
+// each cascade with c_i > 0 at least 1 texel, laid out as the squarest map w × h ≤ N_i. A cascade
 // with c_i = 0 (an empty partition, or one without boundary samples and prior) gets the 1 × 1
 // map. kEqual ignores costs. std::invalid_argument for no cascades or negative or non-finite
 // costs.

@@ -135,7 +135,8 @@ SearchEnergy::Points ToPoints(std::span<const glm::dvec3> X, std::span<const glm
     return p;
 }
 
-// The points a block of the search energy's loops takes.
+// The points a block of the search energy's loops takes: enough for the compiler's packed loops to
+// run long, few enough that the early stop at the bound checks often (every 64 samples).
 constexpr std::size_t kSummandBlock = 64;
 
 // The summands of points [begin, begin + n) for kind, and their p4·X, without branches: the
@@ -176,8 +177,7 @@ void Summands(const SearchEnergy::Points& p, std::size_t begin, std::size_t n, E
         const double a = n1[k] * j22 - n2[k] * j21, b = n2[k] * j11 - n1[k] * j12;
         const double qNone = 0.5 * (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22);
         const double q = has[k] * (a * a + b * b) + (1.0 - has[k]) * qNone;
-        f[k] = q / (det * det);  // squared: the caller takes the root (std::sqrt sets errno,
-                                 // which keeps this loop from vectorizing)
+        f[k] = q / (det * det);  // squared: Finish takes the power in a loop of its own
     }
 }
 
@@ -187,14 +187,14 @@ void Summands(const SearchEnergy::Points& p, std::size_t begin, std::size_t n, E
 // correctly rounded, is the same packed or not); h's as they are.
 void Finish(const EnergyOptions& options, std::size_t n, double* f) {
     if (options.kind != EnergyKind::kEdge) return;
-    const double eighths = 8.0 * options.exponent;
+    const int eighths = EdgeExponentEighths(options.exponent);
     if (options.exponent == 1.0) {
         for (std::size_t k = 0; k < n; ++k) f[k] = std::sqrt(f[k]);
-    } else if (eighths == std::floor(eighths) && eighths >= 1.0 && eighths <= 32.0) {
-        double r[kSummandBlock];
+    } else if (eighths != 0) {
+        double r[kSummandBlock];  // n ≤ kSummandBlock: SearchEnergy's blocks
         for (std::size_t k = 0; k < n; ++k) r[k] = std::sqrt(std::sqrt(std::sqrt(std::sqrt(f[k]))));
         for (std::size_t k = 0; k < n; ++k) f[k] = r[k];
-        for (int j = 1; j < static_cast<int>(eighths); ++j)
+        for (int j = 1; j < eighths; ++j)
             for (std::size_t k = 0; k < n; ++k) f[k] = f[k] * r[k];
     } else {
         for (std::size_t k = 0; k < n; ++k) f[k] = BandPower(f[k], options.exponent);

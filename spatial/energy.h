@@ -23,7 +23,7 @@
 // the sample, in the same units, smooth in p4.
 //
 // The footprint prior: priorWeight × the mean over LightSamples::lsPrior (up to kPriorPoints of
-// the relevant receivers, samples.h) of the energy's own summand with no normal (||J⁻¹||_F/√2
+// the relevant receivers, samples.h) of the energy's own summand with no normal ((||J⁻¹||_F/√2)^p
 // for kEdge, ||J⁻¹||_F² for kReport). Its unit is the summand's, and priorWeight counts
 // boundary samples: weight 1 weighs the whole view like one boundary sample of the view's mean
 // footprint. So it decides the map where there are no samples (every other energy is 0 there and
@@ -55,15 +55,17 @@ struct EnergyOptions {
     double priorWeight = 0.0;  // boundary samples (the header comment); 0: no prior
     // kEdge: each summand (the prior's too) raised to this power, e_p = Σ ||nᵀJ⁻¹||^p. 1 is the
     // error model's sum of bands; p < 1 weighs the widest bands less, as the measured error does
-    // where a shadow is thinner than its band (energy_exponent study, RESULTS.md). kReport: unused.
+    // where a shadow is thinner than its band (RESULTS.md, "The edge energy's exponent"). kReport:
+    // unused. The member's default, 1, is e₁ (what `{EnergyKind::kEdge, w}` gives); lexel's
+    // `optimal` uses kEdgeEnergy's kDefaultEdgeExponent.
     double exponent = 1.0;
     // Whether these options give Energy(matrix, samples), h alone, bit for bit.
     bool IsReport() const { return kind == EnergyKind::kReport && priorWeight == 0.0; }
 };
 
-// The edge energy's default exponent p: 5/8, the best of p = 0.5, 0.625, 0.75, 0.875, 1 and 1.5
-// by the share of optimal-h's gap to optimal-oracle closed (RESULTS.md, "The edge energy's
-// exponent"): the wide bands of thin shadows and grazing receivers gain less than e₁ credits.
+// The edge energy's default exponent p: 5/8, the best of p = 1/2, 5/8, 3/4, 7/8 and 1 by the share
+// of optimal-h's gap to optimal-oracle closed (RESULTS.md, "The edge energy's exponent"): the
+// wide bands of thin shadows and grazing receivers gain less than e₁ credits.
 inline constexpr double kDefaultEdgeExponent = 0.625;
 
 // e with the footprint prior: what `optimal`, `optimal-refined`, `sdsm-optimal` and their
@@ -97,8 +99,8 @@ glm::dvec3 EnergyGradientJets(const LightMatrix& matrix, const LightSamples& sam
 
 // The samples of LightSamples as the edge gradients take them (the boundary samples with their
 // normals, weight 1; the prior points with no normal, weight priorWeight / |lsPrior|).
-WeightedPoints BoundaryPoints(const LightSamples& samples, double exponent = 1.0);
-WeightedPoints PriorPoints(const LightSamples& samples, double priorWeight, double exponent = 1.0);
+WeightedPoints BoundaryPoints(const LightSamples& samples, double exponent);
+WeightedPoints PriorPoints(const LightSamples& samples, double priorWeight, double exponent);
 
 // The search's energy: Energy(matrix, samples, options) when below `bound`, else some value
 // ≥ bound (+inf where a sample is not in front). BoundedEnergy (samples.h) when

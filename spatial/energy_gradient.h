@@ -69,20 +69,29 @@ SampleJ<T> SampleJacobianOf(const R* p1, const R* p2, const T* p4, const glm::dv
     return {j11, j12, j21, j22, det};
 }
 
+// The eighths 8p of an exponent p that BandPower takes by square roots: p a multiple of 1/8 up to
+// 4 (the case key's most, kMaxEdgeExponent in the case loader), else 0 (std::pow's branch).
+inline int EdgeExponentEighths(double exponent) {
+    const double eighths = 8.0 * exponent;
+    return eighths == std::floor(eighths) && eighths >= 1.0 && eighths <= 32.0
+               ? static_cast<int>(eighths)
+               : 0;
+}
+
 // s^(p/2) for s = ||nᵀJ⁻¹||² > 0: the band to the power p. √s for p = 1; for p a multiple of 1/8
-// (the default 5/8) (s^(1/16))^(8p) with s^(1/16) as four square roots, which the search's loop
-// computes several times faster than std::pow (spatial_bench MultiStartEdge) to within a few ulp
-// of it; std::pow otherwise. T is double or a Ceres Jet.
+// (EdgeExponentEighths: the default 5/8) (s^(1/16))^(8p), s^(1/16) as four square roots, which
+// the search's loop takes several times faster than std::pow and, for the small p lexel uses,
+// within a few ulp of it (the error grows with the 8p − 1 products); std::pow otherwise. T is
+// double or a Ceres Jet.
 template <typename T>
 T BandPower(const T& s, double exponent) {
     using std::pow;
     using std::sqrt;
     if (exponent == 1.0) return sqrt(s);
-    const double eighths = 8.0 * exponent;
-    if (eighths == std::floor(eighths) && eighths >= 1.0 && eighths <= 32.0) {
+    if (const int eighths = EdgeExponentEighths(exponent)) {
         const T r = sqrt(sqrt(sqrt(sqrt(s))));
         T power = r;
-        for (int k = 1; k < static_cast<int>(eighths); ++k) power = power * r;
+        for (int k = 1; k < eighths; ++k) power = power * r;
         return power;
     }
     return pow(s, 0.5 * exponent);

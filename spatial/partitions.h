@@ -46,10 +46,10 @@ struct PartitionOptions {
     CascadeAllocation allocation = CascadeAllocation::kEqual;
     bool snap = false;  // sdsm: snap its boxes to whole texels (directional lights)
     // The energy sdsm-optimal's multi-start minimizes per partition (energy.h) and, for every
-    // scheme, the Lagrange allocation's cost: e with the prior by default (c_i = e_i √N_i,
-    // N_i ∝ c_i^(2/3)), as `optimal`: at the 720² readback its searches beat h's per partition and
-    // its Lagrange allocation beats h's, though not the equal split (RESULTS.md, issue 25);
-    // EnergyOptions{} (`sdsm-optimal-h`) is h as published (c_i = h_i N_i, N_i ∝ √c_i).
+    // scheme, the Lagrange allocation's cost: e with the prior by default (c_i = e_i N_i^(p/2),
+    // N_i ∝ c_i^(1/(1+p/2))), as `optimal`: at the 720² readback its searches beat h's per
+    // partition and its Lagrange allocation beats h's, though not the equal split (RESULTS.md,
+    // issue 25); EnergyOptions{} (`sdsm-optimal-h`) is h as published (c_i = h_i N_i, N_i ∝ √c_i).
     EnergyOptions energy = kEdgeEnergy;
     // sdsm-optimal's sample budget per partition (OptimizerOptions::maxSamples; 0: all).
     std::size_t maxSamples = 0;
@@ -57,7 +57,7 @@ struct PartitionOptions {
 
 // The cascades of `scheme` for the context's light. Their texels add up to context.map's (equal
 // allocation: k maps of (W/√k) × (H/√k), rounded down); kLagrange moves texels toward the
-// partitions with the larger cost (c_i = e_i √N_i, or h_i N_i on h: PartitionOptions::energy).
+// partitions with the larger cost (c_i = e_i N_i^(p/2), or h_i N_i on h: PartitionOptions::energy).
 // An empty partition (no visible point) is kept,
 // with visiblePoints = 0 and the whole view's focused-tight map at its resolution. Throws
 // DomainError as the baselines do; std::invalid_argument for count outside [1, kMaxCascades].

@@ -25,7 +25,8 @@ struct HysteresisDecision {
 };
 
 // Median of SampleBadness over the boundary samples (+inf when there are none in front). With
-// kEdge, the median of the edge energy's summand ||nᵀJ⁻¹|| (energy.h; +inf behind the plane).
+// kEdge, the median band ||nᵀJ⁻¹|| (energy.h: the edge energy sums its p-th powers, a monotone
+// map, so the median sample is the same; +inf behind the plane).
 double MedianBadness(const LightMatrix& matrix, const LightSamples& samples,
                      EnergyKind kind = EnergyKind::kReport);
 

@@ -7,8 +7,8 @@
 // of depths and a texel covers about the same number of pixels in every slice. Each cascade is
 // then fitted to its own visible points: SDSM with the light-space box, `sdsm-optimal` with
 // Algorithm 1 (10) from that box and the other standard starts, on the partition's own boundary
-// samples, minimizing `optimal`'s edge energy e = Σ‖n̂ᵀJ⁻¹‖ plus its footprint prior. The budget
-// is fair: k maps of (W/√k)×(H/√k), the single map's texels in all.
+// samples, minimizing `optimal`'s edge energy e = Σ‖n̂ᵀJ⁻¹‖^(5/8) plus its footprint prior. The
+// budget is fair: k maps of (W/√k)×(H/√k), the single map's texels in all.
 //
 // This program prints each cascade's interval, map, points, pixels and e for `sdsm` and
 // `sdsm-optimal`, and writes one figure: the four maps of each (rows 1–2; green: the visible

@@ -118,9 +118,10 @@ struct MethodMetrics {
     // (MeanOverPhases; 0 for one phase). What the tables compare.
     double misclassifiedMean = 0.0, falseShadowMean = 0.0, misclassifiedError = 0.0;
     double h = 0.0;  // eq. (6) over the boundary samples
-    // The edge energy e with the footprint prior (kEdgeEnergy, energy.h) that `optimal`
-    // minimizes: of the map, or summed over the cascades (each over the samples and prior points
-    // it serves); NaN for a warped or virtual map (not a light matrix).
+    // The edge energy e with the footprint prior (kEdgeEnergy at the case's exponent,
+    // Scene::edgeExponent; energy.h) that `optimal` minimizes: of the map, or summed over the
+    // cascades (each over the samples and prior points it serves); NaN for a warped or virtual map
+    // (not a light matrix).
     double e = std::numeric_limits<double>::quiet_NaN();
     double hGrazing = 0.0;  // ... of which from grazing samples (kGrazingCos)
     // Counted pixels no map covers: outside every cascade's depth interval, behind the serving

@@ -119,7 +119,7 @@ TEST(EdgeEnergy, ExponentRaisesEverySummandAndTheTexelLaw) {
     std::mt19937_64 rng(17);
     const LightSamples s = RandomSamples(rng, 30);
     const LightMatrix m = MatrixFor(s, rng);
-    for (const double p : {0.5, 0.7, 0.75, 1.0, 1.5}) {  // 0.7: std::pow's branch
+    for (const double p : {0.5, kDefaultEdgeExponent, 0.7, 0.75, 1.0, 1.5}) {  // 0.7: std::pow's
         double reference = 0.0, prior = 0.0;
         for (std::size_t k = 0; k < s.lsX.size(); ++k) {
             const Eigen::Matrix2d inv = InverseJacobian(m, s.lsX[k], s.dXdx1[k], s.dXdx2[k]);
@@ -162,6 +162,7 @@ TEST(EnergyFamily, GradientsMatchJetsAndCentralDifferences) {
                                    {EnergyKind::kEdge, 0.0, 0.5},
                                    {EnergyKind::kEdge, kDefaultPriorWeight, 0.75},
                                    {EnergyKind::kEdge, 2.0, 1.5},
+                                   kEdgeEnergy,  // the shipped p = 5/8
                                    {EnergyKind::kReport, 0.0},
                                    {EnergyKind::kReport, 2.0}};
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -208,7 +209,8 @@ TEST(EnergyFamily, SearchEnergyEqualsEnergyBelowTheBoundAndStopsAboveIt) {
     const LightMatrix m = MatrixFor(s, rng);
     for (const EnergyOptions options :
          {EnergyOptions{EnergyKind::kEdge, 0.0}, EnergyOptions{EnergyKind::kEdge, 1.0},
-          EnergyOptions{EnergyKind::kEdge, 1.0, 0.75}, EnergyOptions{EnergyKind::kReport, 1.0}}) {
+          EnergyOptions{EnergyKind::kEdge, 1.0, 0.75}, kEdgeEnergy,
+          EnergyOptions{EnergyKind::kReport, 1.0}}) {
         const SearchEnergy search(s, options);
         const double e = Energy(m, s, options);
         EXPECT_EQ(search(m), e);

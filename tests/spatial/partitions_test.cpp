@@ -61,7 +61,7 @@ double AllocationCost(std::span<const double> costs, std::span<const int> texels
     return total;
 }
 
-// k = 1: h's law (squared footprints, 1/N); k = 1/2: the edge energy e's (lengths, 1/√N).
+// k = 1: h's law (squared footprints, 1/N); k = 1/2: e₁'s (lengths, 1/√N); e at p = 5/8 has 5/16.
 TEST(LagrangeCascadeTexels, NoSingleTexelExchangeLowersTheTotal) {
     const Resolution budget{400, 400};
     const std::vector<std::vector<double>> cases = {
@@ -89,7 +89,7 @@ TEST(LagrangeCascadeTexels, NoSingleTexelExchangeLowersTheTotal) {
                 }
             }
             // The real Lagrange solution N_i = N c_i^(1/(k+1)) / Σ c_j^(1/(k+1)) (√c_i for h,
-            // c_i^(2/3) for e) is within one texel.
+            // c_i^(2/3) for e₁) is within one texel.
             double rootSum = 0.0;
             for (double c : costs) rootSum += std::pow(c, 1.0 / (k + 1.0));
             for (std::size_t i = 0; i < costs.size(); ++i)

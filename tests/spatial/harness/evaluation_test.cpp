@@ -10,6 +10,7 @@
 
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/run/sweep.h"
+#include "lexel/spatial/energy.h"
 #include "lexel/spatial/harness/methods.h"
 
 namespace lexel::spatial {
@@ -50,6 +51,29 @@ TEST(Evaluation, CountedPixelsAreTheReceiverPixels) {
         EXPECT_GT(counted, 100000);
         EXPECT_EQ(counted, evaluator.Evaluate(light, options).receiverPixels);
     }
+}
+
+// The case's edge exponent (Scene::edgeExponent, optimizer.edge_exponent) reaches what `optimal`
+// searches on and the e column: at p = 1 and at the default 5/8 the column is e at that p of the
+// map optimal chose, and the two exponents choose different maps for the walkthrough's first
+// light (the default's 5/8 would give both runs one map).
+TEST(Evaluation, CaseEdgeExponentReachesOptimalAndTheEColumn) {
+    Scene scene = Walkthrough();
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    EvaluationOptions options;
+    options.methods = {kOptimalMethod};
+    std::vector<LightMatrix> matrices;
+    for (const double p : {1.0, kDefaultEdgeExponent}) {
+        scene.edgeExponent = p;
+        const Evaluator evaluator(scene, *backend);
+        const LightOutcome o = evaluator.Evaluate(scene.lights.front(), options);
+        const MethodOutcome& optimal = o.methods.front();
+        const double e =
+            Energy(optimal.matrix, o.samples, {EnergyKind::kEdge, kDefaultPriorWeight, p});
+        EXPECT_NEAR(optimal.metrics.e, e, 1e-12 * e) << "exponent " << p;
+        matrices.push_back(optimal.matrix);
+    }
+    EXPECT_NE(matrices[0].p4, matrices[1].p4);
 }
 
 TEST(Evaluation, EveryMethodCoversEveryVisibleSampleAndIsDeterministic) {
