@@ -182,7 +182,7 @@ void Summands(const SearchEnergy::Points& p, std::size_t begin, std::size_t n, E
 }
 
 // The summands of Summands as Energy has them: e's squared norms to the power p/2 in place, by
-// BandPower's operations in its order, in loops without branches that the compiler vectorizes
+// BandPower's operations in its order, in loops without branches that the compiler may vectorize
 // (this file is built with -fno-math-errno: std::sqrt then needs no errno path, and its result,
 // correctly rounded, is the same packed or not); h's as they are.
 void Finish(const EnergyOptions& options, std::size_t n, double* f) {
