@@ -201,10 +201,118 @@ void Finish(const EnergyOptions& options, std::size_t n, double* f) {
     }
 }
 
+// The terms of EdgeEnergyGradientAnalytic for one block of points, in its operations and their
+// order (JacobianTermsAt, the summand's power, NegatedChainToP4), computed in loops without
+// branches: each point's weighted, negated contribution g[c][k] to ∂e/∂p4 and whether that
+// function counts it (in front, det J ≠ 0, q > 0, f_e finite).
+struct GradientBlock {
+    double invW[kSummandBlock], u[2][kSummandBlock], v[2][kSummandBlock];
+    double J[2][2][kSummandBlock], det[kSummandBlock], q[kSummandBlock], power[kSummandBlock];
+    double g[3][kSummandBlock];
+    bool counts[kSummandBlock];
+};
+
+// JacobianTermsAt and the edge summand's q (with or without a normal) of points [begin, n);
+// power receives q / det², the summand's square, for Finish.
+void JacobianBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t n,
+                   const LightMatrix& m, GradientBlock* b) {
+    const double* x[3] = {&p.c[0][begin], &p.c[1][begin], &p.c[2][begin]};
+    const double* d[2][3] = {{&p.c[3][begin], &p.c[4][begin], &p.c[5][begin]},
+                             {&p.c[6][begin], &p.c[7][begin], &p.c[8][begin]}};
+    const double *n1 = &p.c[9][begin], *n2 = &p.c[10][begin], *has = &p.hasNormal[begin];
+    const glm::dvec3 rows[2] = {m.p1, m.p2};
+    for (std::size_t k = 0; k < n; ++k) {
+        const glm::dvec3 X(x[0][k], x[1][k], x[2][k]);
+        const glm::dvec3 D[2] = {{d[0][0][k], d[0][1][k], d[0][2][k]},
+                                 {d[1][0][k], d[1][1][k], d[1][2][k]}};
+        const double invW = 1.0 / glm::dot(m.p4, X);
+        const double wD[2] = {glm::dot(m.p4, D[0]), glm::dot(m.p4, D[1])};
+        double J[2][2], u[2];
+        for (int i = 0; i < 2; ++i) {
+            u[i] = glm::dot(rows[i], X) * invW;
+            b->u[i][k] = u[i];
+            b->v[i][k] = wD[i] * invW;
+        }
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) {
+                J[i][j] = (glm::dot(rows[i], D[j]) - u[i] * wD[j]) * invW;
+                b->J[i][j][k] = J[i][j];
+            }
+        const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+        const double a = n1[k] * J[1][1] - n2[k] * J[1][0], c = n2[k] * J[0][0] - n1[k] * J[0][1];
+        const double qNone =
+            0.5 * (J[0][0] * J[0][0] + J[0][1] * J[0][1] + J[1][0] * J[1][0] + J[1][1] * J[1][1]);
+        const double q = has[k] != 0.0 ? a * a + c * c : qNone;
+        b->invW[k] = invW;
+        b->det[k] = det;
+        b->q[k] = q;
+        b->power[k] = q / (det * det);
+    }
+}
+
+// After Finish has raised power[k] to the summand f_e^p: p f_e^(p−1), ∂f_e/∂J and the chain to
+// p4, times `weight`, into g; and the points EdgeEnergyGradientAnalytic skips.
+void ChainBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t n, double exponent,
+                double weight, GradientBlock* b) {
+    const double* x[3] = {&p.c[0][begin], &p.c[1][begin], &p.c[2][begin]};
+    const double* d[2][3] = {{&p.c[3][begin], &p.c[4][begin], &p.c[5][begin]},
+                             {&p.c[6][begin], &p.c[7][begin], &p.c[8][begin]}};
+    const double *n1 = &p.c[9][begin], *n2 = &p.c[10][begin], *has = &p.hasNormal[begin];
+    const bool unitPower = exponent == 1.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        double J[2][2];
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) J[i][j] = b->J[i][j][k];
+        const double a = n1[k] * J[1][1] - n2[k] * J[1][0], c = n2[k] * J[0][0] - n1[k] * J[0][1];
+        const bool normal = has[k] != 0.0;
+        const double dQ[2][2] = {
+            {normal ? 2.0 * c * n2[k] : J[0][0], normal ? -2.0 * c * n1[k] : J[0][1]},
+            {normal ? -2.0 * a * n2[k] : J[1][0], normal ? 2.0 * a * n1[k] : J[1][1]}};
+        const double det = b->det[k], q = b->q[k];
+        const double root = std::sqrt(q), absDet = std::abs(det);
+        const double f = root / absDet;
+        b->counts[k] = det != 0.0 && q > 0.0 && std::isfinite(f);
+        const double cof[2][2] = {{J[1][1], -J[1][0]}, {-J[0][1], J[0][0]}};
+        const double power = unitPower ? 1.0 : exponent * b->power[k] / f;
+        const double g = power * 0.5 / (root * absDet), t = power * f / det;
+        double cX = 0.0, cD[2] = {0.0, 0.0};
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) {
+                const double dF = g * dQ[i][j] - t * cof[i][j];
+                cX += dF * (J[i][j] - b->u[i][k] * b->v[j][k]);
+                cD[j] += dF * b->u[i][k];
+            }
+        const double scale = weight * b->invW[k];
+        for (int e = 0; e < 3; ++e)
+            b->g[e][k] = scale * (cX * x[e][k] + cD[0] * d[0][e][k] + cD[1] * d[1][e][k]);
+    }
+}
+
+// Σ weight ∂(f_e^p)/∂p4 over the points: EdgeEnergyGradientAnalytic's value, bit for bit.
+glm::dvec3 PackedEdgeGradient(const SearchEnergy::Points& p, const LightMatrix& m,
+                              const EnergyOptions& options, double weight) {
+    glm::dvec3 grad(0.0);
+    GradientBlock b;
+    for (std::size_t begin = 0; begin < p.count; begin += kSummandBlock) {
+        const std::size_t n = std::min(kSummandBlock, p.count - begin);
+        JacobianBlock(p, begin, n, m, &b);
+        Finish(options, n, b.power);
+        ChainBlock(p, begin, n, options.exponent, weight, &b);
+        for (std::size_t k = 0; k < n; ++k) {
+            if (!(glm::dot(m.p4, glm::dvec3(p.c[0][begin + k], p.c[1][begin + k],
+                                            p.c[2][begin + k])) > p.frontMargin[begin + k]) ||
+                !b.counts[k])
+                continue;  // !InFront, or skipped as EdgeEnergyGradientAnalytic skips it
+            grad -= glm::dvec3(b.g[0][k], b.g[1][k], b.g[2][k]);
+        }
+    }
+    return grad;
+}
+
 }  // namespace
 
 SearchEnergy::SearchEnergy(const LightSamples& samples, const EnergyOptions& options)
-    : options_(options) {
+    : options_(options), source_(&samples) {
     if (options.IsReport()) {
         report_.emplace(samples);
         return;
@@ -251,6 +359,17 @@ double SearchEnergy::operator()(const LightMatrix& m, double bound) const {
             return std::max(sum + scale * prior, bound);
     }
     return sum + options_.priorWeight * prior / static_cast<double>(prior_.count);
+}
+
+glm::dvec3 SearchEnergy::Gradient(const LightMatrix& m) const {
+    if (options_.kind != EnergyKind::kEdge) return EnergyGradient(m, *source_, options_);
+    glm::dvec3 g = PackedEdgeGradient(samples_, m, options_, 1.0);
+    if (options_.priorWeight != 0.0) {
+        const double weight =
+            prior_.count == 0 ? 0.0 : options_.priorWeight / static_cast<double>(prior_.count);
+        g += PackedEdgeGradient(prior_, m, options_, weight);
+    }
+    return g;
 }
 
 std::optional<double> RelevantFootprint(const LightMatrix& m, const LightSamples& s) {

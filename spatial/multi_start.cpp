@@ -48,7 +48,7 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
     if (options.maxSamples != 0 && samples.lsX.size() > options.maxSamples) {
         OptimizerOptions every = options;  // thinned once: every start is judged on the same
         every.maxSamples = 0;
-        return OptimizeFromStarts(ThinSamples(samples, options.maxSamples), starts, map, every);
+        return OptimizeFromStarts(SamplesWithinBudget(samples, options), starts, map, every);
     }
     MultiStartResult out;
     OptimizerOptions searchOptions = options;

@@ -281,12 +281,17 @@ glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& k, double angle) {
     return glm::normalize(p4 * c + glm::cross(k, p4) * s + k * glm::dot(k, p4) * (1.0 - c));
 }
 
+LightSamples SamplesWithinBudget(const LightSamples& samples, const OptimizerOptions& options) {
+    return options.hullOnce ? ThinSamplesForSearch(samples, options.maxSamples)
+                            : ThinSamples(samples, options.maxSamples);
+}
+
 OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
                                     Resolution map, const OptimizerOptions& options) {
     if (options.maxSamples != 0 && samples.lsX.size() > options.maxSamples) {
         OptimizerOptions every = options;
         every.maxSamples = 0;
-        return OptimizeLightMatrix(ThinSamples(samples, options.maxSamples), initialP4, map, every);
+        return OptimizeLightMatrix(SamplesWithinBudget(samples, options), initialP4, map, every);
     }
     if (samples.lsRelevant.empty())
         throw DomainError(Subject::kCamera, "the camera sees nothing: no relevant points");
@@ -318,7 +323,7 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
     double bestH = best ? energy(*best) : std::numeric_limits<double>::infinity();
     r.hAfterIteration.push_back(bestH);
     for (int it = 0; it < options.iterations && best; ++it) {
-        const glm::dvec3 g = EnergyGradient(*best, samples, options.energy);
+        const glm::dvec3 g = energy.Gradient(*best);
         const glm::dvec3 axis = glm::cross(p4, -g);
         const double axisLength = glm::length(axis);
         if (!(axisLength > 0.0) || !std::isfinite(axisLength)) break;

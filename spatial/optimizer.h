@@ -107,6 +107,10 @@ class RelevantHull {
 // p4 rotated by `angle` radians about the unit axis (Rodrigues).
 glm::dvec3 RotateAxis(const glm::dvec3& p4, const glm::dvec3& unitAxis, double angle);
 
+// The samples the optimizer runs on under options.maxSamples (the caller checked that there are
+// more): ThinSamplesForSearch when it fits from the hull (hullOnce), else ThinSamples (samples.h).
+LightSamples SamplesWithinBudget(const LightSamples& samples, const OptimizerOptions& options);
+
 // Algorithm 1 from `initialP4` (InitialLightAxis, baselines.h). Throws DomainError: kCamera when
 // the samples have no relevant points; kLight when not even the initial axis sees them all.
 OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,

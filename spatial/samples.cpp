@@ -108,9 +108,12 @@ std::uint64_t ThinningPriority(std::uint32_t pixel) {
     return z ^ (z >> 31);
 }
 
-LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples) {
+namespace {
+
+// Which of the n samples ThinSamples keeps (all when n ≤ maxSamples or maxSamples = 0).
+std::vector<bool> KeptSamples(const LightSamples& samples, std::size_t maxSamples) {
     const std::size_t n = samples.lsX.size();
-    if (maxSamples == 0 || n <= maxSamples) return samples;
+    if (maxSamples == 0 || n <= maxSamples) return std::vector<bool>(n, true);
     // Each sample's priority (of its index where the samples, built by hand, have no pixels),
     // ties broken by order; the maxSamples least are kept, in their order.
     std::vector<std::pair<std::uint64_t, std::size_t>> ranked(n);
@@ -123,14 +126,44 @@ LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples) {
     std::nth_element(ranked.begin(), ranked.begin() + budget, ranked.end());
     std::vector<bool> keep(n, false);
     for (std::ptrdiff_t k = 0; k < budget; ++k) keep[ranked[k].second] = true;
-    LightSamples out = samples;
-    KeepWhere(out.lsX, keep);
-    KeepWhere(out.dXdx1, keep);
-    KeepWhere(out.dXdx2, keep);
+    return keep;
+}
+
+// The kept samples of `samples` and its other members, the relevant points given.
+LightSamples KeepSamples(const LightSamples& samples, const std::vector<bool>& keep,
+                         const std::vector<glm::dvec3>& lsRelevant) {
+    LightSamples out;
+    out.lsX = samples.lsX;
+    out.dXdx1 = samples.dXdx1;
+    out.dXdx2 = samples.dXdx2;
+    out.pixel = samples.pixel;
+    out.wsX = samples.wsX;
+    out.edgeNormal = samples.edgeNormal;
+    for (auto* values : {&out.lsX, &out.dXdx1, &out.dXdx2, &out.wsX}) KeepWhere(*values, keep);
     KeepWhere(out.pixel, keep);
-    KeepWhere(out.wsX, keep);
     KeepWhere(out.edgeNormal, keep);
+    out.lsRelevant = lsRelevant;
+    out.lsRelevantHull = samples.lsRelevantHull;
+    out.boundaryPixels = samples.boundaryPixels;
+    out.lsPrior = samples.lsPrior;
+    out.priorDXdx1 = samples.priorDXdx1;
+    out.priorDXdx2 = samples.priorDXdx2;
+    out.wsPrior = samples.wsPrior;
     return out;
+}
+
+}  // namespace
+
+LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples) {
+    const std::size_t n = samples.lsX.size();
+    if (maxSamples == 0 || n <= maxSamples) return samples;
+    return KeepSamples(samples, KeptSamples(samples, maxSamples), samples.lsRelevant);
+}
+
+LightSamples ThinSamplesForSearch(const LightSamples& samples, std::size_t maxSamples) {
+    const bool hull = !samples.lsRelevantHull.empty();
+    return KeepSamples(samples, KeptSamples(samples, maxSamples),
+                       hull ? samples.lsRelevantHull : samples.lsRelevant);
 }
 
 LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& lightSpace,

@@ -77,6 +77,14 @@ LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightS
 // the samples keep where the edges lie (OptimizerOptions::maxSamples; RESULTS.md, issue 25).
 LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples);
 
+// ThinSamples for the optimizer's fit from the hull (OptimizerOptions::hullOnce): the same kept
+// samples, and as the relevant points only lsRelevantHull's vertices when there are any. They are
+// relevant points and generate the same cone (optimizer.cpp's header comment), so every fit and
+// decision of the search is the same, while a fine readback's hundreds of thousands of relevant
+// points are not copied per light (at 720² with a budget of 512, copying them took 29% of
+// `optimal`'s time per light: spatial_bench FineReadbackBudget).
+LightSamples ThinSamplesForSearch(const LightSamples& samples, std::size_t maxSamples);
+
 // ThinSamples' priority of a readback pixel: SplitMix64's finalizer of its index.
 std::uint64_t ThinningPriority(std::uint32_t pixel);
 

@@ -221,6 +221,30 @@ TEST(EnergyFamily, SearchEnergyEqualsEnergyBelowTheBoundAndStopsAboveIt) {
     }
 }
 
+// The search's packed gradient is EnergyGradient's value bit for bit, over block edges (200
+// samples: three blocks of 64 and 8), with a sample behind the plane and a singular one skipped.
+TEST(EnergyFamily, SearchGradientIsEnergyGradientBitForBit) {
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        std::mt19937_64 rng(seed);
+        LightSamples s = RandomSamples(rng, 200);
+        const LightMatrix m = MatrixFor(s, rng);
+        s.lsX[70] = -s.lsX[70];       // behind the plane: skipped
+        s.dXdx2[130] = s.dXdx1[130];  // det J = 0: skipped
+        s.priorDXdx2[3] = s.priorDXdx1[3];
+        for (const EnergyOptions options :
+             {EnergyOptions{EnergyKind::kEdge, 0.0}, EnergyOptions{EnergyKind::kEdge, 1.0},
+              EnergyOptions{EnergyKind::kEdge, 1.0, 0.75}, kEdgeEnergy,
+              EnergyOptions{EnergyKind::kEdge, 2.0, 0.3}, EnergyOptions{EnergyKind::kReport, 1.0},
+              EnergyOptions{}}) {
+            const glm::dvec3 expected = EnergyGradient(m, s, options);
+            ASSERT_GT(glm::length(expected), 0.0) << Describe(m, s, seed);
+            EXPECT_EQ(SearchEnergy(s, options).Gradient(m), expected)
+                << Describe(m, s, seed) << ", exponent " << options.exponent << ", prior "
+                << options.priorWeight;
+        }
+    }
+}
+
 TEST(FootprintPrior, IsTheWeightedMeanOfTheNoNormalSummand) {
     std::mt19937_64 rng(13);
     LightSamples s = RandomSamples(rng, 30);

@@ -163,6 +163,44 @@ TEST(ThinSamples, KeepsTheLeastPrioritiesInOrderAndEverythingElse) {
     EXPECT_TRUE(b.pixel.empty());
 }
 
+TEST(ThinSamples, ForSearchKeepsTheSameSamplesAndOfTheRelevantPointsTheHull) {
+    LightSamples s;
+    for (int i = 0; i < 10; ++i) {
+        s.lsX.push_back({double(i), 0.0, 1.0});
+        s.dXdx1.push_back({1.0, double(i), 0.0});
+        s.dXdx2.push_back({0.0, 1.0, double(i)});
+        s.pixel.push_back(static_cast<std::uint32_t>(100 + i));
+        s.wsX.push_back({double(i), 1.0, 2.0});
+        s.edgeNormal.push_back({double(i), 1.0});
+    }
+    s.lsRelevant = {{1, 2, 3}, {4, 5, 6}, {2, 3, 4}};
+    s.lsRelevantHull = {{1, 2, 3}, {4, 5, 6}};
+    s.lsPrior = {{7, 8, 9}};
+    s.priorDXdx1 = {{1, 0, 0}};
+    s.priorDXdx2 = {{0, 1, 0}};
+    s.wsPrior = {{3, 2, 1}};
+    s.boundaryPixels = 12;
+    for (const std::size_t budget : {4u, 10u}) {
+        const LightSamples t = ThinSamples(s, budget), u = ThinSamplesForSearch(s, budget);
+        EXPECT_EQ(u.lsX, t.lsX);
+        EXPECT_EQ(u.dXdx1, t.dXdx1);
+        EXPECT_EQ(u.dXdx2, t.dXdx2);
+        EXPECT_EQ(u.pixel, t.pixel);
+        EXPECT_EQ(u.wsX, t.wsX);
+        EXPECT_EQ(u.edgeNormal, t.edgeNormal);
+        EXPECT_EQ(u.lsRelevant, s.lsRelevantHull);  // the cone's generators only
+        EXPECT_EQ(u.lsRelevantHull, s.lsRelevantHull);
+        EXPECT_EQ(u.lsPrior, s.lsPrior);
+        EXPECT_EQ(u.priorDXdx1, s.priorDXdx1);
+        EXPECT_EQ(u.priorDXdx2, s.priorDXdx2);
+        EXPECT_EQ(u.wsPrior, s.wsPrior);
+        EXPECT_EQ(u.boundaryPixels, 12u);
+    }
+    // Without a hull (samples made by hand) the relevant points stay whole.
+    s.lsRelevantHull.clear();
+    EXPECT_EQ(ThinSamplesForSearch(s, 4).lsRelevant, s.lsRelevant);
+}
+
 // The pixels ThinSamples keeps of samples on `pixels` (ascending).
 std::vector<std::uint32_t> KeptPixels(const std::vector<std::uint32_t>& pixels,
                                       std::size_t budget) {
