@@ -1,0 +1,48 @@
+# cases/scripts/concordance_table.py on a lights.csv worked by hand (methods A, B, C; se 0 unless
+# said):
+#   light 0: h 1, 2, 3; e 1, 3, 2; errors 10, 20, 30: h orders all three pairs right; e gets
+#            (A,B) and (A,C) right and (B,C) wrong.
+#   light 1: A and B 10 ± 3 and 15 ± 3 (5 < 1.96·√18 = 8.3: within the noise); C's h is inf and
+#            its e empty: nothing counts.
+#   light 2: h 2, 2, 1 (A,B tie: not ranked); e 2, 1, 9; errors 10, 50, 30: h gets (A,C) wrong
+#            and (B,C) right; e gets (A,B) wrong, (A,C) right, (B,C) wrong.
+# Every pair: h 4 of 5 (80.0%), e 3 of 6 (50.0%). Among A and B: h 1 of 1, e 1 of 2.
+# Invoked by ctest with -DPYTHON=... -DSCRIPT=... -DWORK=...
+include(${CMAKE_CURRENT_LIST_DIR}/script_errors.cmake)
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}/abc")
+set(columns "")
+foreach(m A B C)
+    string(APPEND columns ",${m}_h,${m}_e,${m}_misclassified_mean,${m}_misclassified_se")
+endforeach()
+file(WRITE "${WORK}/abc/lights.csv" "light${columns}\n"
+     "0,1,1,10,0,2,3,20,0,3,2,30,0\n"
+     "1,5,5,10,3,1,1,15,3,inf,,40,0\n"
+     "2,2,2,10,0,2,1,50,0,1,9,30,0\n")
+
+function(expect_rows args)
+    execute_process(COMMAND "${PYTHON}" "${SCRIPT}" ${args}
+                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    foreach(wanted IN LISTS ARGN)
+        string(FIND "${out}" "${wanted}" at)
+        if(NOT code EQUAL 0 OR at EQUAL -1)
+            message(FATAL_ERROR "concordance_table.py ${args}: exit ${code}, wanted\n${wanted}\n"
+                                "got\n${out}${err}")
+        endif()
+    endforeach()
+endfunction()
+
+expect_rows("${WORK}/abc"
+    "| set | lights | pairs | h orders as errors | e orders as errors |"
+    "| abc | 3 | 5 / 6 | 80.0% | 50.0% |"
+    "Pairs of every method differing")
+expect_rows("--among;A;--among;B;${WORK}/abc"
+    "| abc | 3 | 1 / 2 | 100.0% | 50.0% |"
+    "Pairs of A, B differing")
+
+expect_script_errors(concordance_table.py
+                     "--among;A;--among;psm;${WORK}/abc|abc/lights.csv: no psm_h"
+                     "--among;A;${WORK}/abc|abc/lights.csv: fewer than two methods"
+                     "${WORK}/none|none: cannot read lights.csv"
+                     "--phases;${WORK}/abc|--phases: unknown option"
+                     "--among|--among: needs a method name")
