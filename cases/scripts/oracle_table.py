@@ -16,10 +16,15 @@ from each resample's sums; a fixed seed, so a run repeats its intervals). Then t
 the sets' shares with its interval (the average over the sets of each resample's shares) and the
 share pooled over every light. --exclude drops a light from the DIRs whose name (the last path
 component) matches PATTERN (shell-style: '*directional:8' drops light 8 of every directional
-set). A share whose gap is 0 is undefined: printed as "—" and left out of the average. Bad input:
+set). A share whose gap is 0 is undefined: printed as "—" and left out of the average. Where the
+sweep wrote the phase means' standard errors, a set whose gap (Σ from − Σ bound) lies within
+1.96 standard errors of it (the phase noise of the two methods' means) is named with its z, and
+the average over the other sets is printed beside: such a set's share says nothing (on the
+shipped sweeps, a light whose count swings by thousands with the phase decides it). Bad input:
 one line, exit status 2.
 """
 import fnmatch
+import math
 import os
 import random
 import sys
@@ -29,6 +34,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fair_table import fail, parse_args, read_rows  # noqa: E402
 
 MEAN = "_misclassified_mean"
+SE = "_misclassified_se"
 SEED = 1  # any fixed seed: the same DIRs give the same intervals on every run
 
 
@@ -69,15 +75,38 @@ def read_set(d, names, excluded):
         fail(f"{d}/lights.csv: --exclude leaves no light")
     methods = [k[: -len(MEAN)] for k in rows[0] if k.endswith(MEAN)]
     mean = {m: [float(r[m + MEAN]) for r in rows] for m in methods}
-    return name, methods, mean
+    # The gap's noise: the phase means' standard errors, where the sweep wrote them.
+    se = {m: [float(r[m + SE]) for r in rows] for m in names[1:] if m + SE in rows[0]}
+    return name, methods, mean, se
+
+
+def gap_z(mean, se, frm, bound):
+    """(Σ from − Σ bound) over its standard error (independent phase means), or None."""
+    if frm not in se or bound not in se:
+        return None
+    noise = math.sqrt(sum(x * x for x in se[frm]) + sum(x * x for x in se[bound]))
+    gap = sum(mean[frm]) - sum(mean[bound])
+    return gap / noise if noise > 0 else None
+
+
+def average_line(shares, boots, chosen, resamples):
+    """The average of the chosen sets' shares and its percentile interval, as text."""
+    average = sum(shares[i] for i in chosen) / len(chosen)
+    per_resample = []
+    for k in range(resamples):
+        v = [boots[i][k] for i in chosen]
+        per_resample.append(None if None in v else sum(v) / len(v))
+    ci = interval(per_resample)
+    return f"{percent(average)}%" + (f" ({percent(ci[0])} to {percent(ci[1])}%)" if ci else "")
 
 
 def main(names, excluded, resamples, dirs):
     reference, frm, bound = names
     rng = random.Random(SEED)
-    shares, boots, pooled, lines = [], [], [], []
+    shares, boots, pooled, lines, zs = [], [], [], [], []
     sets = [read_set(d, names, excluded) for d in dirs]  # every input checked before any output
-    for name, methods, mean in sets:
+    for name, methods, mean, se in sets:
+        zs.append(gap_z(mean, se, frm, bound))
         triples = list(zip(mean[reference], mean[frm], mean[bound]))
         share = closed(triples)
         boot = [closed([rng.choice(triples) for _ in triples]) for _ in range(resamples)]
@@ -101,16 +130,26 @@ def main(names, excluded, resamples, dirs):
     print("\n".join(lines))
     defined = [i for i, s in enumerate(shares) if s is not None]
     if defined:
-        average = sum(shares[i] for i in defined) / len(defined)
-        per_resample = []
-        for k in range(resamples):
-            v = [boots[i][k] for i in defined]
-            per_resample.append(None if None in v else sum(v) / len(v))
-        ci = interval(per_resample)
-        text = f"{percent(average)}%" + (f" ({percent(ci[0])} to {percent(ci[1])}%)" if ci else "")
-        sets_text = f"{len(defined)} set" + ("s" if len(defined) != 1 else "")
-        print(f"\nAverage over the {sets_text}: {reference} closes {text} of {frm}'s gap to "
-              f"{bound}; pooled over the {len(pooled)} lights: {percent(closed(pooled))}%.")
+        text = average_line(shares, boots, defined, resamples)
+        print(f"\nAverage over the {plural(len(defined), 'set')}: {reference} closes {text} of "
+              f"{frm}'s gap to {bound}; pooled over the {len(pooled)} lights: "
+              f"{percent(closed(pooled))}%.")
+    # A set whose gap is within its phase noise has a share that says nothing (its interval
+    # spans hundreds of %): named, and the average over the others given beside.
+    noisy = [i for i in defined if zs[i] is not None and abs(zs[i]) < 1.96]
+    if noisy:
+        names_text = ", ".join(f"{sets[i][0]} (z {zs[i]:.1f})".replace("-", "−") for i in noisy)
+        rest = [i for i in defined if i not in noisy]
+        line = (f"Gap to {bound} within its phase noise (|gap| < 1.96 standard errors): "
+                f"{names_text}.")
+        if rest:
+            line += (f" Average over the other {plural(len(rest), 'set')}: "
+                     f"{average_line(shares, boots, rest, resamples)}.")
+        print(line)
+
+
+def plural(n, word):
+    return f"{n} {word}" + ("s" if n != 1 else "")
 
 
 def parse_exclusions(values):

@@ -59,6 +59,25 @@ expect_rows("--reference;optimal-h;--from;optimal;${WORK}/pair"
     "optimal-h above optimal-oracle | optimal above optimal-oracle | closed |"
     "| pair | 2 | 40 | 45 | 15 | +200.0% | +166.7% | −20% ")
 
+# With the phase means' standard errors: noisy's gap, 30 − 25 = 5 against √(10² + 10²) = 14.1
+# (z 0.4), is within its noise, so its share (30 − 20)/(30 − 25) = 200% is named and the average
+# over the other set (pair, which has no standard errors and so no z) is pair's 17% (0 to 50).
+# clear's gap, 60 − 10 = 50 against √2 (z 35), is beyond it: no such line.
+file(MAKE_DIRECTORY "${WORK}/noisy" "${WORK}/clear")
+set(se_header "light,optimal_misclassified_mean,optimal-h_misclassified_mean,"
+              "optimal-h_misclassified_se,optimal-oracle_misclassified_mean,"
+              "optimal-oracle_misclassified_se\n")
+file(WRITE "${WORK}/noisy/lights.csv" ${se_header} "0,20,30,10,25,10\n")
+file(WRITE "${WORK}/clear/lights.csv" ${se_header} "0,20,60,1,10,1\n")
+expect_rows("${WORK}/pair;${WORK}/noisy"
+    "| noisy | 1 | 20 | 30 | 25 | −20.0% | +20.0% | 200% (200 to 200) |"
+    "Average over the 2 sets: optimal closes 108%"
+    "Gap to optimal-oracle within its phase noise (|gap| < 1.96 standard errors): noisy (z 0.4). Average over the other 1 set: 17% (0 to 50%).")
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/clear" OUTPUT_VARIABLE out)
+if(out MATCHES "within its phase noise")
+    message(FATAL_ERROR "oracle_table.py: clear's gap is beyond its noise, got\n${out}")
+endif()
+
 expect_script_errors(oracle_table.py
                      "--from;psm;${WORK}/pair|pair/lights.csv: no phase-averaged counts of psm"
                      "--reference;psm;${WORK}/pair|pair/lights.csv: no lights with psm's"
