@@ -9,8 +9,9 @@ Usage: concordance_table.py [--among METHOD ...] DIR [DIR ...]
 A pair of methods on one light counts when their phase means differ beyond the noise (by more
 than 1.96 standard errors of the difference, as the sweep's own tables) and the energy ranks them
 (both finite, not equal). Per energy (h: the report's eq. 6; e: the edge energy at the case's
-exponent, as the sweep wrote it), the % of counted pairs it orders as their errors, pooled over
-the set's lights and pairs. The pairs are every two methods of lights.csv, or of the --among
+exponent, as the sweep wrote it), the % of the pairs both energies rank that it orders as their
+errors, pooled over the set's lights and pairs; then the pairs only e ranks (h = 0 on a light
+without boundary samples, where e's prior decides) and e's % on those. The pairs are every two methods of lights.csv, or of the --among
 methods; `optimal` minimizes e and `optimal-h` minimizes h, so pairs among baselines alone (the
 `--among` of the maps neither energy chose) are the fair test. Bad input: one line, exit status 2.
 """
@@ -56,22 +57,35 @@ def methods_of(rows, among, d):
     return methods
 
 
-def concordance(rows, methods, energy):
-    """(agreeing, counted) pairs over the rows."""
-    agree = counted = 0
+def ranks(r, a, b, energy):
+    """The energy's order of a and b on row r: True (a lower), False, or None (it ranks nothing:
+    an infinite or missing value, or a tie, as at h = 0 on a light without boundary samples)."""
+    ea, eb = number(r[a + energy]), number(r[b + energy])
+    if not (math.isfinite(ea) and math.isfinite(eb)) or ea == eb:
+        return None
+    return ea < eb
+
+
+def concordance(rows, methods):
+    """Over the pairs whose errors differ beyond the noise: [agree, counted] for h and for e on
+    the pairs both rank, and for e on the pairs only e ranks."""
+    both_h, both_e, only_e = [0, 0], [0, 0], [0, 0]
     for r in rows:
         for i, a in enumerate(methods):
             for b in methods[i + 1:]:
-                ea, eb = number(r[a + energy]), number(r[b + energy])
-                if not (math.isfinite(ea) and math.isfinite(eb)) or ea == eb:
-                    continue
                 ma, mb = number(r[a + "_misclassified_mean"]), number(r[b + "_misclassified_mean"])
                 sa, sb = number(r[a + "_misclassified_se"]), number(r[b + "_misclassified_se"])
                 if not abs(ma - mb) > 1.96 * math.hypot(sa, sb):
                     continue
-                counted += 1
-                agree += (ea < eb) == (ma < mb)
-    return agree, counted
+                h, e = ranks(r, a, b, "_h"), ranks(r, a, b, "_e")
+                if h is not None and e is not None:
+                    for tally, order in ((both_h, h), (both_e, e)):
+                        tally[0] += order == (ma < mb)
+                        tally[1] += 1
+                elif e is not None:
+                    only_e[0] += e == (ma < mb)
+                    only_e[1] += 1
+    return both_h, both_e, only_e
 
 
 def percent(agree, counted):
@@ -82,15 +96,17 @@ def main(among, dirs):
     lines = []  # every set read before anything is printed: bad input prints no partial table
     for d in dirs:
         rows = read_lights(d)
-        methods = methods_of(rows, among, d)
-        h, e = concordance(rows, methods, "_h"), concordance(rows, methods, "_e")
+        h, e, only_e = concordance(rows, methods_of(rows, among, d))
         name = os.path.basename(os.path.normpath(d))
-        lines.append(f"| {name} | {len(rows)} | {h[1]} / {e[1]} | {percent(*h)} | {percent(*e)} |")
-    print("| set | lights | pairs | h orders as errors | e orders as errors |")
-    print("| --- | ---: | ---: | ---: | ---: |")
+        lines.append(f"| {name} | {len(rows)} | {h[1]} | {percent(*h)} | {percent(*e)} | "
+                     f"{only_e[1]} | {percent(*only_e)} |")
+    print("| set | lights | pairs | h orders as errors | e orders as errors | pairs only e ranks "
+          "| e orders those |")
+    print("| --- | ---: | ---: | ---: | ---: | ---: | ---: |")
     print("\n".join(lines))
-    print(f"\nPairs of {', '.join(among) if among else 'every method'} differing beyond the phase "
-          "noise and ranked by the energy (h's count / e's).")
+    print(f"\nPairs of {', '.join(among) if among else 'every method'} whose phase means differ "
+          "beyond the noise: those both energies rank, then those only e ranks (h ties or is "
+          "infinite there, e.g. h = 0 without boundary samples, where e has its prior).")
 
 
 if __name__ == "__main__":

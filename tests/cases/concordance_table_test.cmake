@@ -4,9 +4,10 @@
 #            (A,B) and (A,C) right and (B,C) wrong.
 #   light 1: A and B 10 ± 3 and 15 ± 3 (5 < 1.96·√18 = 8.3: within the noise); C's h is inf and
 #            its e empty: nothing counts.
-#   light 2: h 2, 2, 1 (A,B tie: not ranked); e 2, 1, 9; errors 10, 50, 30: h gets (A,C) wrong
-#            and (B,C) right; e gets (A,B) wrong, (A,C) right, (B,C) wrong.
-# Every pair: h 4 of 5 (80.0%), e 3 of 6 (50.0%). Among A and B: h 1 of 1, e 1 of 2.
+#   light 2: h 2, 2, 1 (A,B tie: only e ranks it); e 2, 1, 9; errors 10, 50, 30: h gets (A,C)
+#            wrong and (B,C) right; e gets (A,B) wrong, (A,C) right, (B,C) wrong.
+# The 5 pairs both rank: h 4 (80.0%), e 3 (60.0%); the 1 only e ranks, (A,B) on light 2: 0.0%.
+# Among A and B: h and e 1 of 1 (light 0); e 0 of 1 on light 2's.
 # Invoked by ctest with -DPYTHON=... -DSCRIPT=... -DWORK=...
 include(${CMAKE_CURRENT_LIST_DIR}/script_errors.cmake)
 file(REMOVE_RECURSE "${WORK}")
@@ -33,12 +34,12 @@ function(expect_rows args)
 endfunction()
 
 expect_rows("${WORK}/abc"
-    "| set | lights | pairs | h orders as errors | e orders as errors |"
-    "| abc | 3 | 5 / 6 | 80.0% | 50.0% |"
-    "Pairs of every method differing")
+    "| set | lights | pairs | h orders as errors | e orders as errors | pairs only e ranks | e orders those |"
+    "| abc | 3 | 5 | 80.0% | 60.0% | 1 | 0.0% |"
+    "Pairs of every method whose phase means differ")
 expect_rows("--among;A;--among;B;${WORK}/abc"
-    "| abc | 3 | 1 / 2 | 100.0% | 50.0% |"
-    "Pairs of A, B differing")
+    "| abc | 3 | 1 | 100.0% | 100.0% | 1 | 0.0% |"
+    "Pairs of A, B whose phase means differ")
 
 expect_script_errors(concordance_table.py
                      "--among;A;--among;psm;${WORK}/abc|abc/lights.csv: no psm_h"
