@@ -251,7 +251,8 @@ void JacobianBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t
 }
 
 // After Finish has raised power[k] to the summand f_e^p: p f_e^(p−1), ∂f_e/∂J and the chain to
-// p4, times `weight`, into g; and the points EdgeEnergyGradientAnalytic skips.
+// p4, times `weight`, into g; and the points EdgeEnergyGradientAnalytic skips (its summand not
+// finite among them).
 void ChainBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t n, double exponent,
                 double weight, GradientBlock* b) {
     const double* x[3] = {&p.c[0][begin], &p.c[1][begin], &p.c[2][begin]};
@@ -271,7 +272,7 @@ void ChainBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t n,
         const double det = b->det[k], q = b->q[k];
         const double root = std::sqrt(q), absDet = std::abs(det);
         const double f = root / absDet;
-        b->counts[k] = det != 0.0 && q > 0.0 && std::isfinite(f);
+        b->counts[k] = det != 0.0 && q > 0.0 && std::isfinite(f) && std::isfinite(b->power[k]);
         const double cof[2][2] = {{J[1][1], -J[1][0]}, {-J[0][1], J[0][0]}};
         const double power = unitPower ? 1.0 : exponent * b->power[k] / f;
         const double g = power * 0.5 / (root * absDet), t = power * f / det;

@@ -112,11 +112,11 @@ glm::dvec3 EdgeEnergyGradientAnalytic(const LightMatrix& m, const WeightedPoints
         if (!std::isfinite(f)) continue;
         const double cof[2][2] = {{J[1][1], -J[1][0]}, {-J[0][1], J[0][0]}};
         // ∂(f_e^p)/∂J = p f_e^(p−1) ∂f_e/∂J (1 for p = 1: the norm's own derivative), f_e^(p−1)
-        // as f_e^p / f_e with f_e^p the summand's own BandPower, no std::pow.
-        const double power =
-            points.exponent == 1.0
-                ? 1.0
-                : points.exponent * BandPower(q / (s.det * s.det), points.exponent) / f;
+        // as f_e^p / f_e with f_e^p the summand's own BandPower, no std::pow. A point whose
+        // summand is not finite (det² underflows while f_e does not) adds nothing, as its energy.
+        const double summand = BandPower(q / (s.det * s.det), points.exponent);
+        if (!std::isfinite(summand)) continue;
+        const double power = points.exponent == 1.0 ? 1.0 : points.exponent * summand / f;
         const double g = power * 0.5 / (root * absDet), t = power * f / s.det;
         double dF[2][2];
         for (int i = 0; i < 2; ++i)

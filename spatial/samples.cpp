@@ -129,7 +129,8 @@ std::vector<bool> KeptSamples(const LightSamples& samples, std::size_t maxSample
     return keep;
 }
 
-// The kept samples of `samples` and its other members, the relevant points given.
+// The kept samples of `samples` and its other members, the relevant points given. Every member of
+// LightSamples is copied here by name: a new member must be added.
 LightSamples KeepSamples(const LightSamples& samples, const std::vector<bool>& keep,
                          const std::vector<glm::dvec3>& lsRelevant) {
     LightSamples out;

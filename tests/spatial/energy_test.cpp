@@ -224,6 +224,11 @@ TEST(EnergyFamily, SearchEnergyEqualsEnergyBelowTheBoundAndStopsAboveIt) {
 // The search's packed gradient is EnergyGradient's value bit for bit, over block edges (200
 // samples: three blocks of 64 and 8), with a sample behind the plane and a singular one skipped.
 TEST(EnergyFamily, SearchGradientIsEnergyGradientBitForBit) {
+    const EnergyOptions edge[] = {{EnergyKind::kEdge, 0.0},
+                                  {EnergyKind::kEdge, 1.0},
+                                  {EnergyKind::kEdge, 1.0, 0.75},
+                                  kEdgeEnergy,
+                                  {EnergyKind::kEdge, 2.0, 0.3}};
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
         std::mt19937_64 rng(seed);
         LightSamples s = RandomSamples(rng, 200);
@@ -231,17 +236,26 @@ TEST(EnergyFamily, SearchGradientIsEnergyGradientBitForBit) {
         s.lsX[70] = -s.lsX[70];       // behind the plane: skipped
         s.dXdx2[130] = s.dXdx1[130];  // det J = 0: skipped
         s.priorDXdx2[3] = s.priorDXdx1[3];
-        for (const EnergyOptions options :
-             {EnergyOptions{EnergyKind::kEdge, 0.0}, EnergyOptions{EnergyKind::kEdge, 1.0},
-              EnergyOptions{EnergyKind::kEdge, 1.0, 0.75}, kEdgeEnergy,
-              EnergyOptions{EnergyKind::kEdge, 2.0, 0.3}, EnergyOptions{EnergyKind::kReport, 1.0},
-              EnergyOptions{}}) {
-            const glm::dvec3 expected = EnergyGradient(m, s, options);
-            ASSERT_GT(glm::length(expected), 0.0) << Describe(m, s, seed);
-            EXPECT_EQ(SearchEnergy(s, options).Gradient(m), expected)
-                << Describe(m, s, seed) << ", exponent " << options.exponent << ", prior "
+        const auto check = [&](const LightSamples& samples, const EnergyOptions& options) {
+            const glm::dvec3 expected = EnergyGradient(m, samples, options);
+            ASSERT_GT(glm::length(expected), 0.0) << Describe(m, samples, seed);
+            ASSERT_TRUE(std::isfinite(glm::length(expected))) << Describe(m, samples, seed);
+            EXPECT_EQ(SearchEnergy(samples, options).Gradient(m), expected)
+                << Describe(m, samples, seed) << ", exponent " << options.exponent << ", prior "
                 << options.priorWeight;
-        }
+        };
+        for (const EnergyOptions& options : edge) check(s, options);
+        check(s, {EnergyKind::kReport, 1.0});
+        check(s, {});
+        // J of order 1e-85 at two points: det² underflows to 0 while f_e = √q/|det| stays
+        // finite, so the summand is +inf and the point adds nothing to e's gradient (it made the
+        // gradient NaN when f_e^(p−1) was std::pow'd and the summand not checked).
+        LightSamples tiny = s;
+        tiny.dXdx1[40] *= 1e-85;
+        tiny.dXdx2[40] *= 1e-85;
+        tiny.priorDXdx1[5] *= 1e-85;
+        tiny.priorDXdx2[5] *= 1e-85;
+        for (const EnergyOptions& options : edge) check(tiny, options);
     }
 }
 
