@@ -30,8 +30,8 @@ NEEDED = ("_h", "_e", "_misclassified_mean", "_misclassified_se")
 def number(text):
     try:
         return float(text)
-    except ValueError:
-        return math.nan  # an empty cell: no energy for this map (a warped or virtual one)
+    except (TypeError, ValueError):  # an empty cell (a warped or virtual map has no energy) or
+        return math.nan  # a short row
 
 
 def read_lights(d):
@@ -112,4 +112,7 @@ def main(among, dirs):
 if __name__ == "__main__":
     usage = "usage: concordance_table.py [--among METHOD ...] DIR ..."
     values, dirs = parse_args(sys.argv[1:], {"--among": "method name"}, usage)
+    twice = sorted({m for m in values["--among"] if values["--among"].count(m) > 1})
+    if twice:
+        fail(f"--among {twice[0]}: given twice")
     main(values["--among"], dirs)

@@ -7,9 +7,10 @@ Usage: join_sweeps.py OUT SOURCE [SOURCE ...]
        SOURCE is DIR (every column of DIR/lights.csv), DIR:METHOD (METHOD's columns, those named
        METHOD_...) or DIR:METHOD=NAME (the same, renamed NAME_...).
 
-The first SOURCE's lights, in its order, are the output's; every other DIR must hold the same
-lights (by the `light` column) and give the same per-light columns (kind, position, receiver
-pixels) where both have them. OUT/lights.csv is written whole or not at all (OUT is created if
+The first SOURCE's lights, in its order, are the output's, with its per-light columns (kind,
+position, receiver pixels); every other DIR must hold the same lights (by the `light` column) and
+agree on those columns where it has them (a per-light column only a later DIR has is not
+copied). OUT/lights.csv is written whole or not at all (OUT is created if
 missing). A column given twice (the same METHOD from two runs without a new NAME) is an error.
 Bad input: one line, exit status 2.
 """
@@ -108,14 +109,20 @@ def main(out, sources):
             header.append(dst)
             for r in rows:
                 by_light[r["light"]][dst] = r[src]
-    os.makedirs(out, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=out, prefix=".lights.csv.")
+    try:
+        os.makedirs(out, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=out, prefix=".lights.csv.")
+    except OSError as e:
+        fail(f"{out}: cannot write lights.csv ({e.strerror})")
     try:
         with os.fdopen(fd, "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=header)
             w.writeheader()
             for light in order:
                 w.writerow(by_light[light])
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # as open() would create it (mkstemp makes it 0600)
         os.replace(tmp, os.path.join(out, "lights.csv"))
     except OSError as e:
         os.unlink(tmp)

@@ -76,8 +76,16 @@ def read_set(d, names, excluded):
     methods = [k[: -len(MEAN)] for k in rows[0] if k.endswith(MEAN)]
     mean = {m: [float(r[m + MEAN]) for r in rows] for m in methods}
     # The gap's noise: the phase means' standard errors, where the sweep wrote them.
-    se = {m: [float(r[m + SE]) for r in rows] for m in names[1:] if m + SE in rows[0]}
+    se = {m: [standard_error(r[m + SE]) for r in rows] for m in names[1:] if m + SE in rows[0]}
+    se = {m: v for m, v in se.items() if None not in v}  # an empty cell: no z for the set
     return name, methods, mean, se
+
+
+def standard_error(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return None
 
 
 def gap_z(mean, se, frm, bound):

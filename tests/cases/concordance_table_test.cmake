@@ -46,4 +46,10 @@ expect_script_errors(concordance_table.py
                      "--among;A;${WORK}/abc|abc/lights.csv: fewer than two methods"
                      "${WORK}/none|none: cannot read lights.csv"
                      "--phases;${WORK}/abc|--phases: unknown option"
-                     "--among|--among: needs a method name")
+                     "--among|--among: needs a method name"
+                     "--among;A;--among;A;${WORK}/abc|--among A: given twice")
+# A short row (a cell missing) counts as no value, not a crash: light 3 has only A's cells.
+file(MAKE_DIRECTORY "${WORK}/short")
+file(READ "${WORK}/abc/lights.csv" abc)
+file(WRITE "${WORK}/short/lights.csv" "${abc}3,1,1,10,0\n")
+expect_rows("${WORK}/short" "| short | 4 | 5 | 80.0% | 60.0% | 1 | 0.0% |")

@@ -57,6 +57,9 @@ expect_script_errors(join_sweeps.py
                      "${WORK}/bad;${WORK}/none|none: cannot read lights.csv"
                      "${WORK}/bad|wanted OUT and at least one sweep directory"
                      "--phases;${WORK}/bad;${WORK}/a|--phases: unknown option")
+# OUT an existing file: one line, not a traceback.
+file(WRITE "${WORK}/afile" "x")
+expect_script_errors(join_sweeps.py "${WORK}/afile;${WORK}/a|afile: cannot write lights.csv")
 if(EXISTS "${WORK}/bad/lights.csv")
     message(FATAL_ERROR "join_sweeps.py wrote ${WORK}/bad/lights.csv on an error")
 endif()

@@ -73,9 +73,19 @@ expect_rows("${WORK}/pair;${WORK}/noisy"
     "| noisy | 1 | 20 | 30 | 25 | −20.0% | +20.0% | 200% (200 to 200) |"
     "Average over the 2 sets: optimal closes 108%"
     "Gap to optimal-oracle within its phase noise (|gap| < 1.96 standard errors): noisy (z 0.4). Average over the other 1 set: 17% (0 to 50%).")
-execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/clear" OUTPUT_VARIABLE out)
-if(out MATCHES "within its phase noise")
-    message(FATAL_ERROR "oracle_table.py: clear's gap is beyond its noise, got\n${out}")
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/clear"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "\\| clear \\| 1 \\|" OR out MATCHES "within its phase noise")
+    message(FATAL_ERROR "oracle_table.py: clear's gap is beyond its noise, exit ${code}, got\n"
+                        "${out}${err}")
+endif()
+# An empty standard-error cell (a NaN the sweep wrote as nothing) leaves the set without a z.
+file(MAKE_DIRECTORY "${WORK}/blank")
+file(WRITE "${WORK}/blank/lights.csv" ${se_header} "0,20,30,,25,10\n")
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/blank"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "\\| blank \\| 1 \\|" OR out MATCHES "within its phase noise")
+    message(FATAL_ERROR "oracle_table.py blank: exit ${code}, got\n${out}${err}")
 endif()
 
 expect_script_errors(oracle_table.py
