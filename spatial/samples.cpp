@@ -129,27 +129,32 @@ std::vector<bool> KeptSamples(const LightSamples& samples, std::size_t maxSample
     return keep;
 }
 
-// The kept samples of `samples` and its other members, the relevant points given. Every member of
-// LightSamples is copied here by name: a new member must be added.
+// The entries of `values` whose sample is kept (KeepWhere on a copy).
+template <typename T>
+std::vector<T> Kept(const std::vector<T>& values, const std::vector<bool>& keep) {
+    std::vector<T> out = values;
+    KeepWhere(out, keep);
+    return out;
+}
+
+// The kept samples of `samples` and its other members, the relevant points given, in
+// LightSamples' member order (a member added there and not here is what -Wextra's
+// missing-field-initializers warning reports).
 LightSamples KeepSamples(const LightSamples& samples, const std::vector<bool>& keep,
                          const std::vector<glm::dvec3>& lsRelevant) {
-    LightSamples out;
-    out.lsX = samples.lsX;
-    out.dXdx1 = samples.dXdx1;
-    out.dXdx2 = samples.dXdx2;
-    out.pixel = samples.pixel;
-    out.wsX = samples.wsX;
-    out.edgeNormal = samples.edgeNormal;
-    for (auto* values : {&out.lsX, &out.dXdx1, &out.dXdx2, &out.wsX}) KeepWhere(*values, keep);
-    KeepWhere(out.pixel, keep);
-    KeepWhere(out.edgeNormal, keep);
-    out.lsRelevant = lsRelevant;
-    out.lsRelevantHull = samples.lsRelevantHull;
-    out.boundaryPixels = samples.boundaryPixels;
-    out.lsPrior = samples.lsPrior;
-    out.priorDXdx1 = samples.priorDXdx1;
-    out.priorDXdx2 = samples.priorDXdx2;
-    out.wsPrior = samples.wsPrior;
+    LightSamples out = {Kept(samples.lsX, keep),
+                        Kept(samples.dXdx1, keep),
+                        Kept(samples.dXdx2, keep),
+                        Kept(samples.pixel, keep),
+                        Kept(samples.wsX, keep),
+                        Kept(samples.edgeNormal, keep),
+                        lsRelevant,
+                        samples.lsRelevantHull,
+                        samples.boundaryPixels,
+                        samples.lsPrior,
+                        samples.priorDXdx1,
+                        samples.priorDXdx2,
+                        samples.wsPrior};
     return out;
 }
 

@@ -15,7 +15,6 @@ without boundary samples, where e's prior decides) and e's % on those. The pairs
 methods; `optimal` minimizes e and `optimal-h` minimizes h, so pairs among baselines alone (the
 `--among` of the maps neither energy chose) are the fair test. Bad input: one line, exit status 2.
 """
-import csv
 import math
 import os
 import sys
@@ -23,6 +22,7 @@ import sys
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fair_table import fail, parse_args  # noqa: E402
+from fair_table import read_lights as read_csv  # noqa: E402
 
 NEEDED = ("_h", "_e", "_misclassified_mean", "_misclassified_se")
 
@@ -35,11 +35,7 @@ def number(text):
 
 
 def read_lights(d):
-    try:
-        with open(os.path.join(d, "lights.csv"), newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        fail(f"{d}: cannot read lights.csv ({e.strerror})")
+    rows = read_csv(d)
     if not rows:
         fail(f"{d}/lights.csv: no lights")
     return rows

@@ -42,13 +42,18 @@ def fail(message):
     sys.exit(2)
 
 
-def read_rows(d, reference, needed=("_misclassified_mean",)):
-    """The rows of DIR/lights.csv; fails unless the reference has every `needed` column."""
+def read_lights(d):
+    """The rows of DIR/lights.csv (possibly none); fails when it cannot be read."""
     try:
         with open(os.path.join(d, "lights.csv"), newline="") as f:
-            rows = list(csv.DictReader(f))
+            return list(csv.DictReader(f))
     except OSError as e:
         fail(f"{d}: cannot read lights.csv ({e.strerror})")
+
+
+def read_rows(d, reference, needed=("_misclassified_mean",)):
+    """The rows of DIR/lights.csv; fails unless the reference has every `needed` column."""
+    rows = read_lights(d)
     if not rows or any(reference + n not in rows[0] for n in needed):
         fail(f"{d}/lights.csv: no lights with {reference}'s phase-averaged counts "
              f"(run the sweep with --method {reference} --phases K)")

@@ -22,6 +22,7 @@ import tempfile
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fair_table import fail  # noqa: E402
+from fair_table import read_lights as read_csv  # noqa: E402
 
 USAGE = "usage: join_sweeps.py OUT DIR[:METHOD[=NAME]] ..."
 
@@ -38,11 +39,7 @@ def parse_source(arg):
 
 
 def read_lights(d):
-    try:
-        with open(os.path.join(d, "lights.csv"), newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        fail(f"{d}: cannot read lights.csv ({e.strerror})")
+    rows = read_csv(d)
     if not rows or "light" not in rows[0]:
         fail(f"{d}/lights.csv: no lights (wanted a `light` column)")
     return rows

@@ -21,18 +21,6 @@ file(WRITE "${WORK}/abc/lights.csv" "light${columns}\n"
      "1,5,5,10,3,1,1,15,3,inf,,40,0\n"
      "2,2,2,10,0,2,1,50,0,1,9,30,0\n")
 
-function(expect_rows args)
-    execute_process(COMMAND "${PYTHON}" "${SCRIPT}" ${args}
-                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    foreach(wanted IN LISTS ARGN)
-        string(FIND "${out}" "${wanted}" at)
-        if(NOT code EQUAL 0 OR at EQUAL -1)
-            message(FATAL_ERROR "concordance_table.py ${args}: exit ${code}, wanted\n${wanted}\n"
-                                "got\n${out}${err}")
-        endif()
-    endforeach()
-endfunction()
-
 expect_rows("${WORK}/abc"
     "| set | lights | pairs | h orders as errors | e orders as errors | pairs only e ranks | e orders those |"
     "| abc | 3 | 5 | 80.0% | 60.0% | 1 | 0.0% |"

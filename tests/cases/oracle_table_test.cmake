@@ -22,18 +22,6 @@ file(WRITE "${WORK}/same/lights.csv" ${header} "0,100,100,0\n")
 file(WRITE "${WORK}/worse/lights.csv" ${header} "0,40,30,10\n")
 file(WRITE "${WORK}/flat/lights.csv" ${header} "0,10,10,10\n")
 
-function(expect_rows args)
-    execute_process(COMMAND "${PYTHON}" "${SCRIPT}" ${args}
-                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    foreach(wanted IN LISTS ARGN)
-        string(FIND "${out}" "${wanted}" at)
-        if(NOT code EQUAL 0 OR at EQUAL -1)
-            message(FATAL_ERROR "oracle_table.py ${args}: exit ${code}, wanted\n${wanted}\n"
-                                "got\n${out}${err}")
-        endif()
-    endforeach()
-endfunction()
-
 expect_rows("${WORK}/pair;${WORK}/same"
     "| set | lights | optimal | optimal-h | optimal-oracle | optimal above optimal-oracle | optimal-h above optimal-oracle | closed |"
     "| pair | 2 | 40 | 45 | 15 | +166.7% | +200.0% | 17% (0 to 50) |"

@@ -15,3 +15,18 @@ function(expect_script_errors name)
         endif()
     endforeach()
 endfunction()
+
+# expect_rows(ARGS WANTED...): runs ${PYTHON} ${SCRIPT} with ARGS ("ARG;ARG...") and fails unless
+# it exits with status 0 and its stdout holds every WANTED string. Used by the scripts' tests.
+function(expect_rows args)
+    get_filename_component(name "${SCRIPT}" NAME)
+    execute_process(COMMAND "${PYTHON}" "${SCRIPT}" ${args}
+                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    foreach(wanted IN LISTS ARGN)
+        string(FIND "${out}" "${wanted}" at)
+        if(NOT code EQUAL 0 OR at EQUAL -1)
+            message(FATAL_ERROR "${name} ${args}: exit ${code}, wanted\n${wanted}\n"
+                                "got\n${out}${err}")
+        endif()
+    endforeach()
+endfunction()

@@ -115,10 +115,8 @@ TEST(LightSamples, EdgeNormalsPointFromLitToShadowed) {
     EXPECT_FALSE(bare.lsPrior.empty());
 }
 
-TEST(ThinSamples, KeepsTheLeastPrioritiesInOrderAndEverythingElse) {
-    // Ten samples on pixels 100..109, distinguishable by their x. Their SplitMix64 priorities by
-    // hand, in units of 10¹⁸: 2.533, 15.06, 1.243, 1.867, 5.150, 13.52, 2.476, 2.523, 14.78,
-    // 12.91. A budget of 4 keeps the four least (102, 103, 106, 107) in their order; of 5 adds 100.
+// Ten samples on pixels 100..109, distinguishable by their x (sample i has i in every array).
+LightSamples TenSamples() {
     LightSamples s;
     for (int i = 0; i < 10; ++i) {
         s.lsX.push_back({double(i), 0.0, 1.0});
@@ -128,6 +126,14 @@ TEST(ThinSamples, KeepsTheLeastPrioritiesInOrderAndEverythingElse) {
         s.wsX.push_back({double(i), 1.0, 2.0});
         s.edgeNormal.push_back({double(i), 1.0});
     }
+    return s;
+}
+
+TEST(ThinSamples, KeepsTheLeastPrioritiesInOrderAndEverythingElse) {
+    // TenSamples' SplitMix64 priorities by hand, in units of 10¹⁸: 2.533, 15.06, 1.243, 1.867,
+    // 5.150, 13.52, 2.476, 2.523, 14.78, 12.91. A budget of 4 keeps the four least (102, 103,
+    // 106, 107) in their order; of 5 adds 100.
+    LightSamples s = TenSamples();
     s.lsRelevant = {{1, 2, 3}, {4, 5, 6}};
     s.lsPrior = {{7, 8, 9}};
     s.boundaryPixels = 12;
@@ -164,15 +170,7 @@ TEST(ThinSamples, KeepsTheLeastPrioritiesInOrderAndEverythingElse) {
 }
 
 TEST(ThinSamples, ForSearchKeepsTheSameSamplesAndOfTheRelevantPointsTheHull) {
-    LightSamples s;
-    for (int i = 0; i < 10; ++i) {
-        s.lsX.push_back({double(i), 0.0, 1.0});
-        s.dXdx1.push_back({1.0, double(i), 0.0});
-        s.dXdx2.push_back({0.0, 1.0, double(i)});
-        s.pixel.push_back(static_cast<std::uint32_t>(100 + i));
-        s.wsX.push_back({double(i), 1.0, 2.0});
-        s.edgeNormal.push_back({double(i), 1.0});
-    }
+    LightSamples s = TenSamples();
     s.lsRelevant = {{1, 2, 3}, {4, 5, 6}, {2, 3, 4}};
     s.lsRelevantHull = {{1, 2, 3}, {4, 5, 6}};
     s.lsPrior = {{7, 8, 9}};
