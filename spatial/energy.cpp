@@ -208,6 +208,7 @@ void Finish(const EnergyOptions& options, std::size_t n, double* f) {
 struct GradientBlock {
     double invW[kSummandBlock], u[2][kSummandBlock], v[2][kSummandBlock];
     double J[2][2][kSummandBlock], det[kSummandBlock], q[kSummandBlock], power[kSummandBlock];
+    double a[kSummandBlock], c[kSummandBlock];  // nᵀ times J's cofactor columns (q = a² + c²)
     double g[3][kSummandBlock];
     bool counts[kSummandBlock];
 };
@@ -243,6 +244,8 @@ void JacobianBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t
         const double qNone =
             0.5 * (J[0][0] * J[0][0] + J[0][1] * J[0][1] + J[1][0] * J[1][0] + J[1][1] * J[1][1]);
         const double q = has[k] != 0.0 ? a * a + c * c : qNone;
+        b->a[k] = a;
+        b->c[k] = c;
         b->invW[k] = invW;
         b->det[k] = det;
         b->q[k] = q;
@@ -264,7 +267,7 @@ void ChainBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t n,
         double J[2][2];
         for (int i = 0; i < 2; ++i)
             for (int j = 0; j < 2; ++j) J[i][j] = b->J[i][j][k];
-        const double a = n1[k] * J[1][1] - n2[k] * J[1][0], c = n2[k] * J[0][0] - n1[k] * J[0][1];
+        const double a = b->a[k], c = b->c[k];
         const bool normal = has[k] != 0.0;
         const double dQ[2][2] = {
             {normal ? 2.0 * c * n2[k] : J[0][0], normal ? -2.0 * c * n1[k] : J[0][1]},
