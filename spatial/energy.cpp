@@ -206,7 +206,7 @@ void Finish(const EnergyOptions& options, std::size_t n, double* f) {
 // branches: each point's weighted, negated contribution g[c][k] to ∂e/∂p4 and whether that
 // function counts it (in front, det J ≠ 0, q > 0, f_e finite).
 struct GradientBlock {
-    double invW[kSummandBlock], u[2][kSummandBlock], v[2][kSummandBlock];
+    double w[kSummandBlock], invW[kSummandBlock], u[2][kSummandBlock], v[2][kSummandBlock];
     double J[2][2][kSummandBlock], det[kSummandBlock], q[kSummandBlock], power[kSummandBlock];
     double a[kSummandBlock], c[kSummandBlock];  // nᵀ times J's cofactor columns (q = a² + c²)
     double g[3][kSummandBlock];
@@ -226,7 +226,7 @@ void JacobianBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t
         const glm::dvec3 X(x[0][k], x[1][k], x[2][k]);
         const glm::dvec3 D[2] = {{d[0][0][k], d[0][1][k], d[0][2][k]},
                                  {d[1][0][k], d[1][1][k], d[1][2][k]}};
-        const double invW = 1.0 / glm::dot(m.p4, X);
+        const double w = glm::dot(m.p4, X), invW = 1.0 / w;
         const double wD[2] = {glm::dot(m.p4, D[0]), glm::dot(m.p4, D[1])};
         double J[2][2], u[2];
         for (int i = 0; i < 2; ++i) {
@@ -246,6 +246,7 @@ void JacobianBlock(const SearchEnergy::Points& p, std::size_t begin, std::size_t
         const double q = has[k] != 0.0 ? a * a + c * c : qNone;
         b->a[k] = a;
         b->c[k] = c;
+        b->w[k] = w;
         b->invW[k] = invW;
         b->det[k] = det;
         b->q[k] = q;
@@ -303,9 +304,7 @@ glm::dvec3 PackedEdgeGradient(const SearchEnergy::Points& p, const LightMatrix& 
         Finish(options, n, b.power);
         ChainBlock(p, begin, n, options.exponent, weight, &b);
         for (std::size_t k = 0; k < n; ++k) {
-            if (!(glm::dot(m.p4, glm::dvec3(p.c[0][begin + k], p.c[1][begin + k],
-                                            p.c[2][begin + k])) > p.frontMargin[begin + k]) ||
-                !b.counts[k])
+            if (!(b.w[k] > p.frontMargin[begin + k]) || !b.counts[k])
                 continue;  // !InFront, or skipped as EdgeEnergyGradientAnalytic skips it
             grad -= glm::dvec3(b.g[0][k], b.g[1][k], b.g[2][k]);
         }
