@@ -103,10 +103,16 @@ void NoteCpuOnlyMethods(const std::vector<std::string>& methods, BackendKind bac
                       << "'s map is ray-cast on the CPU (a logarithmic warp is no vertex warp)\n";
 }
 
-spatial::Scene LoadSceneWithOverrides(const CaseFile& file, int cascades, int phases) {
+spatial::Scene LoadSceneWithOverrides(const CaseFile& file, int cascades, int phases,
+                                      int maxPhases) {
     spatial::Scene scene = LoadSpatialScene(file);
     if (cascades > 0) scene.partitions.count = cascades;
     if (phases > 0) scene.phases = phases;
+    if (maxPhases > 0) scene.maxPhases = maxPhases;
+    if (scene.maxPhases > 0 && scene.maxPhases < scene.phases)
+        throw InputError("--max-phases: must be at least the phases (" +
+                         std::to_string(scene.phases) + "), got " +
+                         std::to_string(scene.maxPhases));
     return scene;
 }
 

@@ -54,7 +54,9 @@ auto WithCaseName(const std::filesystem::path& casePath, Body body) {
     }
 }
 
-// The case's scene with --cascades and --phases applied (0: the case's own count).
-spatial::Scene LoadSceneWithOverrides(const CaseFile& file, int cascades, int phases);
+// The case's scene with --cascades, --phases and --max-phases applied (0: the case's own count).
+// Throws InputError when the most phases end up below the phases.
+spatial::Scene LoadSceneWithOverrides(const CaseFile& file, int cascades, int phases,
+                                      int maxPhases);
 
 }  // namespace lexel::cases

@@ -110,7 +110,8 @@ int RunSpatial(const RunFlags& flags, const CaseFile& file) {
             "--metric: 3D cases are measured by the report's h (eq. 6) and misclassified pixels; "
             "--metric applies to flatland cases");
     const fs::path casePath = flags.cases.front();
-    const spatial::Scene scene = LoadSceneWithOverrides(file, flags.cascades, flags.phases);
+    const spatial::Scene scene =
+        LoadSceneWithOverrides(file, flags.cascades, flags.phases, flags.maxPhases);
     SpatialRunOptions options;
     options.methods = SpatialMethodsOfCase(flags.methods, scene, false);
     WithCaseName(casePath, [&] { CheckCaseMethodLights(scene, options.methods, false); });

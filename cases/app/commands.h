@@ -29,6 +29,7 @@ struct RunFlags {
     bool mapTruth = true;          // 3D: also the report's 4000² truth map
     int cascades = 0;              // 3D: partitions of the partitioned methods; 0: the case's
     int phases = 0;                // 3D: sub-texel phases errors are averaged over; 0: the case's
+    int maxPhases = 0;             // 3D: the most a light's mean is raised to; 0: the case's
     std::string backend = "cpu";   // 3D: cpu | gl
 };
 int RunCommand(const RunFlags& flags);
@@ -42,6 +43,7 @@ struct SweepFlags {
     std::string outDir;
     int cascades = 0;             // partitions of the partitioned methods; 0: the case's
     int phases = 0;               // sub-texel phases errors are averaged over; 0: the case's
+    int maxPhases = 0;            // the most a light's mean is raised to; 0: the case's
     int shimmerPoses = 0;         // camera_path poses each light's shimmer is over; 0: none
     std::string backend = "cpu";  // cpu | gl
     std::string shard = "0/1";    // K/N: the lights i with i mod N = K

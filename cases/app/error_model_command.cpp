@@ -56,7 +56,7 @@ int ErrorModelCommand(const ErrorModelFlags& flags) {
     CheckPhases(flags.phases);
     const std::vector<std::string> methods = ErrorModelMethods(flags.methods);
     const fs::path casePath = flags.casePath;
-    const spatial::Scene scene = LoadSceneWithOverrides(ReadCaseFile(casePath), 0, 0);
+    const spatial::Scene scene = LoadSceneWithOverrides(ReadCaseFile(casePath), 0, 0, 0);
     const BackendKind backend = BackendOf(flags.backend);
     std::optional<spatial::Light::Type> type;
     if (!flags.lightType.empty())

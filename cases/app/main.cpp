@@ -1,8 +1,10 @@
 // lexel — the command line. Subcommands:
 //   lexel run CASE.json... [--method NAME...] [--metric l1|l2|linf] [--format table|json|csv]
-//             [--out DIR] [--no-map-truth] [--cascades K] [--phases K]   flatland and 3D
+//             [--out DIR] [--no-map-truth] [--cascades K] [--phases K] [--max-phases N]
+//                                                                       flatland and 3D
 //   lexel sweep CASE.json [--lights N] [--light-type point|directional] [--method NAME...]
-//             [--cascades K] [--phases K] [--shimmer-poses P] [--format table|markdown|csv|json]
+//             [--cascades K] [--phases K] [--max-phases N] [--shimmer-poses P]
+//             [--format table|markdown|csv|json]
 //             [--out DIR] [--shard K/N] [--resume]
 //                                  the 3D report's Table 1, the fair and equal-texel tables
 //   lexel merge DIR... --out DIR [--format ...]   sweep shards joined into one whole sweep
@@ -77,12 +79,17 @@ CLI::Option* AddBackend(CLI::App* sub, std::string& backend, const std::string& 
     return sub->add_option("--backend", backend, what)->check(CLI::IsMember({"cpu", "gl"}));
 }
 
-// --phases K: each 3D method's errors averaged over K sub-texel phases of its map(s).
-CLI::Option* AddPhases(CLI::App* sub, int& phases) {
-    return sub
-        ->add_option("--phases", phases,
-                     "3D: average each method's misclassified pixels over K sub-texel shifts of "
-                     "its map(s) (default: the case's phases, or 1)")
+// --phases K: each 3D method's errors averaged over K sub-texel phases of its map(s);
+// --max-phases N: raised, doubling, up to N phases where the mean's residual is above 2%.
+void AddPhases(CLI::App* sub, int& phases, int& maxPhases) {
+    sub->add_option("--phases", phases,
+                    "3D: average each method's misclassified pixels over K sub-texel shifts of "
+                    "its map(s) (default: the case's phases, or 1)")
+        ->check(CLI::Range(1, lexel::spatial::kMaxPhases));
+    sub->add_option("--max-phases", maxPhases,
+                    "3D: where a method's mean over K phases has a standard error above 2% of it "
+                    "(and above 1 pixel), average it over 2K, 4K, ... up to N phases (default: "
+                    "the case's max_phases, or K)")
         ->check(CLI::Range(1, lexel::spatial::kMaxPhases));
 }
 
@@ -106,7 +113,7 @@ Command RegisterRun(CLI::App& app) {
     run->add_option("--cascades", flags->cascades,
                     "3D: partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
         ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
-    AddPhases(run, flags->phases);
+    AddPhases(run, flags->phases, flags->maxPhases);
     AddBackend(run, flags->backend, "3D cases: the renderer (gl: OpenGL 4.5 via EGL)");
     run->add_flag("--no-map-truth", *noMapTruth,
                   "3D cases: skip the report's focused 4000² truth map (rays are the truth)");
@@ -145,7 +152,7 @@ Command RegisterSweep(CLI::App& app) {
         ->add_option("--cascades", flags->cascades,
                      "Partitions of pssm, sdsm, ... (default: the case's cascades.count, or 4)")
         ->check(CLI::Range(1, lexel::spatial::kMaxCascades));
-    AddPhases(sweep, flags->phases);
+    AddPhases(sweep, flags->phases, flags->maxPhases);
     sweep
         ->add_option("--shimmer-poses", flags->shimmerPoses,
                      "Also measure each light's shimmer along the first P poses of the case's "

@@ -238,7 +238,8 @@ int SweepCommand(const SweepFlags& flags) {
         throw InputError("--resume: continues a sweep into its --out directory; give --out");
     const fs::path casePath = flags.casePath;
     const CaseFile caseFile = ReadCaseFile(casePath);  // read once: the scene and the identity
-    const spatial::Scene scene = LoadSceneWithOverrides(caseFile, flags.cascades, flags.phases);
+    const spatial::Scene scene =
+        LoadSceneWithOverrides(caseFile, flags.cascades, flags.phases, flags.maxPhases);
     const std::vector<std::string> methods = SpatialMethodsOfCase(flags.methods, scene, true);
     if (static_cast<std::size_t>(flags.shimmerPoses) > scene.cameraPath.size())
         throw InputError("--shimmer-poses: " + std::to_string(flags.shimmerPoses) +
@@ -262,6 +263,7 @@ int SweepCommand(const SweepFlags& flags) {
                                  .backend = flags.backend,
                                  .cascades = scene.partitions.count,
                                  .phases = scene.phases,
+                                 .maxPhases = std::max(scene.phases, scene.maxPhases),
                                  .shimmerPoses = flags.shimmerPoses,
                                  .lights = lights.size(),
                                  .lightsHash = LightsHash(lights)};

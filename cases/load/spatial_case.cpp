@@ -375,7 +375,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     const JsonField root(document, "");
     root.ExpectObject({"camera"}, {"name", "description", "lights", "shadow_map", "readback",
                                    "geometry", "generator", "light_sweep", "camera_path",
-                                   "cascades", "methods", "phases", "optimizer"});
+                                   "cascades", "methods", "phases", "max_phases", "optimizer"});
     spatial::Scene scene;
     scene.name = CaseNameOf(root, fallbackName);
     if (root.Has("description")) root["description"].String();
@@ -415,6 +415,12 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
     }
     if (root.Has("phases"))
         scene.phases = static_cast<int>(root["phases"].Integer(1, spatial::kMaxPhases));
+    if (root.Has("max_phases")) {
+        scene.maxPhases = static_cast<int>(root["max_phases"].Integer(1, spatial::kMaxPhases));
+        if (scene.maxPhases < scene.phases)
+            root["max_phases"].Fail("must be at least phases (" + std::to_string(scene.phases) +
+                                    "), got " + std::to_string(scene.maxPhases));
+    }
     if (root.Has("lights")) {
         const JsonField lights = root["lights"];
         const auto items = lights.Array();

@@ -53,7 +53,7 @@ SweepShard ParseShardText(const JsonField& field) {
 
 SweepIdentity ParseIdentity(const JsonField& f) {
     f.ExpectObject({"case", "case_fnv1a64", "methods", "backend", "cascades", "phases",
-                    "shimmer_poses", "lights", "lights_fnv1a64"});
+                    "max_phases", "shimmer_poses", "lights", "lights_fnv1a64"});
     SweepIdentity id;
     id.caseName = f["case"].String();
     id.caseHash = f["case_fnv1a64"].String();
@@ -61,6 +61,7 @@ SweepIdentity ParseIdentity(const JsonField& f) {
     id.backend = f["backend"].String();
     id.cascades = static_cast<int>(f["cascades"].Integer(0, 1 << 20));
     id.phases = static_cast<int>(f["phases"].Integer(1, spatial::kMaxPhases));
+    id.maxPhases = static_cast<int>(f["max_phases"].Integer(id.phases, spatial::kMaxPhases));
     id.shimmerPoses = static_cast<int>(f["shimmer_poses"].Integer(0, kMaxShimmerPoses));
     if (id.shimmerPoses == 1)
         f["shimmer_poses"].Fail("must be 0 (none) or 2 ... " + std::to_string(kMaxShimmerPoses) +
@@ -103,6 +104,7 @@ SweepCell ParseCell(const JsonField& f, const nlohmann::json& value) {
     c.e = RecordNumber(x[16], value[16]);
     c.shimmer = RecordNumber(x[17], value[17]);
     c.storageFactorP99 = RecordNumber(x[18], value[18]);
+    c.phases = static_cast<int>(x[19].Integer(1, spatial::kMaxPhases));
     return c;
 }
 

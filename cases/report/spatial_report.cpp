@@ -45,6 +45,7 @@ struct MethodRow {
 };
 
 CellValue ToCell(std::int64_t n) { return n; }
+CellValue ToCell(int n) { return std::int64_t{n}; }
 CellValue ToCell(double x) { return x; }
 CellValue ToCell(const std::string& s) { return s; }
 
@@ -95,8 +96,7 @@ ColumnTable<MethodRow> MethodColumns(bool phased) {
         {"pages_dropped", "pages", Pages(&spatial::PageOutcome::dropped), kCsvColumn}};
     if (phased) {
         const ColumnTable<MethodRow> phaseColumns = {
-            {"phases", "phases",
-             [](const MethodRow& r) { return CellValue(std::int64_t{r.outcome->phases}); }},
+            {"phases", "phases", Metric(&MethodMetrics::phases)},
             {"misclassified_mean", "pixels", Metric(&MethodMetrics::misclassifiedMean)},
             {"misclassified_standard_error", "pixels", Metric(&MethodMetrics::misclassifiedError)},
             {"false_shadow_mean", "pixels", Metric(&MethodMetrics::falseShadowMean)}};
@@ -128,10 +128,15 @@ TextTable SpatialMethodTable(const spatial::LightOutcome& o) {
         TextColumnOf(columns, "method", "method"),
         TextColumnOf(columns, "misclassified", "misclassified")};
     if (phased)
-        text.push_back({"mean over\n" + std::to_string(o.phases) + " phases\n(95% CI)",
-                        [](const MethodRow& r) {
-                            return PhaseMeanText(r.method->metrics.misclassifiedMean,
-                                                 r.method->metrics.misclassifiedError);
+        text.push_back({"mean over\n" + std::to_string(o.phases) +
+                            (o.maxPhases > o.phases ? "+" : "") + " phases\n(95% CI)",
+                        [&o](const MethodRow& r) {
+                            const spatial::MethodMetrics& metrics = r.method->metrics;
+                            std::string mean = PhaseMeanText(metrics.misclassifiedMean,
+                                                             metrics.misclassifiedError);
+                            if (metrics.phases != o.phases)
+                                mean += " at " + std::to_string(metrics.phases);
+                            return mean;
                         }});
     const std::vector<TextColumn<MethodRow>> rest = {
         TextColumnOf(columns, "false_shadow", "false\nshadow"),

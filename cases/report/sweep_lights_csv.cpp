@@ -35,8 +35,8 @@ std::function<CellValue(const LightRow&)> CellField(std::size_t m, T SweepCell::
 
 // The columns of lights.csv: the light, then per method its misclassified pixels (phase 0's), h,
 // e, time and storage factors (worst and 99th-percentile pixel); over several phases the mean and
-// standard error; with shimmer poses the shimmer; the multi-start methods' winning start; the
-// virtual shadow maps' pages.
+// standard error, and with adaptive phases (--max-phases) how many; with shimmer poses the shimmer;
+// the multi-start methods' winning start; the virtual shadow maps' pages.
 ColumnTable<LightRow> LightColumns(const SweepResult& r) {
     const auto position = [](int axis) {
         return [axis](const LightRow& row) {
@@ -83,6 +83,7 @@ ColumnTable<LightRow> LightColumns(const SweepResult& r) {
             add("_misclassified_mean", "pixels", CellField(m, &SweepCell::misclassifiedMean));
             add("_misclassified_se", "pixels", CellField(m, &SweepCell::misclassifiedError));
         }
+        if (r.maxPhases > r.phases) add("_phases", "phases", CellField(m, &SweepCell::phases));
         if (r.shimmerPoses > 1)
             add("_shimmer", "% of stable pixels per step", CellField(m, &SweepCell::shimmer));
         if (!r.cells.empty() && !r.cells[0][m].winner.empty())

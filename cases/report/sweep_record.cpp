@@ -21,24 +21,34 @@ json Number(double v) {
 json Vec3(const glm::dvec3& v) { return json::array({Number(v.x), Number(v.y), Number(v.z)}); }
 
 json IdentityJson(const SweepIdentity& id) {
-    return {{"case", id.caseName},
-            {"case_fnv1a64", id.caseHash},
-            {"methods", id.methods},
-            {"backend", id.backend},
-            {"cascades", id.cascades},
-            {"phases", id.phases},
-            {"shimmer_poses", id.shimmerPoses},
-            {"lights", id.lights},
-            {"lights_fnv1a64", id.lightsHash}};
+    return {{"case", id.caseName},        {"case_fnv1a64", id.caseHash},
+            {"methods", id.methods},      {"backend", id.backend},
+            {"cascades", id.cascades},    {"phases", id.phases},
+            {"max_phases", id.maxPhases}, {"shimmer_poses", id.shimmerPoses},
+            {"lights", id.lights},        {"lights_fnv1a64", id.lightsHash}};
 }
 
 json CellJson(const SweepCell& c) {
-    return json::array({c.misclassified, Number(c.h), Number(c.hGrazing), c.winner,
-                        Number(c.footprintMean), Number(c.footprintMax), c.uncovered, c.cascades,
-                        c.emptyPartitions, Number(c.storageFactor), c.pagesRequested,
-                        c.pagesResident, c.pagesDropped, Number(c.lodBias),
-                        Number(c.misclassifiedMean), Number(c.misclassifiedError), Number(c.e),
-                        Number(c.shimmer), Number(c.storageFactorP99)});
+    return json::array({c.misclassified,
+                        Number(c.h),
+                        Number(c.hGrazing),
+                        c.winner,
+                        Number(c.footprintMean),
+                        Number(c.footprintMax),
+                        c.uncovered,
+                        c.cascades,
+                        c.emptyPartitions,
+                        Number(c.storageFactor),
+                        c.pagesRequested,
+                        c.pagesResident,
+                        c.pagesDropped,
+                        Number(c.lodBias),
+                        Number(c.misclassifiedMean),
+                        Number(c.misclassifiedError),
+                        Number(c.e),
+                        Number(c.shimmer),
+                        Number(c.storageFactorP99),
+                        c.phases});
 }
 
 json LightJson(const SweepLightRecord& light) {

@@ -11,8 +11,8 @@
 namespace lexel::cases {
 
 // The record's format tag and the names of a cell's fields, in the order of its array.
-inline constexpr const char* kSweepRecordFormat = "lexel-sweep-record/4";
-inline constexpr const char* kSweepJournalFormat = "lexel-sweep-journal/4";
+inline constexpr const char* kSweepRecordFormat = "lexel-sweep-record/5";
+inline constexpr const char* kSweepJournalFormat = "lexel-sweep-journal/5";
 inline constexpr const char* kSweepCellFields[] = {"misclassified",
                                                    "h",
                                                    "h_grazing",
@@ -31,7 +31,8 @@ inline constexpr const char* kSweepCellFields[] = {"misclassified",
                                                    "misclassified_error",
                                                    "e",
                                                    "shimmer",
-                                                   "storage_factor_p99"};
+                                                   "storage_factor_p99",
+                                                   "phases"};
 
 // sweep-record.json: the identity and header fields one per line, then one line per light (its
 // cells per method, their times apart in "ms", the study's counts per extra k).

@@ -12,6 +12,7 @@
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/spatial/harness/method_names.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 
 namespace lexel::cases {
 namespace {
@@ -595,20 +596,35 @@ std::string PhaseNote(const SweepResult& r) {
                "--phases K averages K): a phase alone moves a light's count by 5-15%, so the "
                "wins count any difference and the h orderings differences above 2% and a pixel, "
                "and neither is beyond the noise.";
-    double errors = 0.0, sum = 0.0;
+    double errors = 0.0, sum = 0.0, phases = 0.0;
+    std::size_t raised = 0, unsettled = 0, cells = 0;
     std::vector<double> relative;  // per light and method with a mean of at least one pixel
     for (const auto& light : r.cells)
         for (const SweepCell& c : light) {
             errors += c.misclassifiedError;
             sum += c.misclassifiedMean;
+            phases += c.phases;
+            raised += c.phases > r.phases;
+            unsettled += !spatial::PhaseMeanSettled({c.misclassifiedMean, c.misclassifiedError});
+            ++cells;
             if (c.misclassifiedMean >= 1.0)
                 relative.push_back(c.misclassifiedError / c.misclassifiedMean);
         }
     std::sort(relative.begin(), relative.end());
     const double median = relative.empty() ? 0.0 : relative[relative.size() / 2];
+    const std::string adaptive =
+        r.maxPhases <= r.phases
+            ? ""
+            : ", raised (doubling, up to " + std::to_string(r.maxPhases) +
+                  ") where its standard error was above 2% of it and above a pixel: on " +
+                  std::to_string(raised) + " of " + std::to_string(cells) +
+                  " lights and methods, " + Fixed(cells ? phases / cells : 0.0, 1) +
+                  " phases on average; " + std::to_string(unsettled) + " still above at " +
+                  std::to_string(r.maxPhases);
     return "Each light's count is the mean over " + std::to_string(r.phases) +
-           " sub-texel phases of its map(s); its residual noise (standard error over mean) is " +
-           Fixed(100.0 * median, 2) + "% for the median light and method, " +
+           " sub-texel phases of its map(s)" + adaptive +
+           "; its residual noise (standard error over mean) is " + Fixed(100.0 * median, 2) +
+           "% for the median light and method, " +
            Fixed(sum > 0.0 ? 100.0 * errors / sum : 0.0, 2) +
            "% summed over them. A light counts as a win or loss (and as ordered by h) only "
            "where the two methods' means differ by more than 1.96 standard errors of their "
@@ -805,6 +821,7 @@ nlohmann::json SweepJson(const SweepResult& r) {
     doc["case"] = r.caseName;
     doc["lights"] = r.lights.size();
     doc["phases"] = r.phases;
+    doc["max_phases"] = r.maxPhases;
     doc["shimmer_poses"] = r.shimmerPoses;
     if (const auto view = ReportView(r)) doc["report_table"] = ViewJson(r, *view, true);
     if (const auto view = FairView(r)) doc["fair_table"] = ViewJson(r, *view, false);

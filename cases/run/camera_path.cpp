@@ -171,6 +171,7 @@ std::vector<double> ShimmerAlong(const PathPoses& poses, const spatial::Light& l
                                  spatial::EvaluationOptions options,
                                  const std::string& lightField) {
     options.phases = 1;
+    options.maxPhases = 0;
     options.keepBuffers = true;
     ShimmerWalk walk(options.methods.size());
     for (std::size_t k = 0; k < poses.evaluators.size(); ++k) {

@@ -36,6 +36,7 @@ SpatialRun RunSpatialCase(const spatial::Scene& scene, const SpatialRunOptions& 
     evalOptions.mapTruth = options.mapTruth;
     evalOptions.keepBuffers = options.keepBuffers;
     evalOptions.phases = scene.phases;
+    evalOptions.maxPhases = scene.maxPhases;
     if (options.onStep) evalOptions.onMethodDone = [&](std::string_view) { options.onStep(); };
     // Every fixed light must face some counted pixel; checked for all before any method runs.
     for (std::size_t l = 0; l < scene.lights.size(); ++l)

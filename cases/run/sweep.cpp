@@ -128,10 +128,12 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     r.cells.assign(lights.size(), std::vector<SweepCell>(methods.size()));
     r.receiverPixels.assign(lights.size(), 0);
     r.phases = scene.phases;
+    r.maxPhases = std::max(scene.phases, scene.maxPhases);
     r.shimmerPoses = shimmerPoses;
     spatial::EvaluationOptions options;
     options.methods = methods;
     options.phases = scene.phases;
+    options.maxPhases = scene.maxPhases;
     // Lights in batches of what the memory budget holds at once; with the usual sizes one batch of
     // all lights, evaluated in parallel as they come.
     const auto batch =
@@ -168,6 +170,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
                                  o.metrics.storageFactor};
                 r.cells[l][m].misclassifiedMean = o.metrics.misclassifiedMean;
                 r.cells[l][m].misclassifiedError = o.metrics.misclassifiedError;
+                r.cells[l][m].phases = o.metrics.phases;
                 r.cells[l][m].e = o.metrics.e;
                 r.cells[l][m].storageFactorP99 = o.metrics.storageFactorP99;
                 if (!shimmer.empty()) r.cells[l][m].shimmer = shimmer[m];

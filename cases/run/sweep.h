@@ -40,6 +40,7 @@ struct SweepCell {
     // Over the scene's sub-texel phases (MethodOutcome::misclassifiedMean): the mean misclassified
     // pixels and its standard error (0 for one phase); `misclassified` is phase 0's count.
     double misclassifiedMean = 0.0, misclassifiedError = 0.0;
+    int phases = 1;  // the phases they are over: K, or more where adaptive (Scene::maxPhases)
     // The edge energy e (MethodOutcome::e; NaN for warped and virtual maps).
     double e = std::numeric_limits<double>::quiet_NaN();
     // With shimmer poses (RunSweep): the shimmer along the camera path's first poses, in % of the
@@ -58,7 +59,8 @@ struct SweepResult {
     std::vector<std::vector<SweepCell>> cells;  // [light][method]
     std::vector<std::int64_t> receiverPixels;   // per light
     double seconds = 0.0;                       // wall time of the whole sweep
-    int phases = 1;  // the sub-texel phases each cell's mean is over (Scene::phases)
+    int phases = 1;     // the sub-texel phases each cell's mean is over (Scene::phases) at least,
+    int maxPhases = 1;  // ... and at most (Scene::maxPhases; SweepCell::phases: how many)
     // The camera_path poses each cell's shimmer is over (0: shimmer not measured).
     int shimmerPoses = 0;
 };

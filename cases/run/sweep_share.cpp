@@ -77,6 +77,8 @@ std::string IdentityDifference(const SweepIdentity& a, const SweepIdentity& b) {
         return differ("cascades", std::to_string(a.cascades), std::to_string(b.cascades));
     if (a.phases != b.phases)
         return differ("phases", std::to_string(a.phases), std::to_string(b.phases));
+    if (a.maxPhases != b.maxPhases)
+        return differ("max phases", std::to_string(a.maxPhases), std::to_string(b.maxPhases));
     if (a.shimmerPoses != b.shimmerPoses)
         return differ("shimmer poses", std::to_string(a.shimmerPoses),
                       std::to_string(b.shimmerPoses));
@@ -109,6 +111,7 @@ SweepResult RunSweepShare(const spatial::Scene& scene, const std::vector<std::st
     r.caseName = scene.name;
     r.methods = methods;
     r.phases = scene.phases;
+    r.maxPhases = std::max(scene.phases, scene.maxPhases);
     r.shimmerPoses = shimmerPoses;
     r.seconds = fresh.seconds;
     std::size_t next = 0;  // the next of `fresh`
@@ -175,6 +178,7 @@ SweepResult ResultOf(const SweepRecord& record) {
     r.caseName = record.identity.caseName;
     r.methods = record.identity.methods;
     r.phases = record.identity.phases;
+    r.maxPhases = record.identity.maxPhases;
     r.shimmerPoses = record.identity.shimmerPoses;
     r.seconds = record.seconds;
     for (const SweepLightRecord& light : record.lights) {

@@ -31,14 +31,15 @@ std::vector<std::size_t> ShardLights(std::size_t lights, SweepShard shard);
 
 // What makes two runs parts of one sweep: the case (its name and the FNV-1a 64 hash of the case
 // file's bytes), the methods in order, the backend, the partitioned methods' count, the sub-texel
-// phases, the camera_path poses of the shimmer and the whole sweep's lights (their number and the
-// hash of their shortest round-trip coordinates).
+// phases (at least and at most), the camera_path poses of the shimmer and the whole sweep's lights
+// (their number and the hash of their shortest round-trip coordinates).
 struct SweepIdentity {
     std::string caseName, caseHash;
     std::vector<std::string> methods;
     std::string backend;
     int cascades = 0;
     int phases = 1;        // Scene::phases
+    int maxPhases = 1;     // max(Scene::phases, Scene::maxPhases)
     int shimmerPoses = 0;  // RunSweep's shimmerPoses
     std::size_t lights = 0;
     std::string lightsHash;

@@ -284,8 +284,8 @@ std::int64_t Evaluator::CountedPixels(const Light& light) const {
 }
 
 LightMatrix Evaluator::OracleMatrix(const LightSpace& lightSpace, const MethodContext& context,
-                                    std::span<const std::uint8_t> truth, int phases,
-                                    std::string* winner) const {
+                                    std::span<const std::uint8_t> truth,
+                                    const EvaluationOptions& options, std::string* winner) const {
     std::vector<OracleStart> starts;
     for (const std::string& name : FairMethodNames()) {
         try {
@@ -301,17 +301,18 @@ LightMatrix Evaluator::OracleMatrix(const LightSpace& lightSpace, const MethodCo
         RelevantHull::Of(lsCone, glm::normalize(FocusedLightMatrix(context.baseline).p4));
     if (starts.empty() || !hull)
         throw DomainError(Subject::kLight, "optimal-oracle: no single matrix serves this light");
-    // Scored on phases held out of the reported mean (HeldOutSubTexelPhases: no winner's curse).
-    const std::vector<glm::dvec2> shifts = HeldOutSubTexelPhases(phases);
+    // Scored on phases held out of every reported mean (those after the most a method may be
+    // measured at: no winner's curse), to the same residual (CountOverPhases).
+    const int heldOutFrom = std::max(options.phases, options.maxPhases);
     const auto score = [&](const LightMatrix& matrix) {
-        double wrong = 0.0;
-        for (const glm::dvec2& shift : shifts)
-            wrong += static_cast<double>(
-                CountWrong(ShadeThroughMap(backend_, frame_, lightSpace, matrix.Shifted(shift),
-                                           scene_.shadowMap)
-                               .shades,
-                           truth, nullptr));
-        return wrong / static_cast<double>(shifts.size());
+        const std::vector<std::int64_t> wrong = CountOverPhases(
+            options.phases, options.maxPhases, heldOutFrom, [&](int, const glm::dvec2& shift) {
+                return CountWrong(ShadeThroughMap(backend_, frame_, lightSpace,
+                                                  matrix.Shifted(shift), scene_.shadowMap)
+                                      .shades,
+                                  truth, nullptr);
+            });
+        return MeanOverPhases(wrong).mean;
     };
     const OracleResult best = SearchOracleMatrix(starts, *hull, scene_.shadowMap, score);
     *winner = best.start;
@@ -334,6 +335,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     LightOutcome out;
     out.light = light;
     out.phases = options.phases;
+    out.maxPhases = std::max(options.phases, options.maxPhases);
     const LightSpace lightSpace(light, bounds_);
 
     MethodContext context;
@@ -393,8 +395,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
         const Stopwatch timer;
         MethodMatrix computed;
         if (method == kOracleMethod)
-            computed.matrix =
-                OracleMatrix(lightSpace, context, truth, options.phases, &computed.winner);
+            computed.matrix = OracleMatrix(lightSpace, context, truth, options, &computed.winner);
         else
             computed = ComputeLightMatrix(method, context);
         m.metrics.ms = timer.Ms();
@@ -449,21 +450,25 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
         vsmOptions.phase = phase;
         return BuildVirtualShadowMap(context.baseline, readback_, vsmOptions);
     };
-    const std::vector<glm::dvec2> phases = SubTexelPhases(options.phases);
-    FrameShading shading = ShadeMethod(setup, computed, phases.front(), vsmAtPhase);
+    // Phase 0 (the map as computed) gives the single counts, the footprints and the buffers.
+    FrameShading shading = ShadeMethod(setup, computed, glm::dvec2(0.0), vsmAtPhase);
     metrics.misclassified = CountWrong(shading.shades, truth, &metrics.falseShadow);
-    std::vector<std::int64_t> wrong = {metrics.misclassified};
-    double falseShadows = static_cast<double>(metrics.falseShadow);
-    for (std::size_t k = 1; k < phases.size(); ++k) {
-        std::int64_t falseShadow = 0;
-        wrong.push_back(CountWrong(ShadeMethod(setup, computed, phases[k], vsmAtPhase).shades,
-                                   truth, &falseShadow));
-        falseShadows += static_cast<double>(falseShadow);
-    }
+    double falseShadows = 0.0;
+    const std::vector<std::int64_t> wrong =
+        CountOverPhases(options.phases, options.maxPhases, 0, [&](int k, const glm::dvec2& phase) {
+            std::int64_t falseShadow = metrics.falseShadow;
+            const std::int64_t count =
+                k == 0 ? metrics.misclassified
+                       : CountWrong(ShadeMethod(setup, computed, phase, vsmAtPhase).shades, truth,
+                                    &falseShadow);
+            falseShadows += static_cast<double>(falseShadow);
+            return count;
+        });
     const PhaseMean mean = MeanOverPhases(wrong);
     metrics.misclassifiedMean = mean.mean;
     metrics.misclassifiedError = mean.standardError;
-    metrics.falseShadowMean = falseShadows / static_cast<double>(phases.size());
+    metrics.phases = static_cast<int>(wrong.size());
+    metrics.falseShadowMean = falseShadows / static_cast<double>(wrong.size());
     const Footprints footprints =
         MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
     metrics.footprintMean = footprints.mean;

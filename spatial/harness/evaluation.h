@@ -69,6 +69,11 @@ struct EvaluationOptions {
     // (SubTexelPhases, sub_texel_phase.h; phase 0 the map as computed) and averaged. 1: the
     // single measurement. Costs K shadow passes and shadings per method (the matrix once).
     int phases = 1;
+    // Adaptive phases: when above `phases`, a method whose mean over K phases is not settled
+    // (its standard error above 2% of it and above a pixel: PhaseMeanSettled) is measured at 2K,
+    // 4K, ... phases up to this many (CountOverPhases); optimal-oracle scores its candidates
+    // alike. ≤ phases: exactly K.
+    int maxPhases = 0;
     // Called after each method is measured, with its name (a progress bar); may be empty.
     std::function<void(std::string_view method)> onMethodDone;
 };
@@ -117,6 +122,7 @@ struct MethodMetrics {
     // mean misclassified and false-shadow pixels, and the standard error of the first mean
     // (MeanOverPhases; 0 for one phase). What the tables compare.
     double misclassifiedMean = 0.0, falseShadowMean = 0.0, misclassifiedError = 0.0;
+    int phases = 1;  // the phases those means are over (more than K where adaptive)
     double h = 0.0;  // eq. (6) over the boundary samples
     // The edge energy e with the footprint prior (kEdgeEnergy at the case's exponent,
     // Scene::edgeExponent; energy.h) that `optimal` minimizes: of the map, or summed over the
@@ -158,8 +164,9 @@ struct LightOutcome {
     std::int64_t receiverPixels = 0;     // counted pixels
     std::int64_t truthShadowed = 0;      // ... that the rays find shadowed
     std::int64_t mapTruthDisagree = -1;  // focused truth map vs rays (-1: not computed)
-    int phases = 1;                      // EvaluationOptions::phases the methods were measured at
-    LightSamples samples;                // the optimization samples (boundary, relevant)
+    int phases = 1;     // EvaluationOptions::phases: each method was measured at this many phases,
+    int maxPhases = 1;  // ... and at most this many (MethodMetrics::phases: how many)
+    LightSamples samples;  // the optimization samples (boundary, relevant)
     std::vector<MethodOutcome> methods;
     std::vector<std::uint8_t> truth;  // per frame pixel 1 = shadowed (when keepBuffers)
 };
@@ -203,10 +210,11 @@ class Evaluator {
 
   private:
     std::vector<std::uint8_t> TraceTruth(const class LightSpace& lightSpace) const;
-    // optimal-oracle (oracle.h): the best single matrix by the measured mean over the phases
-    // held out of `phases` (HeldOutSubTexelPhases) against `truth`; its winning start in *winner.
+    // optimal-oracle (oracle.h): the best single matrix by the measured mean over phases held
+    // out of the reported ones (those after options.maxPhases, at least K of them) against
+    // `truth`; its winning start in *winner.
     LightMatrix OracleMatrix(const LightSpace& lightSpace, const struct MethodContext& context,
-                             std::span<const std::uint8_t> truth, int phases,
+                             std::span<const std::uint8_t> truth, const EvaluationOptions& options,
                              std::string* winner) const;
     void Measure(const LightSpace& lightSpace, const struct MethodMatrix& computed,
                  const struct MethodContext& context, const LightOutcome& light,

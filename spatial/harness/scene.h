@@ -84,6 +84,9 @@ struct Scene {
     // Sub-texel phases every method's errors are averaged over (EvaluationOptions::phases,
     // sub_texel_phase.h): 1 measures each map once, as computed.
     int phases = 1;
+    // When above `phases`, the most phases a method's mean on one light is raised to, doubling
+    // while its residual is above 2% (EvaluationOptions::maxPhases, CountOverPhases); 0: `phases`.
+    int maxPhases = 0;
     // The optimizer's sample budget (OptimizerOptions::maxSamples): every optimal* method and
     // sdsm-optimal's partitions search on at most this many boundary samples; 0: all of them.
     std::size_t optimizerMaxSamples = 0;

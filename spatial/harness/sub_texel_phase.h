@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <glm/glm.hpp>
 #include <span>
 #include <vector>
@@ -23,8 +24,9 @@ inline constexpr int kMaxPhases = 256;
 // K phases δ_k in [−½, ½)², texels: δ_0 = (0, 0) (the unshifted map, so K = 1 is today's single
 // measurement), then Roberts' R2 low-discrepancy sequence δ_k = frac(½ + k (1/g, 1/g²)) − ½, g the
 // plastic number (g³ = g + 1): any first K cover the square evenly, and a larger K extends a
-// smaller one. std::invalid_argument unless count ≥ 1.
-std::vector<glm::dvec2> SubTexelPhases(int count);
+// smaller one. With `first` > 0 the `count` phases from δ_first on. std::invalid_argument unless
+// count ≥ 1 and first ≥ 0.
+std::vector<glm::dvec2> SubTexelPhases(int count, int first = 0);
 
 // The next `count` phases of the same sequence, δ_count … δ_2count−1: as even a cover of the
 // square, none of them among SubTexelPhases(count). A search that chooses a map by its measured
@@ -41,5 +43,23 @@ struct PhaseMean {
     double standardError = 0.0;
 };
 PhaseMean MeanOverPhases(std::span<const std::int64_t> perPhase);
+
+// When an adaptive measurement stops adding phases (issue 25: "K chosen so the residual per-light
+// variation is below 2%"): once a mean's standard error is at most kPhaseResidual of the mean, or
+// at most kPhaseResidualFloor pixels (a light whose mean is a few pixels would otherwise need
+// hundreds of phases to pin a difference of under a pixel).
+inline constexpr double kPhaseResidual = 0.02;
+inline constexpr double kPhaseResidualFloor = 1.0;  // pixels
+bool PhaseMeanSettled(const PhaseMean& mean);
+
+// A count measured at phases δ_first, δ_first+1, ...: `phases` (K) of them, then, while the mean
+// is not settled (PhaseMeanSettled), as many again (2K, 4K, ...) up to `maxPhases`; exactly K when
+// maxPhases ≤ K. Every count is of the same sequence, so a method measured at 4K extends its own
+// measurement at K and shares its first K phases with every other method on the light.
+// `countAt(k, δ_k)` measures phase k. Returns the per-phase counts, in phase order.
+// std::invalid_argument unless 1 ≤ phases and first ≥ 0.
+std::vector<std::int64_t> CountOverPhases(
+    int phases, int maxPhases, int first,
+    const std::function<std::int64_t(int k, const glm::dvec2& phase)>& countAt);
 
 }  // namespace lexel::spatial

@@ -489,6 +489,19 @@ expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_b
            "^$" sweep "${small}" --lights 3 --format csv)
 expect_run(0 "^Table 1 as published .*\nThe fair comparison .*\nsweep: [0-9.]+ s for 3 lights\n$" "^$"
            sweep "${small}" --lights 3)
+# Adaptive phases (issue 25): from 2 phases, a mean is raised up to 16 where its residual is above
+# 2%; lights.csv says at how many each mean is, the note how many were raised; the most below K
+# is refused.
+expect_run(0 "mean over 2 sub-texel phases of its map\\(s\\), raised \\(doubling, up to 16\\) where its[ \n]+standard[ \n]+error[ \n]+was[ \n]+above"
+           "^lexel: wrote " sweep "${small}" --lights 3 --phases 2 --max-phases 16
+           --methods focused-tight --methods normal --out "${WORK}/adaptive")
+file(STRINGS "${WORK}/adaptive/lights.csv" adaptiveRows)
+list(GET adaptiveRows 0 adaptiveHeader)
+if(NOT adaptiveHeader MATCHES ",focused-tight_misclassified_se,focused-tight_phases,")
+    message(FATAL_ERROR "--max-phases: lights.csv has no focused-tight_phases column: ${adaptiveHeader}")
+endif()
+expect_run(2 "^$" "^lexel: error: --max-phases: must be at least the phases \\(16\\), got 8\n$"
+           sweep "${small}" --lights 1 --phases 16 --max-phases 8)
 # Directional lights from the same hemisphere directions.
 expect_run(0 "spatial_small, 2[ \n]+directional lights" "^$"
            sweep "${small}" --lights 2 --light-type directional --methods optimal --methods focused-tight)

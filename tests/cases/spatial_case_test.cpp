@@ -155,6 +155,16 @@ TEST(SpatialCase, GeneratorAppendsTheFloorObjects) {
     EXPECT_TRUE(IsSpatialCase(nlohmann::json::parse(R"({"light_sweep": {}})")));
 }
 
+// phases and max_phases: K, and the most a mean is raised to (0 when absent: exactly K).
+TEST(SpatialCase, PhasesAndMaxPhases) {
+    EXPECT_EQ(FromPatch("[]").phases, 1);
+    EXPECT_EQ(FromPatch("[]").maxPhases, 0);
+    const spatial::Scene scene = FromPatch(R"([{"op": "add", "path": "/phases", "value": 16},
+                                               {"op": "add", "path": "/max_phases", "value": 64}])");
+    EXPECT_EQ(scene.phases, 16);
+    EXPECT_EQ(scene.maxPhases, 64);
+}
+
 TEST(SpatialCase, BadFieldsAreNamed) {
     auto replace = [](const std::string& path, const std::string& value) {
         return ErrorFor(R"([{"op": "replace", "path": ")" + path + R"(", "value": )" + value +
@@ -171,8 +181,12 @@ TEST(SpatialCase, BadFieldsAreNamed) {
     EXPECT_EQ(add("/colour", "1"),
               "/colour: unknown key (allowed here: camera, name, description, lights, shadow_map, "
               "readback, geometry, generator, light_sweep, camera_path, cascades, methods, "
-              "phases, optimizer)");
+              "phases, max_phases, optimizer)");
     EXPECT_EQ(add("/phases", "0"), "/phases: must be in [1, 256], got 0");
+    EXPECT_EQ(add("/max_phases", "257"), "/max_phases: must be in [1, 256], got 257");
+    EXPECT_EQ(ErrorFor(R"([{"op": "add", "path": "/phases", "value": 16},
+                           {"op": "add", "path": "/max_phases", "value": 8}])"),
+              "/max_phases: must be at least phases (16), got 8");
     EXPECT_EQ(add("/phases", "257"), "/phases: must be in [1, 256], got 257");
     EXPECT_EQ(add("/phases", "2.5"), "/phases: must be an integer, got 2.5");
     EXPECT_EQ(

@@ -41,6 +41,7 @@ SweepCell AwkwardCell(std::int64_t k) {
     c.e = k == 0 ? std::numeric_limits<double>::quiet_NaN() : 1.0 / 7.0;
     c.shimmer = k == 2 ? std::numeric_limits<double>::quiet_NaN() : 0.1 + 1.0 / 3.0;
     c.storageFactorP99 = 2.0 / 3.0 + static_cast<double>(k);
+    c.phases = 16 << k;
     return c;
 }
 
@@ -53,6 +54,7 @@ SweepRecord WholeRecord(std::size_t lights) {
                   .backend = "cpu",
                   .cascades = 2,
                   .phases = 16,
+                  .maxPhases = 64,
                   .shimmerPoses = 3,
                   .lights = lights,
                   .lightsHash = ""};
@@ -103,6 +105,7 @@ TEST(SweepRecord, EveryCellReadsBackBitForBit) {
             EXPECT_EQ(a.winner, b.winner);
             EXPECT_EQ(a.pagesRequested, b.pagesRequested);
             EXPECT_EQ(a.pagesDropped, b.pagesDropped);
+            EXPECT_EQ(a.phases, b.phases);
         }
     EXPECT_TRUE(SameBits(read.lights[1].light.position.y, 1e-300));
     EXPECT_TRUE(SameBits(read.lights[0].light.direction.z, std::nextafter(0.2, 1.0)));
@@ -119,6 +122,14 @@ TEST(SweepRecord, IdentityNamesTheShimmerPoses) {
     b.shimmerPoses = 0;
     EXPECT_EQ(IdentityDifference(a, b), "shimmer poses ('3' vs '0')");
     EXPECT_EQ(IdentityDifference(a, a), "");
+}
+
+// ... nor shards measured with a different most phases (adaptive phases: --max-phases).
+TEST(SweepRecord, IdentityNamesTheMostPhases) {
+    const SweepIdentity a = WholeRecord(1).identity;
+    SweepIdentity b = a;
+    b.maxPhases = 16;
+    EXPECT_EQ(IdentityDifference(a, b), "max phases ('64' vs '16')");
 }
 
 TEST(SweepRecord, ShardsMergeIntoTheWholeRecord) {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 
 #include "lexel/cases/load/spatial_case.h"
@@ -86,6 +87,47 @@ TEST(MeanOverPhases, IsTheMeanAndItsStandardError) {
     EXPECT_EQ(MeanOverPhases(one).standardError, 0.0);
 }
 
+// SubTexelPhases(n, first) is the slice [first, first + n) of the one sequence.
+TEST(SubTexelPhases, FromFirstAreTheSequenceFromThere) {
+    const std::vector<glm::dvec2> all = SubTexelPhases(40);
+    const std::vector<glm::dvec2> slice = SubTexelPhases(8, 32);
+    ASSERT_EQ(slice.size(), 8u);
+    for (std::size_t k = 0; k < slice.size(); ++k) EXPECT_EQ(slice[k], all[32 + k]) << k;
+    EXPECT_THROW(SubTexelPhases(4, -1), std::invalid_argument);
+}
+
+// Settled: a standard error of at most 2% of the mean, or of at most one pixel.
+TEST(PhaseMeanSettled, TwoPercentOfTheMeanOrOnePixel) {
+    EXPECT_TRUE(PhaseMeanSettled({1000.0, 20.0}));
+    EXPECT_FALSE(PhaseMeanSettled({1000.0, 20.01}));
+    EXPECT_TRUE(PhaseMeanSettled({10.0, 1.0}));  // 10% of the mean, but a pixel
+    EXPECT_FALSE(PhaseMeanSettled({10.0, 1.01}));
+    EXPECT_TRUE(PhaseMeanSettled({0.0, 0.0}));
+}
+
+// Counts alternating 90, 110 over n phases (n even): mean 100, s = 10 √(n/(n−1)), so the standard
+// error is 10/√(n−1): 2.58 at 16 (not settled), 1.80 at 32. From K = 4 the measurement doubles
+// to 8, 16, 32 and stops there; capped at 24 it stops at 16 + 8; with no cap above K it is K.
+TEST(CountOverPhases, DoublesUntilSettledUpToTheMost) {
+    std::vector<int> visited;
+    const auto alternating = [&](int k, const glm::dvec2& phase) -> std::int64_t {
+        visited.push_back(k);
+        EXPECT_EQ(phase, SubTexelPhases(1, k).front()) << "phase " << k;
+        return k % 2 == 0 ? 90 : 110;
+    };
+    const std::vector<std::int64_t> counts = CountOverPhases(4, 256, 6, alternating);
+    EXPECT_EQ(counts.size(), 32u);
+    ASSERT_EQ(visited.size(), 32u);
+    for (int i = 0; i < 32; ++i) EXPECT_EQ(visited[i], 6 + i);  // each phase once, in order
+    EXPECT_NEAR(MeanOverPhases(counts).standardError, 10.0 / std::sqrt(31.0), 1e-12);
+    EXPECT_EQ(CountOverPhases(4, 24, 0, alternating).size(), 24u);
+    EXPECT_EQ(CountOverPhases(4, 0, 0, alternating).size(), 4u);
+    EXPECT_EQ(CountOverPhases(4, 4, 0, alternating).size(), 4u);
+    // Already settled at K: a constant count is measured K times.
+    EXPECT_EQ(CountOverPhases(4, 256, 0, [](int, const glm::dvec2&) { return 500; }).size(), 4u);
+    EXPECT_THROW(CountOverPhases(0, 4, 0, alternating), std::invalid_argument);
+}
+
 const Scene& Walkthrough() {
     static const Scene scene = cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) /
                                                        "spatial/walkthrough.json");
@@ -122,6 +164,41 @@ TEST(EvaluatorPhases, SingleMapMeanIsTheMeanOfShiftedMatrices) {
             EXPECT_GT(mo.metrics.misclassifiedError, 0.0) << mo.method;
         }
     }
+}
+
+// With adaptive phases each method's mean is over its own first 2^j K phases (the brute-force mean
+// of the shifted matrices, each measured alone): settled there, or at the most; and not settled
+// at half as many, or it would have stopped.
+TEST(EvaluatorPhases, AdaptiveMeanIsOverTheFirstPhasesThatSettleIt) {
+    const Scene& scene = Walkthrough();
+    const auto backend = MakeCpuRenderer(scene.geometry);
+    const Evaluator evaluator(scene, *backend);
+    EvaluationOptions options;
+    options.methods = {"focused-tight", "lispsm-tight", "normal"};
+    options.phases = 2;
+    options.maxPhases = 16;
+    const Light light = cases::SweepLightsOf(scene, 1).front();
+    const LightOutcome o = evaluator.Evaluate(light, options);
+    EXPECT_EQ(o.phases, 2);
+    EXPECT_EQ(o.maxPhases, 16);
+    int raised = 0;
+    for (const MethodOutcome& mo : o.methods) {
+        const int k = mo.metrics.phases;
+        ASSERT_TRUE(k == 2 || k == 4 || k == 8 || k == 16) << mo.method << ": " << k;
+        raised += k > 2;
+        std::vector<std::int64_t> counts;
+        for (const glm::dvec2& d : SubTexelPhases(k))
+            counts.push_back(evaluator.Misclassified(light, mo.matrix.Shifted(d)));
+        const PhaseMean expected = MeanOverPhases(counts);
+        EXPECT_EQ(mo.metrics.misclassifiedMean, expected.mean) << mo.method;
+        EXPECT_EQ(mo.metrics.misclassifiedError, expected.standardError) << mo.method;
+        EXPECT_TRUE(k == 16 || PhaseMeanSettled(expected)) << mo.method;
+        if (k > 2) {
+            const std::span<const std::int64_t> half(counts.data(), counts.size() / 2);
+            EXPECT_FALSE(PhaseMeanSettled(MeanOverPhases(half))) << mo.method;
+        }
+    }
+    EXPECT_GT(raised, 0);  // two phases leave some mean unsettled on this light
 }
 
 // Cascades, a virtual map's pages and a warped map move with the phase too: phase 0 keeps the
