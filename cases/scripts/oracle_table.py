@@ -20,8 +20,10 @@ set). A share whose gap is 0 is undefined: printed as "—" and left out of the 
 sweep wrote the phase means' standard errors, a set whose gap (Σ from − Σ bound) lies within
 1.96 standard errors of it (the phase noise of the two methods' means) is named with its z, and
 the average over the other sets is printed beside: such a set's share says nothing (on the
-shipped sweeps, a light whose count swings by thousands with the phase decides it). Bad input:
-one line, exit status 2.
+shipped sweeps, a light whose count swings by thousands with the phase decides it). Where the
+sweep raised noisy means (`--max-phases`, `<method>_phases` columns), a last line gives the
+phases per mean (least, most, average) and how many means are still unsettled: a standard error
+above 2% of the mean and above a pixel (`PhaseMeanSettled`). Bad input: one line, exit status 2.
 """
 import fnmatch
 import math
@@ -35,6 +37,8 @@ from fair_table import fail, parse_args, read_rows  # noqa: E402
 
 MEAN = "_misclassified_mean"
 SE = "_misclassified_se"
+PHASES = "_phases"
+RESIDUAL, FLOOR = 0.02, 1.0  # PhaseMeanSettled (spatial/harness/sub_texel_phase.h)
 SEED = 1  # any fixed seed: the same DIRs give the same intervals on every run
 
 
@@ -78,7 +82,11 @@ def read_set(d, names, excluded):
     # The gap's noise: the phase means' standard errors, where the sweep wrote them.
     se = {m: [standard_error(r[m + SE]) for r in rows] for m in names[1:] if m + SE in rows[0]}
     se = {m: v for m, v in se.items() if None not in v}  # an empty cell: no z for the set
-    return name, methods, mean, se
+    # Adaptive phases: per method and light (phases, mean, standard error).
+    phases = [(int(r[m + PHASES]), mean[m][i], standard_error(r[m + SE]))
+              for m in methods if m + PHASES in rows[0] and m + SE in rows[0]
+              for i, r in enumerate(rows)]
+    return name, methods, mean, se, phases
 
 
 def standard_error(text):
@@ -113,7 +121,7 @@ def main(names, excluded, resamples, dirs):
     rng = random.Random(SEED)
     shares, boots, pooled, lines, zs = [], [], [], [], []
     sets = [read_set(d, names, excluded) for d in dirs]  # every input checked before any output
-    for name, methods, mean, se in sets:
+    for name, methods, mean, se, _ in sets:
         zs.append(gap_z(mean, se, frm, bound))
         triples = list(zip(mean[reference], mean[frm], mean[bound]))
         share = closed(triples)
@@ -154,6 +162,13 @@ def main(names, excluded, resamples, dirs):
             line += (f" Average over the other {plural(len(rest), 'set')}: "
                      f"{average_line(shares, boots, rest, resamples)}.")
         print(line)
+    cells = [c for s in sets for c in s[4]]
+    if cells:
+        counts = [c[0] for c in cells]
+        unsettled = sum(1 for _, m, e in cells if e is not None and e > max(RESIDUAL * m, FLOOR))
+        print(f"Phases per mean: {min(counts)} to {max(counts)}, "
+              f"{sum(counts) / len(counts):.1f} on average; {unsettled} of {len(cells)} means "
+              f"with a standard error above 2% of the mean and above a pixel.")
 
 
 def plural(n, word):

@@ -67,6 +67,15 @@ if(NOT code EQUAL 0 OR NOT out MATCHES "\\| clear \\| 1 \\|" OR out MATCHES "wit
     message(FATAL_ERROR "oracle_table.py: clear's gap is beyond its noise, exit ${code}, got\n"
                         "${out}${err}")
 endif()
+# Adaptive phases: the phase counts 16 and 64 (average 40); of the two means, 20 ± 1 is settled
+# (a pixel) and 25 ± 1.5 is not (above 2% of 25 = 0.5 and above a pixel).
+file(MAKE_DIRECTORY "${WORK}/raised")
+file(WRITE "${WORK}/raised/lights.csv"
+     "light,optimal_misclassified_mean,optimal_misclassified_se,optimal_phases,"
+     "optimal-h_misclassified_mean,optimal-oracle_misclassified_mean,"
+     "optimal-oracle_misclassified_se,optimal-oracle_phases\n0,20,1,16,30,25,1.5,64\n")
+expect_rows("${WORK}/raised"
+    "Phases per mean: 16 to 64, 40.0 on average; 1 of 2 means with a standard error above 2% of the mean and above a pixel.")
 # An empty standard-error cell (a NaN the sweep wrote as nothing) leaves the set without a z.
 file(MAKE_DIRECTORY "${WORK}/blank")
 file(WRITE "${WORK}/blank/lights.csv" ${se_header} "0,20,30,,25,10\n")
