@@ -109,10 +109,15 @@ spatial::Scene LoadSceneWithOverrides(const CaseFile& file, int cascades, int ph
     if (cascades > 0) scene.partitions.count = cascades;
     if (phases > 0) scene.phases = phases;
     if (maxPhases > 0) scene.maxPhases = maxPhases;
-    if (scene.maxPhases > 0 && scene.maxPhases < scene.phases)
-        throw InputError("--max-phases: must be at least the phases (" +
-                         std::to_string(scene.phases) + "), got " +
-                         std::to_string(scene.maxPhases));
+    if (scene.maxPhases > 0 && scene.maxPhases < scene.phases) {
+        if (maxPhases > 0)
+            throw InputError("--max-phases: must be at least the phases (" +
+                             std::to_string(scene.phases) + "), got " +
+                             std::to_string(scene.maxPhases));
+        throw InputError("--phases: " + std::to_string(scene.phases) +
+                         " is above the case's max_phases (" + std::to_string(scene.maxPhases) +
+                         "); give --max-phases too");
+    }
     return scene;
 }
 

@@ -50,6 +50,7 @@
 #include "lexel/spatial/harness/mesh_loader.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/primitives.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 #include "lexel/spatial/harness/warped_methods.h"
 
 #ifndef LEXEL_SOURCE_DATA_DIR
@@ -263,7 +264,7 @@ int SweepCommand(const SweepFlags& flags) {
                                  .backend = flags.backend,
                                  .cascades = scene.partitions.count,
                                  .phases = scene.phases,
-                                 .maxPhases = std::max(scene.phases, scene.maxPhases),
+                                 .maxPhases = spatial::MostPhases(scene.phases, scene.maxPhases),
                                  .shimmerPoses = flags.shimmerPoses,
                                  .lights = lights.size(),
                                  .lightsHash = LightsHash(lights)};

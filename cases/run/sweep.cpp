@@ -19,6 +19,7 @@
 #include "lexel/spatial/harness/generator.h"
 #include "lexel/spatial/harness/memory_estimate.h"
 #include "lexel/spatial/harness/methods.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 
 namespace lexel::cases {
 
@@ -128,7 +129,7 @@ SweepResult RunSweep(const spatial::Scene& scene, const std::vector<std::string>
     r.cells.assign(lights.size(), std::vector<SweepCell>(methods.size()));
     r.receiverPixels.assign(lights.size(), 0);
     r.phases = scene.phases;
-    r.maxPhases = std::max(scene.phases, scene.maxPhases);
+    r.maxPhases = spatial::MostPhases(scene.phases, scene.maxPhases);
     r.shimmerPoses = shimmerPoses;
     spatial::EvaluationOptions options;
     options.methods = methods;

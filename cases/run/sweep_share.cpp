@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/sub_texel_phase.h"
 
 namespace lexel::cases {
 
@@ -111,7 +112,7 @@ SweepResult RunSweepShare(const spatial::Scene& scene, const std::vector<std::st
     r.caseName = scene.name;
     r.methods = methods;
     r.phases = scene.phases;
-    r.maxPhases = std::max(scene.phases, scene.maxPhases);
+    r.maxPhases = spatial::MostPhases(scene.phases, scene.maxPhases);
     r.shimmerPoses = shimmerPoses;
     r.seconds = fresh.seconds;
     std::size_t next = 0;  // the next of `fresh`

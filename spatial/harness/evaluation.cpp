@@ -303,7 +303,7 @@ LightMatrix Evaluator::OracleMatrix(const LightSpace& lightSpace, const MethodCo
         throw DomainError(Subject::kLight, "optimal-oracle: no single matrix serves this light");
     // Scored on phases held out of every reported mean (those after the most a method may be
     // measured at: no winner's curse), to the same residual (CountOverPhases).
-    const int heldOutFrom = std::max(options.phases, options.maxPhases);
+    const int heldOutFrom = MostPhases(options.phases, options.maxPhases);
     const auto score = [&](const LightMatrix& matrix) {
         const std::vector<std::int64_t> wrong = CountOverPhases(
             options.phases, options.maxPhases, heldOutFrom, [&](int, const glm::dvec2& shift) {
@@ -335,7 +335,7 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     LightOutcome out;
     out.light = light;
     out.phases = options.phases;
-    out.maxPhases = std::max(options.phases, options.maxPhases);
+    out.maxPhases = MostPhases(options.phases, options.maxPhases);
     const LightSpace lightSpace(light, bounds_);
 
     MethodContext context;

@@ -52,6 +52,10 @@ inline constexpr double kPhaseResidual = 0.02;
 inline constexpr double kPhaseResidualFloor = 1.0;  // pixels
 bool PhaseMeanSettled(const PhaseMean& mean);
 
+// The most phases a mean may be taken over when measured from `phases` (K) with the cap
+// `maxPhases`: the cap, or K where the cap is not above it (0: none).
+inline int MostPhases(int phases, int maxPhases) { return maxPhases > phases ? maxPhases : phases; }
+
 // A count measured at phases δ_first, δ_first+1, ...: `phases` (K) of them, then, while the mean
 // is not settled (PhaseMeanSettled), as many again (2K, 4K, ...) up to `maxPhases`; exactly K when
 // maxPhases ≤ K. Every count is of the same sequence, so a method measured at 4K extends its own

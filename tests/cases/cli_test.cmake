@@ -502,6 +502,11 @@ if(NOT adaptiveHeader MATCHES ",focused-tight_misclassified_se,focused-tight_pha
 endif()
 expect_run(2 "^$" "^lexel: error: --max-phases: must be at least the phases \\(16\\), got 8\n$"
            sweep "${small}" --lights 1 --phases 16 --max-phases 8)
+# A case's max_phases below --phases: the error names the flag given and the field it meets.
+string(REPLACE "\"light_sweep\"" "\"max_phases\": 8, \"light_sweep\"" cappedText "${smallText}")
+file(WRITE "${WORK}/capped.json" "${cappedText}")
+expect_run(2 "^$" "^lexel: error: --phases: 16 is above the case's max_phases \\(8\\); give --max-phases too\n$"
+           sweep "${WORK}/capped.json" --lights 1 --phases 16)
 # Directional lights from the same hemisphere directions.
 expect_run(0 "spatial_small, 2[ \n]+directional lights" "^$"
            sweep "${small}" --lights 2 --light-type directional --methods optimal --methods focused-tight)
