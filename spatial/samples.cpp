@@ -62,6 +62,54 @@ glm::dvec2 EdgeNormalAt(Resolution resolution, std::span<const Shade> shades, st
     return length > 0.0 ? g / length : glm::dvec2(0.0);
 }
 
+// Why |n_c·l| / |n_r·l| is a thin shadow's width per unit of its caster (ThinShadowContacts): let
+// the caster's plane (normal n_c) meet the receiver's (n_r) along a line, a the unit direction in
+// the caster's plane perpendicular to that line and away from the receiver, b the same in the
+// receiver's plane, θ the planes' dihedral angle (n_r·a = ±sin θ, n_c·b = ±sin θ). The caster's
+// point C = t·a projects along the light direction l onto the receiver's plane at
+// S = C − (n_r·C / n_r·l)·l, whose distance from the caster's plane is
+// |n_c·S| = t·|n_r·a|·|n_c·l| / |n_r·l| (n_c·a = 0); measured in the receiver's plane from the
+// contact line it is |n_c·S| / |n_c·b| = t·|n_c·l| / |n_r·l|, for every θ.
+double ThinShadowWidth(const glm::dvec3& casterNormal, const glm::dvec3& receiverNormal,
+                       const glm::dvec3& toLight) {
+    return std::abs(glm::dot(casterNormal, toLight)) / std::abs(glm::dot(receiverNormal, toLight));
+}
+
+std::vector<std::uint32_t> ThinShadowContacts(const Readback& readback,
+                                              const LightSpace& lightSpace,
+                                              std::span<const Shade> shades) {
+    const CameraBuffer& buf = readback.buffer;
+    if (shades.size() != buf.resolution.Count())
+        throw std::invalid_argument("ThinShadowContacts: shades do not match the resolution");
+    const int w = buf.resolution.width, h = buf.resolution.height;
+    // Whether the facing-away pixel q touches receiver i in space and casts a thin shadow on it
+    // (the light's direction taken at the caster's point: the two are within kContactReach).
+    const auto thinContact = [&](std::size_t i, std::size_t q, double reach) {
+        if (shades[q] != Shade::kFacingAway) return false;
+        if (glm::length(buf.wsPosition[q] - buf.wsPosition[i]) > reach) return false;
+        const glm::dvec3 toLight = lightSpace.DirectionToLight(buf.wsPosition[q]);
+        return ThinShadowWidth(buf.wsNormal[q], buf.wsNormal[i], toLight) < kThinShadowRatio;
+    };
+    std::vector<std::uint32_t> pixels;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            if (shades[i] != Shade::kShadowed || !readback.smooth[i]) continue;
+            const double reach = kContactReach * std::max(glm::length(readback.dWdx1[i]),
+                                                          glm::length(readback.dWdx2[i]));
+            bool contact = false;
+            for (int dy = -1; dy <= 1 && !contact; ++dy)
+                for (int dx = -1; dx <= 1 && !contact; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                    contact = thinContact(i, static_cast<std::size_t>(ny) * w + nx, reach);
+                }
+            if (contact) pixels.push_back(static_cast<std::uint32_t>(i));
+        }
+    }
+    return pixels;
+}
+
 namespace {
 
 // LightSamples::lsPrior and its derivatives: every `stride`-th eligible pixel in pixel order.
@@ -83,6 +131,25 @@ void AddPriorPoints(const Readback& readback, const LightSpace& lightSpace,
         s->priorDXdx1.push_back(lsFromWs * readback.dWdx1[i]);
         s->priorDXdx2.push_back(lsFromWs * readback.dWdx2[i]);
         s->wsPrior.push_back(buf.wsPosition[i]);
+    }
+}
+
+// The thin-shadow contacts that are not boundary pixels, after the boundary samples: no edge
+// direction at them (every neighbour is dark), so their normal is (0, 0).
+void AddContactSamples(const Readback& readback, const LightSpace& lightSpace,
+                       std::span<const std::uint32_t> boundaryPixels, std::span<const Shade> shades,
+                       LightSamples* s) {
+    const CameraBuffer& buf = readback.buffer;
+    const glm::dmat3 lsFromWs = lightSpace.LsFromWsLinear();
+    for (const std::uint32_t i : ThinShadowContacts(readback, lightSpace, shades)) {
+        if (std::binary_search(boundaryPixels.begin(), boundaryPixels.end(), i)) continue;
+        s->lsX.push_back(lightSpace.ToLight(buf.wsPosition[i]));
+        s->dXdx1.push_back(lsFromWs * readback.dWdx1[i]);
+        s->dXdx2.push_back(lsFromWs * readback.dWdx2[i]);
+        s->pixel.push_back(i);
+        s->wsX.push_back(buf.wsPosition[i]);
+        s->edgeNormal.push_back(glm::dvec2(0.0));
+        ++s->contactSamples;
     }
 }
 
@@ -137,6 +204,14 @@ std::vector<T> Kept(const std::vector<T>& values, const std::vector<bool>& keep)
     return out;
 }
 
+// How many of the kept samples are contacts (the last contactSamples of the samples).
+std::size_t KeptContacts(const LightSamples& samples, const std::vector<bool>& keep) {
+    const std::size_t n = samples.lsX.size(), contacts = std::min(samples.contactSamples, n);
+    if (keep.size() != n) return 0;
+    const auto tail = keep.end() - static_cast<std::ptrdiff_t>(contacts);
+    return static_cast<std::size_t>(std::count(tail, keep.end(), true));
+}
+
 // The kept samples of `samples` and its other members, the relevant points given, in
 // LightSamples' member order (a member added there and not here is what -Wextra's
 // missing-field-initializers warning reports).
@@ -151,6 +226,7 @@ LightSamples KeepSamples(const LightSamples& samples, const std::vector<bool>& k
                         lsRelevant,
                         samples.lsRelevantHull,
                         samples.boundaryPixels,
+                        KeptContacts(samples, keep),
                         samples.lsPrior,
                         samples.priorDXdx1,
                         samples.priorDXdx2,
@@ -164,6 +240,14 @@ LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples) {
     const std::size_t n = samples.lsX.size();
     if (maxSamples == 0 || n <= maxSamples) return samples;
     return KeepSamples(samples, KeptSamples(samples, maxSamples), samples.lsRelevant);
+}
+
+LightSamples PublishedSamples(const LightSamples& samples) {
+    const std::size_t n = samples.lsX.size(), contacts = std::min(samples.contactSamples, n);
+    if (contacts == 0) return samples;
+    std::vector<bool> keep(n, true);
+    std::fill(keep.end() - static_cast<std::ptrdiff_t>(contacts), keep.end(), false);
+    return KeepSamples(samples, keep, samples.lsRelevant);
 }
 
 LightSamples ThinSamplesForSearch(const LightSamples& samples, std::size_t maxSamples) {
@@ -202,6 +286,7 @@ LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& li
         s.wsX.push_back(buf.wsPosition[i]);
         if (!shades.empty()) s.edgeNormal.push_back(EdgeNormalAt(buf.resolution, shades, i));
     }
+    if (!shades.empty()) AddContactSamples(readback, lightSpace, boundaryPixels, shades, &s);
     AddPriorPoints(readback, lightSpace, shades, &s);
     return s;
 }

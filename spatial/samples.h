@@ -28,7 +28,7 @@ enum class Shade : std::uint8_t { kEmpty = 0, kLit = 1, kShadowed = 2, kFacingAw
 
 // The samples of one light.
 struct LightSamples {
-    std::vector<glm::dvec3> lsX;           // boundary samples in light space
+    std::vector<glm::dvec3> lsX;           // boundary samples (then contacts) in light space
     std::vector<glm::dvec3> dXdx1, dXdx2;  // ∂X/∂x¹, ∂X/∂x² at each
     std::vector<std::uint32_t> pixel;      // readback pixel of each
     std::vector<glm::dvec3> wsX;           // the world point of each
@@ -44,6 +44,10 @@ struct LightSamples {
     // the optimizer needs of it (optimizer.h). Empty (samples built by hand): it uses lsRelevant.
     std::vector<glm::dvec3> lsRelevantHull;
     std::size_t boundaryPixels = 0;  // boundary pixels before rejecting non-smooth ones
+    // How many of the samples, the last ones, are thin-shadow contacts (ThinShadowContacts) rather
+    // than boundary pixels: 0 for samples made without the shades, built by hand or split
+    // among cascades (partitions.h), where every sample counts alike.
+    std::size_t contactSamples = 0;
     // The footprint prior's points (energy.h): up to kPriorPoints relevant pixels with reliable
     // derivatives, evenly strided in pixel order, in light space with ∂X/∂x^j as for the
     // samples. Only receivers that need the map count: with the shades, kLit and kShadowed
@@ -58,6 +62,44 @@ struct LightSamples {
 // walkthrough 256 made optimal's searches on e 2.4 times h's (spatial_bench MultiStartEdge, one
 // core), 64 make them 1.7 times.
 inline constexpr std::size_t kPriorPoints = 64;
+
+// A thin shadow's contact. Where a receiver in cast shadow touches a surface facing away from the
+// light (in attached shadow), the cast shadow beside the contact is a band whose width, per unit
+// of the caster's extent from the contact line, is |n_c·l| / |n_r·l| (n_c, n_r the caster's and
+// the receiver's unit normals, l the unit direction to the light; derivation in samples.cpp).
+// Below kThinShadowRatio the band is narrower than a tenth of what casts it: a texel that reaches
+// across it from the lit receiver beyond lights it, as at a lit–shadowed edge. BoundaryPixels
+// cannot see that edge when the band's lit side is out of view (both sides in the image are
+// dark), so the band's pixels become samples of their own: Chong & Gortler's Algorithm 1
+// samples where the map decides, and it decides there too. Measured on the shipped sets
+// (RESULTS.md, "Thin shadows at contacts"): with 0.1 (and `optimal`'s view guard, optimizer.h)
+// the courtyard's directional light 93 misclassifies 0 pixels (67.6 without) and no set moves
+// beyond its noise; every shadowed receiver beside a facing-away one (no ratio), or beside one
+// merely grazed (|n_c·l| < 0.2), cost the courtyard's point lights 1.5–2.3%.
+inline constexpr double kThinShadowRatio = 0.1;
+// A contact is one in space, not where a facing-away surface occludes a receiver behind it in the
+// image: the two pixels' points lie within this many of the receiver pixel's footprints
+// (max ||∂W/∂x^j||, world units per pixel) of each other.
+inline constexpr double kContactReach = 3.0;
+
+// The width of the shadow a plane casts on a plane it meets, per unit of the caster's extent from
+// the contact line: |n_c·l| / |n_r·l| (the comment above; unit normals, `toLight` the unit
+// direction to the light). +inf where the light grazes the receiver (n_r·l = 0); NaN where it
+// grazes both.
+double ThinShadowWidth(const glm::dvec3& casterNormal, const glm::dvec3& receiverNormal,
+                       const glm::dvec3& toLight);
+
+// The thin-shadow contacts of an image of shadow decisions, ascending: kShadowed pixels with
+// reliable derivatives (readback.smooth) that have an 8-neighbour kFacingAway in contact
+// (kContactReach) that casts a thin shadow on it: ThinShadowWidth below kThinShadowRatio. `shades`
+// as for BoundaryPixels (std::invalid_argument otherwise). Without normals (wsNormal 0) none.
+std::vector<std::uint32_t> ThinShadowContacts(const Readback& readback,
+                                              const LightSpace& lightSpace,
+                                              std::span<const Shade> shades);
+
+// The samples as Chong & Gortler's report defines them: without the thin-shadow contacts
+// (LightSamples::contactSamples). `optimal-report` and `optimal-shear` run on these.
+LightSamples PublishedSamples(const LightSamples& samples);
 
 // Boundary samples from the readback's shadow decisions `shades` (ShadePixels over
 // readback.buffer with a standard shadow map): LightSamplesAtPixels over BoundaryPixels.
@@ -98,9 +140,10 @@ std::vector<std::uint32_t> BoundaryPixels(Resolution resolution, std::span<const
 // (readback.smooth) are dropped and counted in LightSamples::boundaryPixels, as MakeLightSamples
 // does: both give the same samples, bit for bit, from the same pixels. With `shades` (the
 // readback's decisions the pixels were found in, resolution.Count() entries, else
-// std::invalid_argument) the samples get their edge normals and the prior its lit-or-shadowed
-// points, as MakeLightSamples; without them edgeNormal stays empty and the prior takes every
-// smooth covered pixel.
+// std::invalid_argument) the samples get their edge normals, the thin-shadow contacts that are
+// not boundary pixels follow them (LightSamples::contactSamples) and the prior takes its
+// lit-or-shadowed points, as MakeLightSamples; without them edgeNormal stays empty, there are
+// no contacts and the prior takes every smooth covered pixel.
 LightSamples LightSamplesAtPixels(const Readback& readback, const LightSpace& lightSpace,
                                   std::span<const std::uint32_t> boundaryPixels,
                                   std::span<const Shade> shades = {});

@@ -159,7 +159,7 @@ std::string LightSection(const SpatialRun& run, std::size_t l,
                       ": " + HtmlText(LightLabel(o.light)) + "</h2>\n";
     std::string facts = std::to_string(o.receiverPixels) + " counted pixels face it, " +
                         std::to_string(o.truthShadowed) + " of them shadowed (Embree rays); " +
-                        std::to_string(o.samples.lsX.size()) + " boundary samples";
+                        SampleCountText(o.samples);
     const std::vector<std::string> header = LightHeaderLines(l, o);
     for (std::size_t k = 1; k < header.size(); ++k) facts += "; " + header[k];
     out += Paragraph(facts + ".");

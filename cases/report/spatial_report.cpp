@@ -15,11 +15,18 @@
 
 namespace lexel::cases {
 
+std::string SampleCountText(const spatial::LightSamples& samples) {
+    const std::size_t contacts = std::min(samples.contactSamples, samples.lsX.size());
+    std::string text = std::to_string(samples.lsX.size() - contacts) + " boundary samples";
+    if (contacts > 0) text += " and " + std::to_string(contacts) + " at thin-shadow contacts";
+    return text;
+}
+
 std::vector<std::string> LightHeaderLines(std::size_t l, const spatial::LightOutcome& o) {
-    std::vector<std::string> lines = {
-        "light " + std::to_string(l) + ": " + LightLabel(o.light) + " — " +
-        std::to_string(o.receiverPixels) + " pixels face it, " + std::to_string(o.truthShadowed) +
-        " shadowed (Embree rays), " + std::to_string(o.samples.lsX.size()) + " boundary samples"};
+    std::vector<std::string> lines = {"light " + std::to_string(l) + ": " + LightLabel(o.light) +
+                                      " — " + std::to_string(o.receiverPixels) +
+                                      " pixels face it, " + std::to_string(o.truthShadowed) +
+                                      " shadowed (Embree rays), " + SampleCountText(o.samples)};
     if (o.mapTruthDisagree >= 0)
         lines.push_back(
             "the report's focused 4000² truth map disagrees with the rays on " +

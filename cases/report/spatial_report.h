@@ -18,6 +18,8 @@ namespace lexel::cases {
 std::string SpatialRunText(const spatial::Scene& scene, const SpatialRun& run);
 
 // The pieces SpatialRunText prints, for the other formats (html_report.h).
+// "209 boundary samples", and " and 79 at thin-shadow contacts" when there are any (samples.h).
+std::string SampleCountText(const spatial::LightSamples& samples);
 // Per light: "light L: ... pixels face it, ..." and the truth map's disagreement when measured.
 std::vector<std::string> LightHeaderLines(std::size_t light, const spatial::LightOutcome& o);
 TextTable SpatialMethodTable(const spatial::LightOutcome& o);

@@ -148,7 +148,8 @@ LightResult StudyLight(const spatial::Evaluator& evaluator, const spatial::Light
     options.methods = methods;
     options.mapTruth = false;
     const spatial::LightOutcome outcome = evaluator.Evaluate(light, options);
-    const spatial::LightSamples& ls = outcome.samples;
+    // The boundary samples the model is about: no thin-shadow contacts (samples.h).
+    const spatial::LightSamples ls = spatial::PublishedSamples(outcome.samples);
     const spatial::LightSpace lightSpace(light, evaluator.bounds());
     const std::vector<Shade> standard = StandardShades(evaluator, lightSpace);
     const std::vector<std::uint8_t> truth = evaluator.TruthShadows(light);

@@ -309,7 +309,9 @@ MethodMatrix Optimal(std::string_view name, const MethodContext& context) {
     options.shear = name == "optimal-shear";
     const BaselineContext& b = context.baseline;
     const glm::dvec3 initialP4 = InitialLightAxis(*b.lightSpace, b.wsBounds, b.wsRelevant);
-    OptimizerResult r = OptimizeLightMatrix(*context.samples, initialP4, map, options);
+    // The report's own samples: no thin-shadow contacts (samples.h).
+    OptimizerResult r =
+        OptimizeLightMatrix(PublishedSamples(*context.samples), initialP4, map, options);
     return {r.matrix, std::move(r), {}, {}, std::nullopt, std::nullopt, {}};
 }
 

@@ -375,7 +375,11 @@ void BindSamples(py::module_& m) {
             "ls_relevant_hull", [](const LightSamples& s) { return FromPoints(s.lsRelevantHull); },
             "(K, 3): the readback's hull vertices in light space (the optimizer's cone).")
         .def_readonly("boundary_pixels", &LightSamples::boundaryPixels,
-                      "Boundary pixels before the non-smooth ones were dropped.");
+                      "Boundary pixels before the non-smooth ones were dropped.")
+        .def_readonly("contact_samples", &LightSamples::contactSamples,
+                      "How many of the samples, the last ones, are thin-shadow contacts (a "
+                      "shadowed receiver beside a facing-away surface the light grazes) rather "
+                      "than boundary pixels.");
 
     m.def(
         "boundary_pixels",

@@ -115,6 +115,85 @@ TEST(LightSamples, EdgeNormalsPointFromLitToShadowed) {
     EXPECT_FALSE(bare.lsPrior.empty());
 }
 
+TEST(ThinShadowWidth, IsTheCastShadowsWidthPerUnitOfItsCaster) {
+    // Brute force: random caster and receiver planes through the z axis and random directions to
+    // the light; the caster's point t·a (a ⊥ the line, in the caster's plane) is projected along
+    // the light onto the receiver's plane, and its distance from the contact line there is
+    // t·ThinShadowWidth for every dihedral angle.
+    std::mt19937_64 rng(25);
+    std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), uni(-1.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const double alpha = angle(rng), beta = angle(rng), t = 0.5 + std::abs(uni(rng));
+        const glm::dvec3 a(std::cos(alpha), std::sin(alpha), 0.0);  // in the caster's plane
+        const glm::dvec3 b(std::cos(beta), std::sin(beta), 0.0);    // in the receiver's plane
+        const glm::dvec3 nCaster(-a.y, a.x, 0.0), nReceiver(-b.y, b.x, 0.0);
+        const glm::dvec3 toLight = glm::normalize(glm::dvec3(uni(rng), uni(rng), uni(rng)));
+        if (std::abs(glm::dot(nReceiver, toLight)) < 0.05) continue;  // nearly grazing
+        const glm::dvec3 caster = t * a;
+        const glm::dvec3 shadow =
+            caster - glm::dot(nReceiver, caster) / glm::dot(nReceiver, toLight) * toLight;
+        ASSERT_NEAR(glm::dot(nReceiver, shadow), 0.0, 1e-12);
+        const double fromLine = std::hypot(shadow.x, shadow.y);  // the line is the z axis
+        EXPECT_NEAR(fromLine, t * ThinShadowWidth(nCaster, nReceiver, toLight),
+                    1e-9 * (1 + fromLine))
+            << "trial " << trial << ": alpha " << alpha << ", beta " << beta;
+    }
+    // A wall and the floor: the shadow is |l_x| / l_y wide per unit of wall height.
+    EXPECT_DOUBLE_EQ(ThinShadowWidth({1, 0, 0}, {0, 1, 0}, glm::normalize(glm::dvec3(0.1, 1, 0))),
+                     0.1);
+}
+
+TEST(ThinShadowContacts, LieAtTheFootOfAWallTheLightGrazes) {
+    // A box on a floor, its +z face (seen by the camera) facing away from a directional light
+    // that grazes it: |n·l| / (floor's n·l) = 0.05 / 0.8 < kThinShadowRatio. The contacts are
+    // floor pixels in shadow beside that face's foot (z = 1); tilting the light away from the
+    // face (ratio 0.5) leaves none, as does a light the face is turned to.
+    TriangleMesh scene = testing::FloorQuad(30.0);
+    scene.Append(testing::BoxMesh({-1.0, 0.0, -1.0}, {1.0, 1.5, 1.0}));
+    const auto renderer = MakeCpuRenderer(scene);
+    Camera camera;
+    camera.position = {0.3, 1.2, 4.0};
+    camera.target = {0.0, 0.3, 1.0};
+    camera.resolution = {180, 180};
+    const Readback rb = RenderReadback(*renderer, camera, camera.resolution);
+    const Bounds bounds = scene.ComputeBounds();
+    const auto contactsFor = [&](const glm::dvec3& toLight) {
+        Light light;
+        light.type = Light::Type::kDirectional;
+        light.direction = -glm::normalize(toLight);
+        const LightSpace ls(light, bounds);
+        std::vector<glm::dvec3> corners;
+        for (const glm::dvec3& c : bounds.Corners()) corners.push_back(ls.ToLight(c));
+        const ShadowMap map = renderer->RenderShadowMap(
+            ls, *FitMapToPoints({0, 0, 1}, corners, {2048, 2048}), {2048, 2048});
+        const std::vector<Shade> shades = renderer->ShadePixels(rb.buffer, ls, map);
+        const LightSamples samples = MakeLightSamples(rb, ls, shades);
+        const std::vector<std::uint32_t> contacts = ThinShadowContacts(rb, ls, shades);
+        // The samples: the boundary pixels, then the contacts that are not, normal (0, 0).
+        const std::vector<std::uint32_t> boundary = BoundaryPixels(rb.buffer.resolution, shades);
+        std::size_t extra = 0;
+        for (const std::uint32_t p : contacts)
+            extra += !std::binary_search(boundary.begin(), boundary.end(), p);
+        EXPECT_EQ(samples.contactSamples, extra);
+        for (std::size_t k = samples.lsX.size() - samples.contactSamples; k < samples.lsX.size();
+             ++k)
+            EXPECT_EQ(samples.edgeNormal[k], glm::dvec2(0.0));
+        return contacts;
+    };
+    const std::vector<std::uint32_t> grazing = contactsFor({0.6, 0.8, -0.05});
+    ASSERT_GT(grazing.size(), 10u);
+    for (const std::uint32_t p : grazing) {
+        const glm::dvec3 ws = rb.buffer.wsPosition[p];
+        const double reach = 3.0 * std::max(glm::length(rb.dWdx1[p]), glm::length(rb.dWdx2[p]));
+        EXPECT_NEAR(ws.y, 0.0, 1e-9) << "pixel " << p;  // on the floor
+        EXPECT_GE(ws.z, 1.0 - 1e-9) << "pixel " << p;   // in front of the face
+        EXPECT_LE(ws.z, 1.0 + reach) << "pixel " << p;  // at its foot
+        EXPECT_LE(std::abs(ws.x), 1.0 + reach) << "pixel " << p;
+    }
+    EXPECT_TRUE(contactsFor({0.6, 0.8, -0.4}).empty());  // ratio 0.5: a wide shadow
+    EXPECT_TRUE(contactsFor({0.6, 0.8, 0.05}).empty());  // the face is lit at a graze
+}
+
 // Ten samples on pixels 100..109, distinguishable by their x (sample i has i in every array).
 LightSamples TenSamples() {
     LightSamples s;
@@ -137,6 +216,7 @@ TEST(ThinSamples, KeepsTheLeastPrioritiesInOrderAndEverythingElse) {
     s.lsRelevant = {{1, 2, 3}, {4, 5, 6}};
     s.lsPrior = {{7, 8, 9}};
     s.boundaryPixels = 12;
+    s.contactSamples = 4;  // samples 6..9 are thin-shadow contacts
     // SplitMix64's first output from seed 0 (the published reference value), and pixel 106's.
     EXPECT_EQ(ThinningPriority(0), 0xE220A8397B1DCDAFull);
     EXPECT_EQ(ThinningPriority(106), 2475505609494469522ull);
@@ -155,6 +235,13 @@ TEST(ThinSamples, KeepsTheLeastPrioritiesInOrderAndEverythingElse) {
     EXPECT_EQ(t.lsRelevant, s.lsRelevant);
     EXPECT_EQ(t.lsPrior, s.lsPrior);
     EXPECT_EQ(t.boundaryPixels, 12u);
+    EXPECT_EQ(t.contactSamples, 2u);  // 6 and 7 are kept
+    // The report's samples: the six before the contacts, everything else as it is.
+    const LightSamples published = PublishedSamples(s);
+    EXPECT_EQ(published.pixel, (std::vector<std::uint32_t>{100, 101, 102, 103, 104, 105}));
+    EXPECT_EQ(published.contactSamples, 0u);
+    EXPECT_EQ(published.edgeNormal.size(), 6u);
+    EXPECT_EQ(published.lsPrior, s.lsPrior);
     EXPECT_EQ(ThinSamples(s, 5).pixel, (std::vector<std::uint32_t>{100, 102, 103, 106, 107}));
     EXPECT_EQ(ThinSamples(s, 0).lsX, s.lsX);
     EXPECT_EQ(ThinSamples(s, 10).lsX, s.lsX);
