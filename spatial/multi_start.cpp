@@ -1,7 +1,9 @@
 #include "lexel/spatial/multi_start.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "lexel/solvers/errors.h"
@@ -39,6 +41,32 @@ void Accumulate(const OptimizerResult& search, OptimizerResult* total) {
     total->candidatesRejected += search.candidatesRejected;
 }
 
+// The view guard (OptimizerOptions::starveFactor): whether a candidate's mean footprint over the
+// prior points exceeds the factor times the least of the competing starts' maps'. Off (never
+// starving) for a factor ≤ 0, or where no competing start's footprint is defined.
+class ViewGuard {
+  public:
+    ViewGuard(const LightSamples& samples, std::span<const OptimizerStart> starts, double factor)
+        : samples_(samples), factor_(factor) {
+        if (!(factor > 0.0)) return;
+        for (const OptimizerStart& start : starts)
+            if (const std::optional<double> f = RelevantFootprint(start.matrix, samples);
+                start.mapCompetes && f)
+                least_ = std::min(least_, *f);
+    }
+
+    bool Starves(const LightMatrix& matrix) const {
+        if (!(factor_ > 0.0) || !std::isfinite(least_)) return false;
+        const std::optional<double> f = RelevantFootprint(matrix, samples_);
+        return f && *f > factor_ * least_;
+    }
+
+  private:
+    const LightSamples& samples_;
+    double factor_;
+    double least_ = std::numeric_limits<double>::infinity();
+};
+
 }  // namespace
 
 MultiStartResult OptimizeFromStarts(const LightSamples& samples,
@@ -57,11 +85,19 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
     std::size_t bestSearch = starts.size();  // the start whose search did best
     double bestSearchH = std::numeric_limits<double>::infinity();
     OptimizerResult totals;
+    const ViewGuard guard(samples, starts, options.starveFactor);
+    // Whether a candidate of energy h beats the best so far and does not starve the view.
+    const auto wins = [&](double h, const LightMatrix& matrix) {
+        if (!(h < bestH)) return false;
+        if (!guard.Starves(matrix)) return true;
+        ++out.starving;
+        return false;
+    };
     for (std::size_t k = 0; k < starts.size(); ++k) {
         const OptimizerStart& start = starts[k];
         out.startH.push_back(Energy(start.matrix, samples, options.energy));
         out.searchH.push_back(std::numeric_limits<double>::infinity());
-        if (start.mapCompetes && out.startH[k] < bestH) {
+        if (start.mapCompetes && wins(out.startH[k], start.matrix)) {
             bestH = out.startH[k];
             out.result = OptimizerResult{};
             out.result.matrix = start.matrix;
@@ -75,12 +111,19 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
         Accumulate(search, &totals);
         out.searchH[k] = search.h;
         if (search.h < bestSearchH) bestSearchH = search.h, bestSearch = k;
-        if (search.h < bestH) {
+        if (wins(search.h, search.matrix)) {
             bestH = search.h;
             out.result = std::move(search);
             out.winner = start.name;
             out.startMapWon = false;
         }
+    }
+    if (!std::isfinite(bestH) && out.starving > 0) {  // the guard passed over every finite one
+        OptimizerOptions unguarded = options;
+        unguarded.starveFactor = 0.0;
+        MultiStartResult chosen = OptimizeFromStarts(samples, starts, map, unguarded);
+        chosen.starving = out.starving;
+        return chosen;
     }
     if (!std::isfinite(bestH))  // no competing map and no search has a finite energy
         throw DomainError(Subject::kLight,
@@ -91,7 +134,7 @@ MultiStartResult OptimizeFromStarts(const LightSamples& samples,
         OptimizerResult refined =
             OptimizeLightMatrix(samples, starts[bestSearch].matrix.p4, map, options);
         totals.refineMs += refined.refineMs;
-        if (refined.h < bestH) {
+        if (wins(refined.h, refined.matrix)) {
             bestH = refined.h;
             out.result = std::move(refined);
             out.winner = starts[bestSearch].name;

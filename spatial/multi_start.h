@@ -36,12 +36,17 @@ struct MultiStartResult {
     std::vector<double> startH;   // per start: h of its own map (also where it does not compete)
     std::vector<double> searchH;  // per start: h after Algorithm 1 from its axis (+inf: skipped,
                                   // the axis repeats an earlier start's)
+    int starving = 0;  // candidates the view guard passed over (OptimizerOptions::starveFactor)
 };
 
 // Algorithm 1 (OptimizeLightMatrix, without refinement) from each start's axis; the least energy
 // (options.energy: h by default; startH and searchH hold it) among the competing starts' maps
 // (mapCompetes) and the searches wins. With options.refine, the best search's axis is also
-// refined (optimal-refined) and competes too. `starts` must not be empty (std::invalid_argument).
+// refined (optimal-refined) and competes too. With options.starveFactor > 0, a candidate whose
+// RelevantFootprint (energy.h) exceeds that factor times the least of the competing starts' maps'
+// does not compete (MultiStartResult::starving counts them); where that leaves no candidate with a
+// finite energy, the choice is made without the guard. `starts` must not be empty
+// (std::invalid_argument).
 // With options.maxSamples, everything (startH too) runs on the same thinned samples. Throws
 // DomainError as OptimizeLightMatrix does, and when no candidate has a finite energy.
 MultiStartResult OptimizeFromStarts(const LightSamples& samples,

@@ -45,7 +45,12 @@ const NamedEnergy kEnergies[] = {
      [](const LightMatrix& m, const LightSamples& s) {
          return EnergyGradientJets(m, s, kEdgeEnergy);
      },
-     [](OptimizerOptions* o) { o->energy = kEdgeEnergy; }},
+     [](OptimizerOptions* o) {  // `optimal`'s: its energy and its two guards
+         const OptimizerOptions edge = EdgeOptimizerOptions();
+         o->energy = edge.energy;
+         o->collapseFactor = edge.collapseFactor;
+         o->starveFactor = edge.starveFactor;
+     }},
 };
 
 const NamedEnergy& FindEnergy(const std::string& name) {

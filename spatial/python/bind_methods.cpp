@@ -245,8 +245,8 @@ void DefOptimizing(py::module_& m, const char* name, F&& f, const std::string& d
         "rectangle), refine=False (Ceres refinement of p4 on the unit sphere: optimal-refined), "
         "refine_iterations=40, shear=False (the report's Fig. 3 affine shear, optimized "
         "exactly), hull_once=True (fit from the visible points' hull once per light; False: the "
-        "reference path over every point), energy=None (the optimizer's own: 'h', eq. 6; "
-        "lexel.ENERGIES).";
+        "reference path over every point), energy=None (the optimizer's own: 'h', eq. 6; 'e': "
+        "`optimal`'s edge energy with its collapse and view guards; lexel.ENERGIES).";
     static std::list<std::string> docs;  // pybind11 keeps the pointer: never moved
     docs.push_back(doc + options);
     m.def(name, std::forward<F>(f), extra..., py::kw_only(), py::arg("iterations") = d.iterations,
@@ -310,7 +310,10 @@ void BindResults(py::module_& m) {
         .def_readonly("start_h", &MultiStartResult::startH, "Per start: its own map's energy.")
         .def_readonly("search_h", &MultiStartResult::searchH,
                       "Per start: after Algorithm 1 from its axis (inf: skipped, the axis "
-                      "repeats an earlier start's).");
+                      "repeats an earlier start's).")
+        .def_readonly("starving", &MultiStartResult::starving,
+                      "Candidates the view guard passed over: their mean footprint over the "
+                      "view exceeded 4x the best-fitted start's (energy 'e' only).");
 }
 
 void BindOptimizer(py::module_& m) {

@@ -3,7 +3,10 @@
 // horizon, and `optimal` never has a larger h (eq. 6) than any competing map it started from.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <limits>
+#include <string>
 
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/run/sweep.h"
@@ -103,6 +106,57 @@ TEST(SampleBudget, TheCasesBudgetReachesOptimal) {
     EXPECT_EQ(optimal.matrix.p1, byHand.result.matrix.p1) << Describe(light);
     EXPECT_EQ(o.samples.lsX.size(), all.samples.lsX.size());
     EXPECT_EQ(optimal.metrics.h, Energy(optimal.matrix, o.samples));
+}
+
+// The courtyard's directional sweep light `index` (cases::SweepLightsOf, as `lexel sweep`).
+Light CourtyardDirectional(int index) {
+    const Scene scene = cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) / "spatial" /
+                                                "courtyard.json");
+    return cases::SweepLightsOf(scene, 100, Light::Type::kDirectional)[index];
+}
+
+TEST(ThinShadows, ContactSamplesAndTheViewGuardKeepOptimalExactOnTheCourtyard) {
+    // Two lights of the courtyard's directional sweep set (RESULTS.md, "Thin shadows at
+    // contacts"). Light 93 grazes a wall (|n·l| = 0.0175): its cast shadow beside the wall is a
+    // band 2 pixels wide at the frame's right border, with no lit pixel in view beyond it, so no
+    // boundary sample lies on it and `optimal` lit it (78 pixels at phase 0 without contacts).
+    // Light 39 leaves the whole view in shadow: no boundary sample, 15 at contacts, and e's
+    // search on those alone widens the view's texels five times (125 pixels lit at phase 0).
+    const Fixture f("courtyard.json", 0);
+    EvaluationOptions options;
+    options.methods = {"optimal"};
+    for (const int index : {93, 39}) {
+        const Light light = CourtyardDirectional(index);
+        const std::string what = "light " + std::to_string(index) + " " + Describe(light);
+        const LightOutcome o = f.evaluator.Evaluate(light, options);
+        ASSERT_GT(o.samples.contactSamples, 0u) << what;
+        EXPECT_EQ(PublishedSamples(o.samples).lsX.size(),
+                  o.samples.lsX.size() - o.samples.contactSamples);
+        EXPECT_EQ(o.methods.front().metrics.misclassified, 0) << what;
+
+        // The view guard: the unguarded multi-start on the same samples starves the view on
+        // light 39 and not on light 93; guarded, no winner does.
+        const LightSpace lightSpace(light, f.evaluator.bounds());
+        BaselineContext context = MakeBaselineContext(f.scene, lightSpace, f.evaluator.bounds(),
+                                                      f.evaluator.readback().wsRelevant,
+                                                      f.evaluator.readback().wsRelevantHull);
+        context.samples = &o.samples;
+        const std::vector<OptimizerStart> starts = StandardStarts(context);
+        double least = std::numeric_limits<double>::infinity();
+        for (const OptimizerStart& start : starts)
+            if (start.mapCompetes)
+                least = std::min(least, *RelevantFootprint(start.matrix, o.samples));
+        OptimizerOptions unguarded = EdgeOptimizerOptions();
+        unguarded.starveFactor = 0.0;
+        const double widened =
+            *RelevantFootprint(
+                OptimizeFromStarts(o.samples, starts, f.scene.shadowMap, unguarded).result.matrix,
+                o.samples) /
+            least;
+        EXPECT_EQ(widened > kStarveFactor, index == 39) << what << ": x" << widened;
+        EXPECT_LE(*RelevantFootprint(o.methods.front().matrix, o.samples), kStarveFactor * least)
+            << what;
+    }
 }
 
 TEST(PlaneOptimal, FallbackKeepsEveryVisiblePointATexelAboveTheHorizon) {
