@@ -48,8 +48,9 @@ struct OptimizerOptions {
     double collapseFactor = 0.0;
     // The view guard of the multi-start (OptimizeFromStarts, multi_start.h): a candidate whose
     // mean footprint over the prior points exceeds starveFactor times the least of the competing
-    // starts' maps' is passed over, whatever its energy. 0: off (optimal-h, sdsm-optimal).
-    // kStarveFactor is `optimal`'s. OptimizeLightMatrix alone ignores it.
+    // starts' maps' is passed over, whatever its energy. 0: off (optimal-h, sdsm-optimal: on
+    // its partitions it passed over better maps, RESULTS.md). kStarveFactor is `optimal`'s.
+    // OptimizeLightMatrix alone ignores it.
     double starveFactor = 0.0;
     // The sample budget: with more boundary samples than this, the search, the refinement and
     // every choice among candidates run on this many of them, chosen by their pixels
