@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <set>
 
@@ -121,7 +122,7 @@ TEST(ThinShadowWidth, IsTheCastShadowsWidthPerUnitOfItsCaster) {
     // the light onto the receiver's plane, and its distance from the contact line there is
     // t·ThinShadowWidth for every dihedral angle.
     std::mt19937_64 rng(25);
-    std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), uni(-1.0, 1.0);
+    std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi), uni(-1.0, 1.0);
     for (int trial = 0; trial < 200; ++trial) {
         const double alpha = angle(rng), beta = angle(rng), t = 0.5 + std::abs(uni(rng));
         const glm::dvec3 a(std::cos(alpha), std::sin(alpha), 0.0);  // in the caster's plane
