@@ -108,13 +108,6 @@ TEST(SampleBudget, TheCasesBudgetReachesOptimal) {
     EXPECT_EQ(optimal.metrics.h, Energy(optimal.matrix, o.samples));
 }
 
-// The courtyard's directional sweep light `index` (cases::SweepLightsOf, as `lexel sweep`).
-Light CourtyardDirectional(int index) {
-    const Scene scene = cases::LoadSpatialScene(std::filesystem::path(LEXEL_CASES_DIR) / "spatial" /
-                                                "courtyard.json");
-    return cases::SweepLightsOf(scene, 100, Light::Type::kDirectional)[index];
-}
-
 TEST(ThinShadows, ContactSamplesAndTheViewGuardKeepOptimalExactOnTheCourtyard) {
     // Two lights of the courtyard's directional sweep set (RESULTS.md, "Thin shadows at
     // contacts"). Light 93 grazes a wall (|n·l| = 0.0175): its cast shadow beside the wall is a
@@ -123,10 +116,12 @@ TEST(ThinShadows, ContactSamplesAndTheViewGuardKeepOptimalExactOnTheCourtyard) {
     // Light 39 leaves the whole view in shadow: no boundary sample, 15 at contacts, and e's
     // search on those alone widens the view's texels five times (125 pixels lit at phase 0).
     const Fixture f("courtyard.json", 0);
+    // The directional sweep set's lights, as `lexel sweep --lights 100` draws them.
+    const std::vector<Light> sweep = cases::SweepLightsOf(f.scene, 100, Light::Type::kDirectional);
     EvaluationOptions options;
     options.methods = {"optimal"};
     for (const int index : {93, 39}) {
-        const Light light = CourtyardDirectional(index);
+        const Light light = sweep[index];
         const std::string what = "light " + std::to_string(index) + " " + Describe(light);
         const LightOutcome o = f.evaluator.Evaluate(light, options);
         ASSERT_GT(o.samples.contactSamples, 0u) << what;
