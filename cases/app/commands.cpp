@@ -119,7 +119,9 @@ int RunSpatial(const RunFlags& flags, const CaseFile& file) {
     options.keepBuffers = !flags.outDir.empty();
     options.backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(options.methods, options.backend);
-    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile
+    std::optional<OutputSet> out;             // --out is checked before anything is computed
+    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     if (!flags.outDir.empty())
         out.emplace(
             flags.outDir,
@@ -181,7 +183,9 @@ int RunFlatland(const RunFlags& flags, const CaseFile& first) {
     scenes.push_back(LoadFlatScene(first));
     for (std::size_t i = 1; i < flags.cases.size(); ++i)
         scenes.push_back(LoadFlatScene(flags.cases[i]));
-    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile
+    std::optional<OutputSet> out;             // --out is checked before anything is computed
+    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     if (!flags.outDir.empty()) out.emplace(flags.outDir, FlatlandOutputPlan(flags, scenes));
     std::vector<flatland::CaseReport> reports;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -293,8 +297,10 @@ int CaseStorageCommand(const StorageFlags& flags) {
     const fs::path casePath = flags.casePath;
     const spatial::Scene scene = LoadSpatialScene(casePath);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
-    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile
+    std::optional<OutputSet> out;             // --out is checked before anything is computed
     const std::string stem = "storage_" + scene.name;
+    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     if (!flags.outDir.empty())
         out.emplace(flags.outDir, OutputPlan{{casePath}, [stem](const std::string& file) {
                                                  return file == stem + ".json" ||
@@ -321,7 +327,9 @@ int StorageCommand(const StorageFlags& flags) {
     if (!flags.methods.empty())
         throw InputError("--method: applies with --case (the measured storage factor)");
     const spatial::ViewFrustum frustum = StorageFrustum(flags);
-    std::optional<OutputSet> out;  // --out is checked before anything is computed
+    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile
+    std::optional<OutputSet> out;             // --out is checked before anything is computed
+    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     if (!flags.outDir.empty())
         out.emplace(flags.outDir,
                     OutputPlan{{}, [](const std::string& file) {

@@ -78,27 +78,11 @@ std::uint32_t BigEndian32(const std::string& bytes, std::size_t at) {
     return value;
 }
 
-// Why the file is not a complete PNG, or empty when it is one: the 8-byte signature, then chunks
-// (4-byte length, 4-byte type, data, 4-byte CRC) from IHDR to IEND filling the file exactly
-// (PNG specification, 2nd ed., sections 5.2-5.3). A 0-byte or truncated image fails here.
 std::string PngDefect(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (!in.eof() && in.fail()) return "cannot be read back";
-    static const char kSignature[] = "\x89PNG\r\n\x1a\n";
-    if (bytes.size() < 8 || bytes.compare(0, 8, kSignature, 8) != 0)
-        return std::to_string(bytes.size()) + " bytes without the PNG signature";
-    constexpr std::size_t kChunkOverhead = 12;  // length, type, CRC
-    std::size_t at = 8;
-    for (bool first = true; at + kChunkOverhead <= bytes.size(); first = false) {
-        const std::uint64_t length = BigEndian32(bytes, at);
-        const std::string type = bytes.substr(at + 4, 4);
-        if (first && type != "IHDR") return "the first chunk is not IHDR";
-        at += kChunkOverhead + length;
-        if (at > bytes.size()) break;
-        if (type == "IEND") return at == bytes.size() ? "" : "bytes follow the IEND chunk";
-    }
-    return "truncated: " + std::to_string(bytes.size()) + " bytes end before the IEND chunk";
+    return PngBytesDefect(bytes);
 }
 
 // The process's umask, read without changing it (umask(2) can only set it, which would race with
@@ -243,6 +227,11 @@ std::mutex& LiveMutex() {
 std::vector<OutputSet::Staging*>& LiveStagings() {
     static auto* live = new std::vector<OutputSet::Staging*>;
     return *live;
+}
+// RemoveOnSignal's files, under LiveMutex.
+std::vector<fs::path>& SignalRemovals() {
+    static auto* removals = new std::vector<fs::path>;
+    return *removals;
 }
 
 // Removes a staging directory that another thread of this process may still be writing into (a
@@ -522,6 +511,23 @@ void OutputSet::Commit() {
         CommitFileByFile();
 }
 
+namespace {
+
+// Syncs the directory that now names the published files: a directory this user cannot open
+// (EACCES, EPERM) or a file system that cannot sync one (EINVAL, EROFS, ENOTSUP) is passed over,
+// any other failure (EIO: the disk lost the renames) throws std::runtime_error, so that the run
+// fails rather than report files that a power loss may take.
+void SyncPublished(const fs::path& dir) {
+    if (SyncPath(dir, true)) return;
+    for (const int passed : {EACCES, EPERM, EINVAL, EROFS, ENOTSUP})
+        if (errno == passed) return;
+    throw std::runtime_error(dir.string() + ": the files are in place, but syncing the directory " +
+                             "failed (" + ErrnoText(errno) +
+                             "): they may not survive a power loss");
+}
+
+}  // namespace
+
 void OutputSet::CommitWholeDirectory() {
     // The staging directory becomes DIR: give it the mode mkdir would have (mkdtemp made 0700).
     ::chmod(stagingDir_.c_str(), 0777 & ~ProcessUmask());
@@ -530,7 +536,7 @@ void OutputSet::CommitWholeDirectory() {
         staging_->dir.clear();
         // The lock was the staging directory's; DIR must not stay locked (a next run locks it).
         if (staging_->lockFd >= 0) ::close(std::exchange(staging_->lockFd, -1));
-        SyncPath(outDir_.has_parent_path() ? outDir_.parent_path() : fs::path("."), true);
+        SyncPublished(outDir_.has_parent_path() ? outDir_.parent_path() : fs::path("."));
         return;
     }
     const int reason = errno;
@@ -604,7 +610,7 @@ void OutputSet::CommitFileByFile() {
                                  ErrnoText(reason) + "); " + outcome);
     }
     staging_->committed = true;
-    SyncPath(outDir_, true);
+    SyncPublished(outDir_);
 }
 
 namespace {
@@ -635,6 +641,11 @@ const char* SignalName(int signal) {
         discarded = discarded || (!staging->dir.empty() && !staging->committed);
         staging->Discard();
     }
+    for (const fs::path& path : SignalRemovals()) {
+        struct stat st {};
+        if (::lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size == 0)
+            ::unlink(path.c_str());
+    }
     std::string line = std::string(::isatty(STDERR_FILENO) ? "\n" : "") +
                        "lexel: error: interrupted by " + SignalName(signal) +
                        (discarded ? "; no --out file was written" : "") + "\n";
@@ -647,6 +658,35 @@ const char* SignalName(int signal) {
 }
 
 }  // namespace
+
+std::string PngBytesDefect(const std::string& bytes) {
+    static const char kSignature[] = "\x89PNG\r\n\x1a\n";
+    if (bytes.size() < 8 || bytes.compare(0, 8, kSignature, 8) != 0)
+        return std::to_string(bytes.size()) + " bytes without the PNG signature";
+    constexpr std::size_t kChunkOverhead = 12;  // length, type, CRC
+    std::size_t at = 8;
+    for (bool first = true; at + kChunkOverhead <= bytes.size(); first = false) {
+        const std::uint64_t length = BigEndian32(bytes, at);
+        const std::string type = bytes.substr(at + 4, 4);
+        if (first && type != "IHDR") return "the first chunk is not IHDR";
+        at += kChunkOverhead + length;
+        if (at > bytes.size()) break;
+        if (type == "IEND") return at == bytes.size() ? "" : "bytes follow the IEND chunk";
+    }
+    return "truncated: " + std::to_string(bytes.size()) + " bytes end before the IEND chunk";
+}
+
+void RemoveOnSignal(const fs::path& path) {
+    const std::lock_guard live(LiveMutex());
+    SignalRemovals().push_back(path);
+}
+
+void ForgetOnSignal(const fs::path& path) {
+    const std::lock_guard live(LiveMutex());
+    std::vector<fs::path>& removals = SignalRemovals();
+    if (const auto at = std::find(removals.begin(), removals.end(), path); at != removals.end())
+        removals.erase(at);
+}
 
 void StopCleanlyOnSignals() {
     sigset_t signals;

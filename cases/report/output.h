@@ -125,4 +125,15 @@ class OutputSet {
 // before any other thread starts: the signals are blocked in every thread made after it.
 void StopCleanlyOnSignals();
 
+// Why `bytes` are not a complete PNG image, or empty when they are one: the 8-byte signature,
+// then chunks (4-byte length, 4-byte type, data, 4-byte CRC) from IHDR to IEND filling them
+// exactly (PNG specification, 2nd ed., sections 5.2-5.3). The CRCs are not checked.
+std::string PngBytesDefect(const std::string& bytes);
+
+// A file this process made beside an --out and removes itself when done (the empty journal a
+// SweepExclusion holds): until ForgetOnSignal(path), a signal that StopCleanlyOnSignals takes
+// removes it too, when it is still an empty regular file.
+void RemoveOnSignal(const std::filesystem::path& path);
+void ForgetOnSignal(const std::filesystem::path& path);
+
 }  // namespace lexel::cases

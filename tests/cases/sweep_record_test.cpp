@@ -4,17 +4,27 @@
 #include "lexel/cases/report/sweep_record.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <bit>
 #include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 
 #include "lexel/cases/load/sweep_record_reader.h"
+#include "lexel/cases/report/sweep_journal.h"
 #include "lexel/cases/run/sweep_share.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {
 namespace {
+
+namespace fs = std::filesystem;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -219,6 +229,156 @@ TEST(SweepJournal, LinesReadBackIntoTheFinishedLights) {
     EXPECT_EQ(done.lights[1].cells[1].winner, "lispsm-tight");
     EXPECT_TRUE(std::isnan(done.lights[1].cells[0].footprintMean));
     EXPECT_EQ(done.study.at({4, 1}).misclassified, std::vector<double>{41.0625});
+}
+
+// A scratch directory of this test, removed after it.
+class SweepJournalFile : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        std::string pattern = (fs::temp_directory_path() / "lexel_journal_test_XXXXXX").string();
+        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+        dir_ = pattern;
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    // The message of the InputError that making a journal at `path` throws, or "no error".
+    static std::string Refusal(const fs::path& path, bool resume, SweepShard shard = {}) {
+        try {
+            const SweepJournal journal(path, WholeRecord(3).identity, shard, resume);
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "no error";
+    }
+    fs::path dir_;
+};
+
+// Before: a link at the journal's path was followed, its target truncated and then the link
+// removed, so a user's file was lost.
+TEST_F(SweepJournalFile, ALinkAtItsPathIsRefusedAndItsTargetKept) {
+    const fs::path target = dir_ / "precious.txt";
+    std::ofstream(target) << "a user's file\n";
+    const fs::path path = SweepJournal::PathFor(dir_ / "out");
+    fs::create_symlink(target, path);
+    for (const bool resume : {false, true})
+        EXPECT_EQ(Refusal(path, resume),
+                  "--out: " + path.string() +
+                      ": is a symbolic link (lexel opens no file beside --out through a link; "
+                      "remove it)");
+    std::ifstream in(target);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "a user's file\n");
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(path)));
+    // A dangling link too (before: exit 1).
+    fs::remove(target);
+    EXPECT_NE(Refusal(path, false).find(": is a symbolic link"), std::string::npos);
+}
+
+// Before: --resume blocked for ever on a FIFO, read a link to /dev/zero without a cap, and a
+// directory exited 1.
+TEST_F(SweepJournalFile, AFifoADirectoryOrAMissingParentIsRefusedAtOnce) {
+    const fs::path fifo = SweepJournal::PathFor(dir_ / "fifo");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(Refusal(fifo, true),
+              "--out: " + fifo.string() + ": is a FIFO (named pipe), not a resume journal");
+    const fs::path folder = SweepJournal::PathFor(dir_ / "folder");
+    fs::create_directory(folder);
+    EXPECT_EQ(Refusal(folder, true),
+              "--out: " + folder.string() + ": is a directory, not a resume journal (remove it)");
+    const fs::path file = dir_ / "file";
+    std::ofstream(file) << "x";
+    EXPECT_EQ(Refusal(file / ".j", false),
+              "--out: " + (file / ".j").string() +
+                  ": cannot create the resume journal (Not a directory)");
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    EXPECT_TRUE(fs::is_directory(folder));
+}
+
+// Before: a journal was read whole however large.
+TEST_F(SweepJournalFile, OneLargerThanTheCapIsRefusedUnread) {
+    const fs::path path = SweepJournal::PathFor(dir_ / "big");
+    { std::ofstream(path) << "x"; }
+    fs::resize_file(path, kMaxSweepJournalBytes + 1);  // sparse: no disk taken
+    EXPECT_EQ(Refusal(path, true), "--resume: " + path.string() + ": larger than " +
+                                       std::to_string(kMaxSweepJournalBytes) +
+                                       " bytes, the most a resume journal may be");
+    EXPECT_EQ(fs::file_size(path), kMaxSweepJournalBytes + 1);  // left as it is
+}
+
+// Before: journal lines for lights outside the sweep counted as "done".
+TEST_F(SweepJournalFile, LinesForLightsOutsideTheShardAreRefused) {
+    const SweepRecord whole = WholeRecord(3);
+    const fs::path path = SweepJournal::PathFor(dir_ / "share");
+    const auto write = [&](const SweepLightRecord& light) {
+        std::ofstream(path) << JournalHeaderLine(whole.identity, {0, 2}) << JournalLightLine(light);
+    };
+    write(whole.lights[2]);  // light 2 is shard 0/2's
+    EXPECT_EQ(Refusal(path, true, {0, 2}), "no error");
+    write(whole.lights[1]);
+    EXPECT_EQ(Refusal(path, true, {0, 2}),
+              "--resume: " + path.string() +
+                  ":2: light 1 is not in this run's lights (shard 0/2 of 3 lights): a damaged "
+                  "journal");
+    SweepLightRecord beyond = whole.lights[2];
+    beyond.index = 4;
+    write(beyond);
+    EXPECT_NE(Refusal(path, true, {0, 2}).find(":2: light 4 is not in this run's lights"),
+              std::string::npos);
+}
+
+// Before: a full disk when the journal was made left an empty journal behind.
+TEST_F(SweepJournalFile, OneThatCannotBeWrittenIsRemoved) {
+    const fs::path path = SweepJournal::PathFor(dir_ / "full");
+    struct rlimit before {};
+    ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &before), 0);
+    const auto previous = std::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails, EFBIG
+    struct rlimit limit = before;
+    limit.rlim_cur = 16;
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limit), 0);
+    std::string error = "no error";
+    try {
+        const SweepJournal journal(path, WholeRecord(3).identity, {}, false);
+    } catch (const std::runtime_error& e) {
+        error = e.what();
+    }
+    ::setrlimit(RLIMIT_FSIZE, &before);
+    std::signal(SIGXFSZ, previous);
+    EXPECT_EQ(error, path.string() + ": cannot write the resume journal (File too large)");
+    EXPECT_FALSE(fs::exists(fs::symlink_status(path)));
+}
+
+// A run, merge or storage into DIR and a sweep into DIR never run at once, in either order; the
+// empty journal a SweepExclusion made is gone after it, and a sweep's is kept.
+TEST_F(SweepJournalFile, ASweepAndAnotherCommandIntoOneDirectoryExcludeEachOther) {
+    const fs::path out = dir_ / "out";
+    const fs::path path = SweepJournal::PathFor(out);
+    const std::string held =
+        "--out: another lexel command writing into this directory is "
+        "running (it holds the resume journal " +
+        path.string() + ")";
+    {
+        const SweepExclusion run(out);
+        const SweepExclusion merge(out);  // two non-sweeps may share DIR, as before
+        EXPECT_TRUE(fs::is_regular_file(path));
+        EXPECT_EQ(Refusal(path, false), held);
+    }
+    EXPECT_FALSE(fs::exists(path));
+    {
+        const SweepJournal sweep(path, WholeRecord(3).identity, {}, false);
+        try {
+            const SweepExclusion run(out);
+            ADD_FAILURE() << "a run while a sweep holds the journal";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), held);
+        }
+    }
+    // A killed sweep's journal (with lines) outlives a run into DIR.
+    std::ofstream(path) << JournalHeaderLine(WholeRecord(3).identity, {});
+    { const SweepExclusion run(out); }
+    EXPECT_GT(fs::file_size(path), 0u);
+    // A link at the path is refused, not followed.
+    fs::remove(path);
+    fs::create_symlink(dir_ / "elsewhere", path);
+    EXPECT_THROW(SweepExclusion{out}, InputError);
+    EXPECT_FALSE(fs::exists(dir_ / "elsewhere"));
 }
 
 }  // namespace
