@@ -37,6 +37,7 @@
 
 #include "lexel/cases/app/commands.h"
 #include "lexel/cases/app/error_model_command.h"
+#include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/solvers/errors.h"
@@ -133,7 +134,7 @@ Command RegisterSweep(CLI::App& app) {
         ->check(CLI::ExistingFile);
     sweep
         ->add_option("--lights", flags->lights, "Number of hemisphere lights (default: the case's)")
-        ->check(CLI::Range(1, 100000));
+        ->check(CLI::Range(1LL, cases::kMaxSweepLights));
     sweep
         ->add_option("--light-type", flags->lightType,
                      "Sweep point or directional lights (default: the case's light_sweep type)")

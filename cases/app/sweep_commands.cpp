@@ -17,6 +17,7 @@
 #include "lexel/cases/app/progress.h"
 #include "lexel/cases/load/case_methods.h"
 #include "lexel/cases/load/flatland_case.h"
+#include "lexel/cases/load/hostile_file.h"
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/cases/load/published.h"
 #include "lexel/cases/load/spatial_case.h"
@@ -224,10 +225,11 @@ std::vector<spatial::Light> SweepLightsFor(const fs::path& casePath, const spati
 
 std::vector<std::size_t> ShareOf(std::size_t lights, SweepShard shard) {
     std::vector<std::size_t> indices = ShardLights(lights, shard);
-    if (indices.empty())
+    if (indices.empty() || shard.count > lights)
         throw InputError("--shard " + ShardText(shard) + ": the sweep has " +
-                         std::to_string(lights) + " lights, so this shard has none (give " +
-                         "at most " + std::to_string(lights) + " shards)");
+                         std::to_string(lights) + " lights, fewer than its " +
+                         std::to_string(shard.count) + " shards (give at most " +
+                         std::to_string(lights) + " shards)");
     return indices;
 }
 
@@ -303,11 +305,22 @@ int SweepCommand(const SweepFlags& flags) {
 
 namespace {
 
-// Copies `from` into the staging directory as `name`, byte for byte.
-void StageCopy(OutputSet& out, const fs::path& from, const std::string& name) {
-    std::error_code error;
-    if (!fs::copy_file(from, out.Staged(name), error))
-        throw std::runtime_error(from.string() + ": cannot copy (" + error.message() + ")");
+// The most bytes a shard's first-light image may have (a 16384² RGBA image compresses below it).
+constexpr std::uintmax_t kMaxShardImageBytes = std::uintmax_t{1} << 30;
+
+// The bytes of a shard's first-light image `file` in `dir`, read as every file beside an --out
+// is: its name one the sweep writes (`<case>_light...png`), never through a symbolic link, a
+// regular file of at most kMaxShardImageBytes and a complete PNG. InputError naming it otherwise.
+std::string ReadShardImage(const fs::path& dir, const std::string& file,
+                           const std::string& caseName) {
+    const std::string shown = "merge: " + (dir / file).string();
+    if (!file.starts_with(caseName + "_light"))
+        throw InputError(shown + ": the record names an image that a sweep of " + caseName +
+                         " does not write");
+    std::string bytes = ReadHostileFile(dir / file, kMaxShardImageBytes, shown);
+    if (const std::string defect = PngBytesDefect(bytes); !defect.empty())
+        throw InputError(shown + ": not a complete PNG image (" + defect + ")");
+    return bytes;
 }
 
 }  // namespace
@@ -317,6 +330,13 @@ int MergeCommand(const MergeFlags& flags) {
     for (const std::string& dir : flags.dirs) records.push_back(ReadSweepRecord(dir));
     const MergedSweep merged = MergeRecords(records, flags.dirs);
     const SweepIdentity& id = merged.record.identity;
+    // Every shard's images are checked, and the ones merged read, before anything is printed.
+    std::vector<std::string> imageBytes;
+    for (std::size_t d = 0; d < records.size(); ++d)
+        for (const SpatialImageFile& image : records[d].images) {
+            std::string bytes = ReadShardImage(flags.dirs[d], image.file, id.caseName);
+            if (static_cast<int>(d) == merged.imagesFrom) imageBytes.push_back(std::move(bytes));
+        }
     // No output may replace a shard's record or image (a shard directory given as --out).
     OutputPlan plan = SweepOutputPlan("", id.caseName);
     plan.inputs.clear();
@@ -325,6 +345,7 @@ int MergeCommand(const MergeFlags& flags) {
         for (const SpatialImageFile& image : records[d].images)
             plan.inputs.push_back(fs::path(flags.dirs[d]) / image.file);
     }
+    const SweepExclusion exclusion(flags.outDir);  // no sweep into --out meanwhile
     OutputSet out(flags.outDir, plan);
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
@@ -337,8 +358,8 @@ int MergeCommand(const MergeFlags& flags) {
                    " s of sweeping)");
     const auto stageImages = [&] {
         if (merged.imagesFrom < 0) return std::vector<SpatialImageFile>{};
-        for (const SpatialImageFile& image : merged.record.images)
-            StageCopy(out, fs::path(flags.dirs[merged.imagesFrom]) / image.file, image.file);
+        for (std::size_t i = 0; i < merged.record.images.size(); ++i)
+            out.WriteText(merged.record.images[i].file, imageBytes[i]);
         return merged.record.images;
     };
     const std::string written = StageSweepFiles(

@@ -387,7 +387,7 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
         sweep.ExpectObject({}, {"count", "seed", "radius", "type"});
         spatial::LightSweep lightSweep;
         if (sweep.Has("count"))
-            lightSweep.count = static_cast<int>(sweep["count"].Integer(1, 100000));
+            lightSweep.count = static_cast<int>(sweep["count"].Integer(1, kMaxSweepLights));
         if (sweep.Has("seed"))
             lightSweep.seed = static_cast<std::uint64_t>(
                 sweep["seed"].Integer(0, std::numeric_limits<long long>::max()));

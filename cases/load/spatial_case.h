@@ -21,6 +21,8 @@ namespace lexel::cases {
 
 // Screen, readback and shadow-map sides are at most this many pixels or texels.
 inline constexpr long long kMaxSide = 16384;
+// The most lights a sweep holds (light_sweep.count, `sweep --lights`, a sweep record's lights).
+inline constexpr long long kMaxSweepLights = 100000;
 // optimizer.max_samples is at most this: every readback pixel of the largest readback (a budget
 // never thins beyond the samples there are, so a larger one would mean no budget).
 inline constexpr long long kMaxOptimizerSamples = kMaxSide * kMaxSide;

@@ -1,13 +1,15 @@
 #include "lexel/cases/load/sweep_record_reader.h"
 
-#include <fstream>
-#include <iterator>
+#include <algorithm>
 #include <limits>
 
+#include "lexel/cases/load/hostile_file.h"
 #include "lexel/cases/load/json_reader.h"
+#include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/report/sweep_record.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
+#include "lexel/spatial/partitions.h"
 
 namespace lexel::cases {
 
@@ -44,11 +46,12 @@ SweepShard ParseShardText(const JsonField& field) {
             std::size_t used = 0;
             const unsigned long k = std::stoul(text.substr(0, slash), &used);
             const unsigned long n = std::stoul(text.substr(slash + 1));
-            if (used == slash && n >= 1 && k < n) return {k, n};
+            if (used == slash && n >= 1 && k < n && n <= kMaxSweepLights) return {k, n};
         }
     } catch (const std::exception&) {
     }
-    field.Fail("must be \"K/N\" with 0 <= K < N, got \"" + text + "\"");
+    field.Fail("must be \"K/N\" with 0 <= K < N <= " + std::to_string(kMaxSweepLights) +
+               ", got \"" + text + "\"");
 }
 
 SweepIdentity ParseIdentity(const JsonField& f) {
@@ -59,14 +62,14 @@ SweepIdentity ParseIdentity(const JsonField& f) {
     id.caseHash = f["case_fnv1a64"].String();
     id.methods = Strings(f["methods"]);
     id.backend = f["backend"].String();
-    id.cascades = static_cast<int>(f["cascades"].Integer(0, 1 << 20));
+    id.cascades = static_cast<int>(f["cascades"].Integer(0, spatial::kMaxCascades));
     id.phases = static_cast<int>(f["phases"].Integer(1, spatial::kMaxPhases));
     id.maxPhases = static_cast<int>(f["max_phases"].Integer(id.phases, spatial::kMaxPhases));
     id.shimmerPoses = static_cast<int>(f["shimmer_poses"].Integer(0, kMaxShimmerPoses));
     if (id.shimmerPoses == 1)
         f["shimmer_poses"].Fail("must be 0 (none) or 2 ... " + std::to_string(kMaxShimmerPoses) +
                                 ", got 1");
-    id.lights = static_cast<std::size_t>(f["lights"].Integer(0, kMaxCount));
+    id.lights = static_cast<std::size_t>(f["lights"].Integer(1, kMaxSweepLights));
     id.lightsHash = f["lights_fnv1a64"].String();
     return id;
 }
@@ -165,20 +168,6 @@ SpatialImageFile ParseImage(const JsonField& f) {
     return image;
 }
 
-std::string ReadAll(const fs::path& path, const std::string& shown) {
-    std::error_code error;
-    if (!fs::is_regular_file(path, error))
-        throw InputError(shown + ": not found (is " + path.parent_path().string() +
-                         " the --out directory of a lexel sweep?)");
-    if (fs::file_size(path, error) > kMaxSweepRecordBytes)
-        throw InputError(shown + ": larger than " + std::to_string(kMaxSweepRecordBytes) +
-                         " bytes");
-    std::ifstream in(path, std::ios::binary);
-    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (!in.eof() && in.fail()) throw InputError(shown + ": cannot be read");
-    return text;
-}
-
 SweepRecord ParseRecord(const nlohmann::json& doc) {
     const JsonField f(doc, "");
     f.ExpectObject({"format", "identity", "shard", "seconds", "cell_fields", "study_counts",
@@ -193,8 +182,15 @@ SweepRecord ParseRecord(const nlohmann::json& doc) {
     if (fields !=
         std::vector<std::string>(std::begin(kSweepCellFields), std::end(kSweepCellFields)))
         f["cell_fields"].Fail("are not this lexel's cell fields (a record of another version?)");
-    for (const JsonField& k : f["study_counts"].Array())
-        r.studyCounts.push_back(static_cast<int>(k.Integer(1, 1 << 20)));
+    const std::vector<int> extraCounts = CascadeStudyExtraCounts(r.identity.cascades);
+    for (const JsonField& k : f["study_counts"].Array()) {
+        r.studyCounts.push_back(static_cast<int>(k.Integer(1, spatial::kMaxCascades)));
+        if (std::find(extraCounts.begin(), extraCounts.end(), r.studyCounts.back()) ==
+                extraCounts.end() ||
+            (r.studyCounts.size() > 1 && r.studyCounts.back() <= r.studyCounts.rbegin()[1]))
+            k.Fail("must be a count of the partitions study beside cascades " +
+                   std::to_string(r.identity.cascades) + ", increasing");
+    }
     for (const JsonField& image : f["first_light_images"].Array())
         r.images.push_back(ParseImage(image));
     const std::size_t studyMethods = CascadeStudyMethods(r.identity.methods).size();
@@ -205,6 +201,11 @@ SweepRecord ParseRecord(const nlohmann::json& doc) {
         r.lights.push_back(ParseLight(lights[l], value, r.identity.methods.size(), true));
         if (l > 0 && r.lights[l].index <= r.lights[l - 1].index)
             lights[l]["index"].Fail("must increase from light to light");
+        if (r.lights[l].index >= r.identity.lights ||
+            r.lights[l].index % r.shard.count != r.shard.index)
+            lights[l]["index"].Fail("must be a light of shard " + ShardText(r.shard) + " of " +
+                                    std::to_string(r.identity.lights) + " lights, got " +
+                                    std::to_string(r.lights[l].index));
         const std::vector<JsonField> study = lights[l]["study"].Array();
         if (study.size() != r.studyCounts.size())
             lights[l]["study"].Fail("must have one entry per study count (" +
@@ -228,7 +229,10 @@ SweepRecord ParseSweepRecord(const std::string& text, const std::string& source)
 
 SweepRecord ReadSweepRecord(const fs::path& dir) {
     const fs::path path = dir / "sweep-record.json";
-    return ParseSweepRecord(ReadAll(path, path.string()), path.string());
+    const std::string text =
+        ReadHostileFile(path, kMaxSweepRecordBytes, path.string(),
+                        " (is " + dir.string() + " the --out directory of a lexel sweep?)");
+    return ParseSweepRecord(text, path.string());
 }
 
 JournalHeader ParseJournalHeader(const std::string& line, const std::string& source) {

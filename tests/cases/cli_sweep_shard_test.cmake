@@ -97,7 +97,7 @@ foreach(bad "3/3" "0/0" "1" "a/b" "-1/3" "1/3x" "/3" "1/")
     expect_run(2 "^$" "^lexel: error: --shard: must be K/N with N >= 1 and K = 0 ... N-1 \\(light i belongs to shard i mod N\\), got '${bad}'\n$"
                ${sweep} --shard "${bad}" --out "${WORK}/refused")
 endforeach()
-expect_run(2 "^$" "^lexel: error: --shard 6/7: the sweep has 6 lights, so this shard has none [^\n]*\n$"
+expect_run(2 "^$" "^lexel: error: --shard 6/7: the sweep has 6 lights, fewer than its 7 shards [^\n]*\n$"
            ${sweep} --shard 6/7 --out "${WORK}/refused")
 expect_run(2 "^$" "^lexel: error: --resume: [^\n]*give --out\n$" ${sweep} --resume)
 if(EXISTS "${WORK}/refused" OR EXISTS "${WORK}/.refused.lexel-sweep-journal")
@@ -109,7 +109,7 @@ find_program(FLOCK flock)
 if(FLOCK)
     execute_process(COMMAND "${FLOCK}" "${WORK}/.locked.lexel-sweep-journal" "${LEXEL}" ${sweep} --out "${WORK}/locked"
                     RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_QUIET)
-    if(NOT code EQUAL 2 OR NOT err MATCHES "^lexel: error: --out: another lexel sweep into this directory is running \\(it holds the resume journal [^\n]*locked\\.lexel-sweep-journal\\)\n$"
+    if(NOT code EQUAL 2 OR NOT err MATCHES "^lexel: error: --out: another lexel command writing into this directory is running \\(it holds the resume journal [^\n]*locked\\.lexel-sweep-journal\\)\n$"
        OR EXISTS "${WORK}/locked")
         message(FATAL_ERROR "a sweep into a directory whose journal is locked: exit ${code}: ${err}")
     endif()
