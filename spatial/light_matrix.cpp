@@ -164,6 +164,9 @@ std::optional<LightMatrix> FitMapToPlanePoints(const glm::dvec3& p4,
     m.p4 = p4;
     detail::AffineRowsFromFrame(&p4[0], &b1[0], &b2[0], frame, map, options.margin, &m.p1[0],
                                 &m.p2[0]);
+    // Rows that overflow (plane coordinates near the largest double) are no map.
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(m.p1[i]) || !std::isfinite(m.p2[i])) return std::nullopt;
     return m;
 }
 

@@ -98,7 +98,9 @@ struct FitOptions {
 // map it, grown by options.margin, onto [0, width] × [0, height] texels. With options.shear the
 // minimum-area enclosing parallelogram instead (the report's Fig. 3 shear, exact; the rows and
 // their long-side rule in light_matrix.cpp). A zero extent gets a sliver (1e-9 of the other) so
-// the map stays invertible. nullopt when a point is not InFront of p4 or there are no points.
+// the map stays invertible (points that all project to one point get one of 1e-9 of their
+// distance from the plane's origin, or of 1). nullopt when a point is not InFront of p4, there
+// are no points, or the rows would not be finite.
 std::optional<LightMatrix> FitMapToPoints(const glm::dvec3& p4,
                                           std::span<const glm::dvec3> lsPoints, Resolution map,
                                           const FitOptions& options = {});

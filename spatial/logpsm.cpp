@@ -85,6 +85,7 @@ Resolution SplitTexels(Resolution map, double ratio) {
     const double texels = static_cast<double>(map.width) * map.height;
     if (!(ratio > 0.0) || !std::isfinite(ratio)) return map;
     const double limit = std::min<double>(kMaxSide, std::floor(texels / kLogPsmMinSide));
+    if (limit < kLogPsmMinSide) return map;  // too few texels for two sides of kLogPsmMinSide
     const int mx = static_cast<int>(
         std::clamp(std::round(std::sqrt(texels * ratio)), double(kLogPsmMinSide), limit));
     const int mz = static_cast<int>(std::min<double>(kMaxSide, std::floor(texels / mx)));

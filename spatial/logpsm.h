@@ -42,7 +42,8 @@
 
 namespace lexel::spatial {
 
-// The smallest side a LogPSM map is given, texels (its aspect rule could ask for less).
+// The smallest side a LogPSM map is given, texels (its aspect rule could ask for less); a map of
+// fewer than kLogPsmMinSide² texels keeps its own sides.
 inline constexpr int kLogPsmMinSide = 16;
 
 struct LogPsmMap {

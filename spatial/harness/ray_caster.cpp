@@ -49,7 +49,21 @@ void ThrowOnEmbreeError(RTCDevice device, const char* what) {
     throw std::runtime_error(std::string("ray caster: ") + what + ": " + message);
 }
 
+// Embree asserts on a ray it cannot trace (Debian's build aborts the process): a non-finite
+// origin or direction, or a NaN extent, is refused here instead (a map that was not finite
+// upstream); tFar may be +inf (a directional light's shadow ray).
+void CheckRay(const ShadowRay& r) {
+    const bool finite = std::isfinite(r.unitOrigin.x) && std::isfinite(r.unitOrigin.y) &&
+                        std::isfinite(r.unitOrigin.z) && std::isfinite(r.direction.x) &&
+                        std::isfinite(r.direction.y) && std::isfinite(r.direction.z) &&
+                        std::isfinite(r.tNear) && !std::isnan(r.tFar);
+    if (!finite)
+        throw std::invalid_argument(
+            "ray caster: a ray with a non-finite origin, direction or extent");
+}
+
 void InitRay(RTCRay& ray, const ShadowRay& r) {
+    CheckRay(r);
     ray.org_x = r.unitOrigin.x;
     ray.org_y = r.unitOrigin.y;
     ray.org_z = r.unitOrigin.z;
@@ -201,6 +215,7 @@ void FillPacket(RTCRay16& packet, int* valid, std::span<const ShadowRay> rays, s
                 std::size_t count) {
     for (std::size_t i = 0; i < kPacketSize; ++i) {
         const ShadowRay& r = rays[first + std::min(i, count - 1)];
+        if (i < count) CheckRay(r);
         valid[i] = i < count ? -1 : 0;
         packet.org_x[i] = r.unitOrigin.x;
         packet.org_y[i] = r.unitOrigin.y;

@@ -440,7 +440,8 @@ void BindClipMatrices(py::module_& m) {
                 FitMapToPoints(ToVec3(p4, "p4"), ls, ToResolution(map, "map"), options);
             if (!l)
                 throw py::value_error(
-                    "ls_points: empty, or a point is not in front of the plane p4 . X = 0");
+                    "ls_points: empty, a point not in front of the plane p4 . X = 0, or a fit "
+                    "whose rows are not finite");
             return *l;
         },
         py::arg("p4"), py::arg("ls_points"), py::arg("map"), py::arg("margin") = 0.0,

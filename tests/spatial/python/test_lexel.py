@@ -470,6 +470,22 @@ class ArraysTest(unittest.TestCase):
             np.testing.assert_allclose(getattr(again, row), getattr(self.matrix, row),
                                        rtol=1e-12, atol=1e-12)
 
+    def test_fit_to_one_point_is_finite(self):
+        # One point, or several that coincide, have no extent: the fit gets a sliver of 1e-9 of
+        # the point's distance from the plane's origin instead (before: p1, p2 of NaN and -inf,
+        # and a NaN clip matrix). The point maps to the map's centre (to rounding: the rows are
+        # about 1e11 texels a plane unit).
+        p4 = self.matrix.p4
+        ls = self.light_space.to_light(self.points[:1])
+        for points in (ls, np.repeat(ls, 3, axis=0)):
+            fit = lexel.fit_map_to_points(p4, points, (512, 512))
+            for row in ("p1", "p2", "p4"):
+                self.assertTrue(np.all(np.isfinite(getattr(fit, row))), row)
+            np.testing.assert_allclose(fit.map(points), [[256.0, 256.0]] * len(points),
+                                       atol=1e-3)
+            clip = lexel.clip_from_world(self.light_space, fit, (512, 512), (1.0, 50.0))
+            self.assertTrue(np.all(np.isfinite(clip)))
+
     def test_clip_depth_conventions(self):
         near_far = (5.0, 40.0)
         zo = lexel.clip_from_world(self.light_space, self.matrix, (512, 512), near_far)
