@@ -1,17 +1,23 @@
 #include "lexel/cases/load/json_reader.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <new>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "lexel/cases/load/memory_budget.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/allocation_cap.h"
 
 namespace lexel::cases {
 
@@ -230,6 +236,63 @@ NumberOverflow LocateNumberOverflow(const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+// The most bytes parsing may take, beside the text: nlohmann's document of the worst text (empty
+// arrays, "[],": 3 bytes each become a 16-byte value and a 32-byte vector, and the parent's vector
+// doubles) needs about 40 bytes a byte; kParseBytesPerTextByte leaves room above that.
+constexpr std::size_t kParseBytesPerTextByte = 64, kParseBaseBytes = std::size_t{64} << 20;
+
+// A number from /proc (`file`'s line starting with `key`, in kB) as bytes; 0 when not there.
+std::size_t ProcBytes(const char* file, std::string_view key) {
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);)
+        if (line.starts_with(key)) return std::stoull(line.substr(key.size())) * 1024;
+    return 0;
+}
+
+// What this process can still take: the address space left under its limit (ulimit -v) and the
+// memory the machine has available, three quarters of the smaller (a quarter kept for
+// fragmentation and what the rest of the process takes); unbounded where neither says.
+std::size_t MemoryLeft() {
+    std::size_t left = std::numeric_limits<std::size_t>::max();
+    struct rlimit limit {};
+    if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+        const std::size_t used = ProcBytes("/proc/self/status", "VmSize:");
+        left = limit.rlim_cur > used ? limit.rlim_cur - used : 0;
+    }
+    if (const std::size_t available = ProcBytes("/proc/meminfo", "MemAvailable:"); available > 0)
+        left = std::min(left, available);
+    return left == std::numeric_limits<std::size_t>::max() ? left : left / 4 * 3;
+}
+
+// nlohmann's DOM of `text` under a ScopedAllocationCap: the cap refuses before the machine does,
+// so the parse unwinds (nlohmann's destructor allocates as it frees) and the refusal is one
+// InputError instead of std::terminate.
+nlohmann::json ParseUnderCap(const std::string& text, const std::string& sourceName) {
+    // Half of what is left for the parse, the other half open for its unwinding.
+    const std::size_t cap =
+        std::min(MemoryLeft() / 2, kParseBaseBytes + kParseBytesPerTextByte * text.size());
+    std::optional<nlohmann::json> document;
+    bool refused = false;
+    {
+        const spatial::ScopedAllocationCap scope(cap, cap);
+        try {
+            document = nlohmann::json::parse(text, DuplicateKeyCheck(sourceName));
+        } catch (const std::bad_alloc&) {
+            refused = true;
+        }
+        refused = refused || scope.Refused();
+    }
+    if (refused || !document)
+        throw InputError(sourceName + ": " + std::to_string(text.size()) +
+                         " bytes of JSON need more memory than this machine gives (" +
+                         FormatBytes(static_cast<double>(cap)) + " were free to parse them)");
+    return std::move(*document);
+}
+
+}  // namespace
+
 nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceName) {
     // nlohmann's lexer takes a NUL byte for the end of the input, so `{...}\0garbage` would parse.
     if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
@@ -240,7 +303,7 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& sourceN
                          ": invalid JSON: a NUL byte (a case file is text)");
     }
     try {
-        return nlohmann::json::parse(text, DuplicateKeyCheck(sourceName));
+        return ParseUnderCap(text, sourceName);
     } catch (const nlohmann::json::parse_error& e) {
         // Line and column of the offending byte (nlohmann reports a 1-based byte count).
         std::size_t line = 1, column = 1;

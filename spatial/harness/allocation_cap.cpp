@@ -20,19 +20,15 @@ struct ThreadCap {
     bool refused = false;
     long long heldBytes = 0;  // allocated minus freed on this thread during the scope
     long long capBytes = 0;
+    long long headroomBytes = 0;  // open above the cap once it has refused
 };
 constinit thread_local ThreadCap tCap;
-
-// Room above the cap once it has refused, for the refused code's error handling (an exception's
-// message, a log line) rather than a second std::bad_alloc thrown from a handler (bytes).
-constexpr long long kHeadroomAfterRefusal = 16LL << 20;
 
 // nullptr when the cap refuses or malloc fails. `alignment` 0: the default alignment.
 void* Allocate(std::size_t size, std::size_t alignment) noexcept {
     ThreadCap& cap = tCap;
     if (cap.active) {
-        const long long room =
-            cap.capBytes - cap.heldBytes + (cap.refused ? kHeadroomAfterRefusal : 0);
+        const long long room = cap.capBytes - cap.heldBytes + (cap.refused ? cap.headroomBytes : 0);
         if (room < 0 || size > static_cast<unsigned long long>(room)) {
             cap.refused = true;
             return nullptr;
@@ -63,10 +59,13 @@ void Free(void* block) noexcept {
 
 }  // namespace
 
-ScopedAllocationCap::ScopedAllocationCap(std::size_t bytes) {
+ScopedAllocationCap::ScopedAllocationCap(std::size_t bytes, std::size_t headroomAfterRefusal) {
     if (tCap.active) throw std::logic_error("ScopedAllocationCap: scopes do not nest");
-    tCap = ThreadCap{.active = true,
-                     .capBytes = static_cast<long long>(std::min<std::size_t>(bytes, 1ull << 62))};
+    constexpr std::size_t kMost = std::size_t{1} << 61;  // no sum of the two overflows
+    tCap =
+        ThreadCap{.active = true,
+                  .capBytes = static_cast<long long>(std::min(bytes, kMost)),
+                  .headroomBytes = static_cast<long long>(std::min(headroomAfterRefusal, kMost))};
 }
 
 ScopedAllocationCap::~ScopedAllocationCap() { tCap = ThreadCap{}; }

@@ -18,12 +18,16 @@ namespace lexel::spatial {
 
 class ScopedAllocationCap {
   public:
+    static constexpr std::size_t kDefaultHeadroomBytes = std::size_t{16} << 20;
     // Until destruction, an allocation on this thread that would take the bytes held by blocks
     // allocated on it (less those freed on it) during the scope above `bytes` is refused:
     // operator new throws std::bad_alloc and the nothrow forms return nullptr. After the first
-    // refusal 16 MiB above the cap stay open for the refused code's error handling. Scopes do
-    // not nest: a second on the same thread throws std::logic_error.
-    explicit ScopedAllocationCap(std::size_t bytes);
+    // refusal `headroomAfterRefusal` bytes above the cap stay open for the refused code's error
+    // handling (an exception's message; a destructor that allocates as it frees, as nlohmann's
+    // json does) rather than a second std::bad_alloc thrown where none may be. Scopes do not
+    // nest: a second on the same thread throws std::logic_error.
+    explicit ScopedAllocationCap(std::size_t bytes,
+                                 std::size_t headroomAfterRefusal = kDefaultHeadroomBytes);
     ~ScopedAllocationCap();
     ScopedAllocationCap(const ScopedAllocationCap&) = delete;
     ScopedAllocationCap& operator=(const ScopedAllocationCap&) = delete;
