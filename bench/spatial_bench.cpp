@@ -32,7 +32,9 @@
 //   - BM_WalkthroughFineReadbackBudget: `optimal` per light at a 720² readback, all samples and
 //     with the sample budget (OptimizerOptions::maxSamples), against 180², in one run;
 //   - BM_WalkthroughRunMemory: bytes per camera pixel that a run of the first light holds at
-//     its peak (issue 16; the flatland counterpart is flatland_bench's BM_RunMemory).
+//     its peak (issue 16; the flatland counterpart is flatland_bench's BM_RunMemory);
+//   - BM_PlyHeader: the PLY reader's header at 25k to 200k properties, with its fitted
+//     complexity (O(n); it was O(n^2): 200k properties took 67 s).
 //
 //   ./build/bench/spatial_bench --benchmark_counters_tabular=true
 //   ./build/bench/spatial_bench --benchmark_filter=Walkthrough --benchmark_min_time=0.2
@@ -55,6 +57,7 @@
 #include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/baselines.h"
 #include "lexel/spatial/depth_buffer.h"
+#include "lexel/spatial/harness/mesh_ply_reader.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/ray_caster.h"
 #include "lexel/spatial/harness/render_backend.h"
@@ -776,6 +779,25 @@ void BM_WalkthroughRunMemory(benchmark::State& state) {
     state.counters["camera_pixels"] = pixels;
 }
 BENCHMARK(BM_WalkthroughRunMemory)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
+// The PLY reader's header: a header of state.range(0) properties on one element, then a
+// tetrahedron, read whole (ReadPlyEncoding reads the header alone). Complexity: O(n) (each
+// property's name is checked against the element's earlier ones in a hash set).
+void BM_PlyHeader(benchmark::State& state) {
+    std::string text = "ply\nformat ascii 1.0\nelement extra 0\n";
+    for (long long p = 0; p < state.range(0); ++p)
+        text += "property float p" + std::to_string(p) + "\n";
+    text +=
+        "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face "
+        "1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    for (auto _ : state) benchmark::DoNotOptimize(lexel::spatial::ReadPlyEncoding(text));
+    state.SetComplexityN(state.range(0));
+}
+BENCHMARK(BM_PlyHeader)
+    ->RangeMultiplier(2)
+    ->Range(25000, 200000)
+    ->Complexity(benchmark::oN)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
 #include <limits>
@@ -437,6 +438,51 @@ void AppendInstance(const TriangleMesh& mesh, const glm::dmat4& sceneFromMesh, T
         out.triangles.push_back(mirrored ? glm::uvec3(t.x, t.z, t.y) + offset : t + offset);
 }
 
+// The documented refusal of a required extension that changes geometry (ChangesGeometry).
+void FailOnGeometryExtension(const std::string& extension) {
+    if (ChangesGeometry(extension))
+        Fail("it requires the extension '" + extension +
+             "' (compressed, quantized or GPU-instanced geometry), which lexel does not "
+             "read: write the file without it");
+}
+
+// What tinygltf would misread in the document, checked on its JSON first: a required extension
+// that changes geometry (tinygltf may refuse its buffers with a message of its own first), and
+// the integers it keeps in an int, "scene" and a sparse accessor's "count", which it would
+// truncate (2^40 read as 0) or take below their minimum (a scene of -1 read as none).
+void CheckDocument(const nlohmann::json& document) {
+    if (!document.is_object()) return;  // ReadGltfMesh reports what tinygltf finds wrong
+    if (const auto required = document.find("extensionsRequired");
+        required != document.end() && required->is_array())
+        for (const nlohmann::json& extension : *required)
+            if (extension.is_string()) FailOnGeometryExtension(extension.get<std::string>());
+    const auto checkInt = [](const nlohmann::json& value, long long least,
+                             const std::string& what) {
+        constexpr long long kMost = std::numeric_limits<std::int32_t>::max();
+        if (!value.is_number_integer() && !value.is_number_unsigned())
+            Fail(what + " is not an integer");
+        const bool inRange =
+            value.is_number_unsigned()
+                ? value.get<std::uint64_t>() <= std::uint64_t(kMost) &&
+                      value.get<std::uint64_t>() >= std::uint64_t(least)
+                : value.get<long long>() >= least && value.get<long long>() <= kMost;
+        if (!inRange)
+            Fail(what + " is " + value.dump() + ", not " + std::to_string(least) + " to 2^31 - 1");
+    };
+    if (const auto scene = document.find("scene"); scene != document.end())
+        checkInt(*scene, 0, "its \"scene\"");
+    const auto accessors = document.find("accessors");
+    if (accessors == document.end() || !accessors->is_array()) return;
+    for (std::size_t a = 0; a < accessors->size(); ++a) {
+        const nlohmann::json& accessor = (*accessors)[a];
+        if (!accessor.is_object()) continue;
+        const auto sparse = accessor.find("sparse");
+        if (sparse == accessor.end() || !sparse->is_object()) continue;
+        if (const auto count = sparse->find("count"); count != sparse->end())
+            checkInt(*count, 1, "accessor " + std::to_string(a) + "'s sparse count");
+    }
+}
+
 tinygltf::Model ParseModel(std::string_view bytes, bool binary,
                            const std::filesystem::path& directory, const GltfBufferFiles& files) {
     tinygltf::TinyGLTF loader;
@@ -454,10 +500,7 @@ tinygltf::Model ParseModel(std::string_view bytes, bool binary,
                                             static_cast<unsigned>(bytes.size()), baseDir);
     if (!ok) Fail(OneLine(error.empty() ? std::string("tinygltf refused it") : error));
     for (const std::string& extension : model.extensionsRequired)
-        if (ChangesGeometry(extension))
-            Fail("it requires the extension '" + extension +
-                 "' (compressed, quantized or GPU-instanced geometry), which lexel does not "
-                 "read: write the file without it");
+        FailOnGeometryExtension(extension);
     return model;
 }
 
@@ -473,6 +516,7 @@ GltfBufferFiles FindGltfBufferFiles(std::string_view bytes, bool binary,
              " deep, more than the " + std::to_string(kMaxGltfJsonDepth) + " read");
     GltfBufferFiles files;
     const nlohmann::json document = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
+    CheckDocument(document);
     if (!document.is_object() || !document.contains("buffers") || !document["buffers"].is_array())
         return files;  // ReadGltfMesh reports what tinygltf finds wrong
     const std::string baseDir = directory.empty() ? std::string(".") : directory.string();

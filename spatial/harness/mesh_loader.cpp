@@ -17,11 +17,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <new>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <system_error>
+#include <utility>
 
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/allocation_cap.h"
@@ -65,14 +68,19 @@ class RegularFileStream : public Assimp::DefaultIOStream {
 // for reading: a FIFO would block Assimp's fopen until a writer came (an OBJ whose mtllib named
 // one hung for ever), and opening a device can act on it. Each path is examined with stat before
 // it is opened, and the opened file again with fstat (it may have been replaced meanwhile); the
-// first refused path is kept for the error message.
+// first refused path is kept for the error message. A path that resolves (links followed) outside
+// `folder`, the mesh file's own, is absent to Assimp: a side file never comes from elsewhere (an
+// mtllib naming /dev/zero, a system file or ../../x), whatever the mesh's path spelling, since
+// Assimp is handed the mesh's canonical path and joins a side file's name to its folder.
 class RegularFileSystem : public Assimp::DefaultIOSystem {
   public:
-    bool Exists(const char* file) const override { return IsRegular(file); }
+    explicit RegularFileSystem(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+    bool Exists(const char* file) const override { return Inside(file) && IsRegular(file); }
 
     Assimp::IOStream* Open(const char* file, const char* mode) override {
         if (std::string_view(mode).find_first_of("wa+") != std::string_view::npos) return nullptr;
-        if (!IsRegular(file)) return nullptr;
+        if (!Inside(file) || !IsRegular(file)) return nullptr;
         const int fd = ::open(file, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
         if (fd < 0) return nullptr;
         struct stat st {};
@@ -94,6 +102,14 @@ class RegularFileSystem : public Assimp::DefaultIOSystem {
     const std::string& Refused() const { return refused_; }
 
   private:
+    // True when `file`, links resolved, lies in folder_ or below it.
+    bool Inside(const char* file) const {
+        std::error_code error;
+        const std::filesystem::path resolved = std::filesystem::weakly_canonical(file, error);
+        if (error) return false;
+        const std::filesystem::path relative = resolved.lexically_relative(folder_);
+        return !relative.empty() && *relative.begin() != "..";
+    }
     // False for a missing path and (kept in refused_) for one that is not a regular file.
     bool IsRegular(const char* file) const {
         struct stat st {};
@@ -106,6 +122,7 @@ class RegularFileSystem : public Assimp::DefaultIOSystem {
         if (refused_.empty()) refused_ = std::string(file) + ", " + FileKind(mode);
     }
 
+    std::filesystem::path folder_;  // canonical
     mutable std::string refused_;
 };
 
@@ -153,7 +170,12 @@ constexpr std::uintmax_t kReadBaseBytes = std::uintmax_t{64} << 20, kReadBytesPe
 // instead of gigabytes. Throws DomainError.
 const aiScene* ReadScene(Assimp::Importer& importer, const std::filesystem::path& path) {
     const std::string name = path.string();
-    auto* files = new RegularFileSystem;  // the importer owns and deletes it
+    std::error_code canonicalError;
+    const std::filesystem::path canonical = std::filesystem::canonical(path, canonicalError);
+    if (canonicalError)
+        throw DomainError(Subject::kGeometry,
+                          name + ": cannot read mesh: " + canonicalError.message());
+    auto* files = new RegularFileSystem(canonical.parent_path());  // the importer deletes it
     importer.SetIOHandler(files);
     const std::uintmax_t fileBytes = std::filesystem::file_size(path);
     const std::uintmax_t capBytes = kReadBaseBytes + kReadBytesPerFileByte * fileBytes;
@@ -168,7 +190,7 @@ const aiScene* ReadScene(Assimp::Importer& importer, const std::filesystem::path
             // file gave a mesh marked as polygons without one: tests/fuzz/seeds/mesh/
             // regress_ply_truncated.ply). So the file is read and validated first, its faces
             // checked, and only then post-processed.
-            scene = importer.ReadFile(name, aiProcess_ValidateDataStructure);
+            scene = importer.ReadFile(canonical.string(), aiProcess_ValidateDataStructure);
             if (scene != nullptr) error = ImporterSceneError(*scene, fileBytes);
             if (scene != nullptr && error.empty())
                 scene = importer.ApplyPostProcessing(

@@ -267,6 +267,13 @@ TEST(GltfReader, RefusesTheBrokenSamplesInOneLine) {
     for (const auto& [file, reason] : cases)
         EXPECT_EQ(LoadError(kModels / file),
                   (kModels / file).string() + ": cannot read glTF: " + reason);
+    // The Draco sample: the documented refusal, not tinygltf's "accessor[0] invalid bufferView".
+    const auto draco = kModels / "draco/2CylinderEngine.gltf";
+    EXPECT_EQ(LoadError(draco),
+              draco.string() +
+                  ": cannot read glTF: it requires the extension 'KHR_draco_mesh_compression' "
+                  "(compressed, quantized or GPU-instanced geometry), which lexel does not read: "
+                  "write the file without it");
     const auto missing = kModels / "MissingBin/BoxTextured.gltf";
     EXPECT_EQ(LoadError(missing), missing.string() + ": cannot read glTF: buffer 0's file " +
                                       (kModels / "MissingBin").string() +
@@ -301,6 +308,19 @@ TEST(GltfReader, RefusesBadAccessorsAndDocumentsInOneLine) {
     EXPECT_EQ(ReadError(Text(draco)),
               "it requires the extension 'KHR_draco_mesh_compression' (compressed, quantized or "
               "GPU-instanced geometry), which lexel does not read: write the file without it");
+    // Integers tinygltf keeps in an int: before, 2^40 was read as 0 and a scene of -1 as none.
+    Document scene = OnePrimitive(kTriangle, {});
+    scene.json["scene"] = 1099511627776LL;
+    EXPECT_EQ(ReadError(Text(scene)), "its \"scene\" is 1099511627776, not 0 to 2^31 - 1");
+    scene.json["scene"] = -1;
+    EXPECT_EQ(ReadError(Text(scene)), "its \"scene\" is -1, not 0 to 2^31 - 1");
+    Document sparse = OnePrimitive(kTriangle, {});
+    sparse.json["accessors"][0]["sparse"] = {
+        {"count", 1099511627776LL},
+        {"indices", {{"bufferView", 0}, {"componentType", 5125}}},
+        {"values", {{"bufferView", 0}}}};
+    EXPECT_EQ(ReadError(Text(sparse)),
+              "accessor 0's sparse count is 1099511627776, not 1 to 2^31 - 1");
     Document node = OnePrimitive(kTriangle, {});
     node.json["scenes"][0]["nodes"] = {3};
     EXPECT_EQ(ReadError(Text(node)), "node 3 does not exist (the file has 1)");

@@ -331,6 +331,30 @@ TEST(MeshLoader, RefusesPathsThatAreNotRegularFilesSayingWhatTheyAre) {
               dangling.string() + ": is a dangling symbolic link (mesh file not found)");
 }
 
+// A side file outside the mesh's folder (an absolute mtllib, "../", a system file) is absent to
+// the reader whatever the mesh's path spelling. Before: with a bare file name Assimp opened the
+// absolute mtllib itself (a FIFO refused the mesh, a system file's first line reached the error
+// message), while "./x.obj" or an absolute path joined it to the folder and loaded the mesh.
+TEST(MeshLoader, ASideFileOutsideTheMeshsFolderIsAbsentWhateverThePathSpelling) {
+    const ScratchDirectory scratch;
+    ASSERT_FALSE(scratch.Path().empty());
+    const auto folder = scratch.Path() / "model";
+    std::filesystem::create_directories(folder);
+    const auto fifo = scratch.Path() / "pipe.mtl";  // outside the model's folder
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const char* triangle = "v -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::ofstream(folder / "absolute.obj") << "mtllib " << fifo.string() << "\n" << triangle;
+    std::ofstream(folder / "parent.obj") << "mtllib ../pipe.mtl\n" << triangle;
+    std::ofstream(folder / "system.obj") << "mtllib /etc/passwd\n" << triangle;
+    const std::filesystem::path before = std::filesystem::current_path();
+    std::filesystem::current_path(folder);
+    for (const char* name : {"absolute.obj", "parent.obj", "system.obj"})
+        for (const std::filesystem::path& spelling :
+             {std::filesystem::path(name), std::filesystem::path(".") / name, folder / name})
+            EXPECT_EQ(LoadError(spelling), "no error") << spelling;
+    std::filesystem::current_path(before);
+}
+
 // Issue 24: an OBJ whose mtllib names a FIFO hung for ever (Assimp's default file system opened
 // it and waited for a writer). Now only regular files are opened, and the mesh is refused naming
 // what it would have opened. A watchdog opens the FIFO's write end after 10 s, which would free a
