@@ -52,7 +52,8 @@ std::optional<glm::dmat4> ParseCsvRow(const std::string& line, std::string* fail
         const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), v);
         if (token.empty() || error != std::errc() || end != token.data() + token.size() ||
             !std::isfinite(v)) {
-            *failure = "'" + token.substr(0, 32) + "' is not a finite number";
+            // Its position, not its text: the file may be any file a case names.
+            *failure = "cell " + std::to_string(numbers.size() + 1) + " is not a finite number";
             return std::nullopt;
         }
         numbers.push_back(v);
@@ -85,6 +86,8 @@ void ReadCsvMatrices(const JsonField& field, const std::filesystem::path& baseDi
     if (!in) field.Fail("cannot read " + path.string());
     std::string line;
     for (std::size_t number = 1; std::getline(in, line); ++number) {
+        // A UTF-8 byte order mark (spreadsheets write one) is skipped, as the JSON reader does.
+        if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
         const std::string text = Trimmed(line);
         if (text.empty() || text.front() == '#') continue;
         const std::string where = path.filename().string() + ":" + std::to_string(number);
@@ -159,15 +162,26 @@ std::string MatrixFailure(const glm::dmat4& clipFromWorld, const spatial::Light&
                           const spatial::Scene& scene, const spatial::Bounds& wsBounds) {
     // In the scene's unit frame, so that the test means the same at any scale and offset.
     const glm::dmat4 clipFromUnit = clipFromWorld * spatial::UnitFrameOf(wsBounds).WorldFromUnit();
-    double rowLengths = 1.0;
-    for (int r = 0; r < 4; ++r)
-        rowLengths *= glm::length(glm::dvec4(clipFromUnit[0][r], clipFromUnit[1][r],
-                                             clipFromUnit[2][r], clipFromUnit[3][r]));
-    const double det = glm::determinant(clipFromUnit);
-    const double ratio = rowLengths > 0.0 ? std::abs(det) / rowLengths : 0.0;  // ≤ 1 (Hadamard)
+    // |det| over the rows' lengths' product, ≤ 1 (Hadamard): the determinant of the rows made
+    // unit, so that no scale of the matrix overflows it (before: 1e76 times a map gave NaN).
+    glm::dmat4 unitRows = clipFromUnit;
+    for (int r = 0; r < 4; ++r) {
+        const glm::dvec4 row(clipFromUnit[0][r], clipFromUnit[1][r], clipFromUnit[2][r],
+                             clipFromUnit[3][r]);
+        const double largest =
+            std::max({std::abs(row.x), std::abs(row.y), std::abs(row.z), std::abs(row.w)});
+        const double length = largest > 0.0 ? largest * glm::length(row / largest) : 0.0;
+        for (int c = 0; c < 4; ++c) unitRows[c][r] = length > 0.0 ? row[c] / length : 0.0;
+    }
+    const double ratio = std::abs(glm::determinant(unitRows));
     if (!(ratio >= 1e-12))
         return "is singular (|det| is " + FormatNumber(ratio) +
                " of its rows' lengths' product in the scene's unit frame, must be at least 1e-12)";
+    // A rasterizer clips what has w <= 0: a matrix with w < 0 at the scene's centre (a negated
+    // one, say) draws nothing there, though it has the same projection.
+    if (!((clipFromWorld * glm::dvec4(wsBounds.Center(), 1.0)).w > 0.0))
+        return "has clip w <= 0 at the scene's centre, which a rasterizer clips (negated? w must "
+               "be > 0 in front of the light)";
     try {
         const spatial::LightSpace lightSpace(light, wsBounds);
         std::string failure;

@@ -158,8 +158,15 @@ TEST(CaseMethods, CsvRowsAreTheSweepLights) {
     EXPECT_EQ(csvError("short.csv"),
               "/methods/0/clip_from_world_csv: short.csv:1: has 15 numbers, expected 16 (a 4x4 "
               "clip matrix, row-major)");
+    // The cell's position, not its text: the file may be any file (before: its first 32 bytes).
     EXPECT_EQ(csvError("word.csv"),
-              "/methods/0/clip_from_world_csv: word.csv:1: 'abc' is not a finite number");
+              "/methods/0/clip_from_world_csv: word.csv:1: cell 16 is not a finite number");
+    // A UTF-8 byte order mark is skipped, as in JSON (before: cell 1 was refused).
+    std::ofstream(dir / "bom.csv") << "\xEF\xBB\xBF"
+                                      "1,2,3,4,5,6,7,8,9,10,11,12,13,14,15\n";
+    EXPECT_EQ(csvError("bom.csv"),
+              "/methods/0/clip_from_world_csv: bom.csv:1: has 15 numbers, expected 16 (a 4x4 "
+              "clip matrix, row-major)");
     EXPECT_EQ(csvError("empty.csv"), "/methods/0/clip_from_world_csv: the file has no rows");
     EXPECT_EQ(csvError("none.csv"), "/methods/0/clip_from_world_csv: cannot read " +
                                         (dir / "none.csv").string() + ": not a regular file");
@@ -197,6 +204,20 @@ TEST(CaseMethods, BadMethodsAreNamed) {
                          "from its light: row 1 does not send the point light to infinity",
                          0),
               0u);
+    // Negated, a matrix has the same projection but w < 0 in front of the light, where a
+    // rasterizer clips everything (before: accepted and scored as the original).
+    nlohmann::json negated = good;
+    for (auto& row : negated[1])
+        for (auto& value : row) value = -value.get<double>();
+    EXPECT_EQ(ErrorOf(WithMethod("mine", negated)),
+              "/methods/0/clip_from_world/1: the matrix for light 1 has clip w <= 0 at the "
+              "scene's centre, which a rasterizer clips (negated? w must be > 0 in front of the "
+              "light)");
+    // Scaled by 1e76, the same map (before: refused as singular, with "nan" in the message).
+    nlohmann::json scaled = good;
+    for (auto& row : scaled[0])
+        for (auto& value : row) value = value.get<double>() * 1e76;
+    EXPECT_EQ(ErrorOf(WithMethod("mine", scaled)), "no error");
     nlohmann::json doc = WithMethod("mine", good);
     doc["methods"].push_back({{"name", "mine"}, {"clip_from_world", good}});
     EXPECT_EQ(ErrorOf(doc), "/methods/1/name: 'mine' names an earlier method too");
