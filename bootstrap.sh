@@ -81,7 +81,7 @@ sanitizer_build() {
         -DLEXEL_FUZZ=ON -DLEXEL_WERROR="$werror" -DLEXEL_GL=OFF -DLEXEL_BUILD_BENCHMARKS=OFF \
         -DLEXEL_BUILD_NOTEBOOKS=OFF
     cmake --build build-asan --parallel "$(nproc)" --target input_tests \
-        flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer ply_fuzzer gltf_fuzzer
+        flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer ply_fuzzer gltf_fuzzer sweep_record_fuzzer
 }
 sanitizer_tests() {
     (cd build-asan && ctest --output-on-failure --parallel "$(nproc)" -L '^(input|fuzz)$')
