@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/mesh_file_check.h"
 
 namespace lexel::cases {
 
@@ -30,15 +31,6 @@ bool ReadUpTo(int fd, std::size_t size, std::string& bytes) {
 
 }  // namespace
 
-std::string FileKindOf(::mode_t mode) {
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISSOCK(mode)) return "a socket";
-    return "not a regular file";
-}
-
 std::string ReadHostileFile(const std::filesystem::path& path, std::uintmax_t maxBytes,
                             const std::string& shown, const std::string& missingHint) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
@@ -57,7 +49,7 @@ std::string ReadHostileFile(const std::filesystem::path& path, std::uintmax_t ma
     const int readError = errno;
     ::close(fd);
     if (!regular)
-        throw InputError(shown + ": is " + FileKindOf(st.st_mode) + ", not a regular file");
+        throw InputError(shown + ": is " + spatial::FileKind(st.st_mode) + ", not a regular file");
     if (!small)
         throw InputError(shown + ": larger than " + std::to_string(maxBytes) + " bytes (" +
                          std::to_string(st.st_size) + ")");

@@ -3,17 +3,11 @@
 // refused without blocking on it or acting on it), and never more than a stated number of bytes.
 #pragma once
 
-#include <sys/types.h>
-
 #include <cstdint>
 #include <filesystem>
 #include <string>
 
 namespace lexel::cases {
-
-// What a file of mode `mode` (st_mode) that is not a regular file is, in words: "a directory",
-// "a FIFO (named pipe)", "a character device", "a block device", "a socket".
-std::string FileKindOf(::mode_t mode);
 
 // All bytes of `path`, a regular file (not a link to one) of at most maxBytes. Throws InputError
 // "<shown>: <reason>": "not found" (with `missingHint` appended when given), "is a symbolic link

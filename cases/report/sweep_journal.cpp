@@ -10,11 +10,11 @@
 #include <cstring>
 #include <utility>
 
-#include "lexel/cases/load/hostile_file.h"
 #include "lexel/cases/load/sweep_record_reader.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/report/sweep_record.h"
 #include "lexel/solvers/errors.h"
+#include "lexel/spatial/harness/mesh_file_check.h"
 
 namespace lexel::cases {
 
@@ -138,7 +138,8 @@ void SweepJournal::Open() {
         struct stat st {};
         if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
             ::close(std::exchange(fd_, -1));
-            throw InputError(shown + "is " + FileKindOf(st.st_mode) + ", not a resume journal");
+            throw InputError(shown + "is " + spatial::FileKind(st.st_mode) +
+                             ", not a resume journal");
         }
         if (!Flock(fd_, LOCK_EX | LOCK_NB)) {
             const int reason = errno;

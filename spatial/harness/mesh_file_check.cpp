@@ -317,6 +317,15 @@ void CheckMeshFile(const std::filesystem::path& path) {
     if (extension == ".stl") CheckStl(path, text, size);
 }
 
+std::string FileKind(::mode_t mode) {
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a regular file";
+}
+
 std::string ReadRegularFile(const std::filesystem::path& path, std::uintmax_t maxBytes) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd < 0) Refuse(path, "cannot open the file");

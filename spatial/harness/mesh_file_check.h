@@ -4,6 +4,8 @@
 // against what the file's size can hold.
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -32,6 +34,10 @@ inline constexpr const char* kMeshFormats = "obj, off, stl, ply, gltf, glb";
 // its line are named). Assimp picks its reader by the extension, so the checks do too. A PLY or
 // glTF file gets the checks up to the extension's (its reader checks its counts itself).
 void CheckMeshFile(const std::filesystem::path& path);
+
+// What a file of mode `mode` (st_mode) that is not a regular file is, in words: "a directory",
+// "a FIFO (named pipe)", "a character device", "a block device", "a socket".
+std::string FileKind(::mode_t mode);
 
 // All bytes of a regular file of at most maxBytes, opened without blocking (a FIFO put in its
 // place after CheckMeshFile is refused, not waited on). Throws DomainError (Subject::kGeometry)

@@ -47,16 +47,6 @@ std::string OneLine(std::string text) {
     return text.empty() ? std::string("unknown error") : text;
 }
 
-// What a file type is, for a file that is not regular.
-std::string FileKind(::mode_t mode) {
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISSOCK(mode)) return "a socket";
-    return "not a regular file";
-}
-
 // An open regular file as Assimp reads it (DefaultIOStream's constructor is protected).
 class RegularFileStream : public Assimp::DefaultIOStream {
   public:
