@@ -1,7 +1,7 @@
 // Flatland solver throughput (issue targets: optimal-l1 and exact optimal-l2 ≥ 100 M samples/s
 // on one core; they are moment sums), Newton (thesis Algorithm 1) time and its ratio to the
 // exact solver in the same run, and the sampling pass in pixels/s. BM_RunMemory: the memory a
-// `lexel run` of the single-plane case holds per camera pixel at 10⁶ pixels (issue 16: ≤ 64).
+// `lexel run` of the single-plane case holds per camera pixel at 10⁶ pixels (the target: ≤ 64).
 //
 //   ./build/bench/flatland_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>

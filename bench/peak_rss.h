@@ -1,4 +1,4 @@
-// Peak resident memory of a piece of work, for the memory benchmarks (issue 16): Linux's
+// Peak resident memory of a piece of work, for the memory benchmarks: Linux's
 // high-water mark VmHWM, reset by writing 5 to /proc/self/clear_refs, less VmRSS before the work.
 // Real pages touched, libraries and allocator slack included; malloc_trim first returns the free
 // heap so that freed memory is not reused unseen.

@@ -32,7 +32,7 @@
 //   - BM_WalkthroughFineReadbackBudget: `optimal` per light at a 720² readback, all samples and
 //     with the sample budget (OptimizerOptions::maxSamples), against 180², in one run;
 //   - BM_WalkthroughRunMemory: bytes per camera pixel that a run of the first light holds at
-//     its peak (issue 16; the flatland counterpart is flatland_bench's BM_RunMemory);
+//     its peak (the flatland counterpart is flatland_bench's BM_RunMemory);
 //   - BM_PlyHeader: the PLY reader's header at 25k to 200k properties, with its fitted
 //     complexity (O(n); it was O(n^2): 200k properties took 67 s).
 //
@@ -488,7 +488,7 @@ BENCHMARK(BM_WalkthroughLightMatrix)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The fair comparison's cost (issue 12): per light, focused-tight alone against `optimal`, which
+// The fair comparison's cost: per light, focused-tight alone against `optimal`, which
 // builds every start (focused-tight, lispsm-tight, lispsm-engine, psm-tight, normal,
 // plane-optimal) and runs Algorithm 1 from each, in one run and on one core; ratio = optimal /
 // focused-tight.
@@ -559,15 +559,15 @@ void BM_WalkthroughMultiStartEdge(benchmark::State& state) {
 }
 BENCHMARK(BM_WalkthroughMultiStartEdge)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// `optimal` at a finer readback with the sample budget (OptimizerOptions::maxSamples, issue 25),
+// `optimal` at a finer readback with the sample budget (OptimizerOptions::maxSamples),
 // per light in one run on one core against `optimal` at the case's 180²: the same lights, the
 // same starts' kinds, the boundary samples of a 720² readback (about one frame pixel per readback
 // pixel, against 17 at 180²) all searched, or thinned to 1024 or 512. Counters: ms per light of
 // each and ratio_* to 180²'s; samples_* the mean samples per light; hull3d_ms_* the readback's
 // per-frame 3D hull at each size, which grows with the readback's pixels, not with the budget.
-// And issue 25's cost rule: `optimal` as shipped (720², 512 samples, e) against `optimal` as the
-// issue found it (the multi-start on h at 180², today's `optimal-h`), ratio_shipped_to_issue, and
-// the same with e's exponent 1 (e₁, the edge energy before the exponent), ratio_e1_to_issue.
+// And the cost rule (at most 2×): `optimal` as shipped (720², 512 samples, e) against `optimal` as
+// the issue found it (the multi-start on h at 180², today's `optimal-h`), ratio_shipped_to_issue,
+// and the same with e's exponent 1 (e₁, the edge energy before the exponent), ratio_e1_to_issue.
 void BM_WalkthroughFineReadbackBudget(benchmark::State& state) {
     tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
     const Walkthrough& coarse = Case();
@@ -624,7 +624,7 @@ void BM_WalkthroughFineReadbackBudget(benchmark::State& state) {
 }
 BENCHMARK(BM_WalkthroughFineReadbackBudget)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The partitioned methods (issue 14): per light, the cascades of one scheme at the default k = 4
+// The partitioned methods: per light, the cascades of one scheme at the default k = 4
 // against `optimal` (every start, Algorithm 1 from each) in the same run on one core; ratio =
 // scheme / optimal. Argument: the index into PartitionedMethodNames().
 void BM_WalkthroughPartitioned(benchmark::State& state) {
@@ -756,7 +756,7 @@ void BM_WalkthroughProfile(benchmark::State& state) {
 }
 BENCHMARK(BM_WalkthroughProfile)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Memory (issue 16): a `lexel run` of walkthrough.json's first light (every method, the focused
+// Memory: a `lexel run` of walkthrough.json's first light (every method, the focused
 // truth map, no camera path) on the CPU backend, at the case's camera resolution. Counter
 // bytes_per_pixel: the peak RSS increase over the run per camera pixel (the 4000² truth map and
 // the shadow maps are counted in it, since they are what a run at this resolution holds).

@@ -1,5 +1,5 @@
 // The memory a flatland run needs, from a scene's sizes alone, so that a loader can refuse a case
-// before anything is allocated (issue 16). Every term is an upper bound read off the data
+// before anything is allocated. Every term is an upper bound read off the data
 // structures; memory.cpp has the sizeof arithmetic and tests/flatland/memory_test.cpp checks the
 // bound against the allocator's count.
 #pragma once

@@ -69,7 +69,7 @@ struct EnergyOptions {
 inline constexpr double kDefaultEdgeExponent = 0.625;
 
 // e with the footprint prior: what `optimal`, `optimal-refined`, `sdsm-optimal` and their
-// hysteresis minimize (issue 25: it orders methods as their measured errors better than h).
+// hysteresis minimize (it orders methods as their measured errors better than h).
 inline constexpr EnergyOptions kEdgeEnergy{EnergyKind::kEdge, kDefaultPriorWeight,
                                            kDefaultEdgeExponent};
 

@@ -1,4 +1,4 @@
-// The error model of a shadow map at a boundary sample (issue 25, item 2): how many pixels a
+// The error model of a shadow map at a boundary sample: how many pixels a
 // quantized shadow edge misclassifies, on average over the map's sub-texel phase, per pixel of
 // edge — the footprint *across* the edge, ‖n̂ᵀJ⁻¹‖, rather than the footprint of eq. (6)
 // (Chong & Gortler, "Scene Optimized Shadow Mapping", EG technical report, ~2006).

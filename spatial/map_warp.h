@@ -8,7 +8,7 @@
 //     Molnar, D. Manocha, "Logarithmic Perspective Shadow Maps", ACM TOG 27(4), 2008): B a
 //     perspective warp, then a logarithm of its depth coordinate (logpsm.h).
 // So a MapWarp is B followed by a monotone increasing function φ of each of B's map coordinates,
-// and a sub-texel phase δ (the grid shift of issue 25's phase averaging, in warped texels):
+// and a sub-texel phase δ (the grid shift of the phase averaging, in warped texels):
 //     u = (φ_x(b_x), φ_y(b_y)) + δ,    b = (p1·X, p2·X) / (p4·X)    (texels),
 // with its inverse (the texel's ray, X = B⁻¹(φ_x⁻¹(u_x − δ_x), φ_y⁻¹(u_y − δ_y), 1)) and its
 // Jacobian ∂u/∂X = diag(φ_x'(b_x), φ_y'(b_y)) ∂b/∂X. With φ the identity and δ = 0 it is the

@@ -38,7 +38,7 @@
 // to the base map (SeparableCost), summed over the boundary samples in each column and row gives
 // that bin's cost C_i; minimizing Σ C_i / d_i^k subject to Σ d_i = n (the same texels) gives
 // d_i ∝ C_i^(1/(k+1)) (solvers/lagrange_allocation.h): √C for a cost linear in the footprint
-// (k = 1: the thesis's L1, issue 25's edge energy), ∛C for h's squared footprint (k = 2).
+// (k = 1: the thesis's L1, the edge energy e), ∛C for h's squared footprint (k = 2).
 // Steps 3–5 are the same.
 #pragma once
 

@@ -116,7 +116,7 @@ LightSamples MakeLightSamples(const Readback& readback, const LightSpace& lightS
 // hull and the prior's points are kept whole, as is boundaryPixels. All of them when
 // n ≤ maxSamples or maxSamples = 0. A finer readback resolves the shadow edges better, but its
 // boundary samples grow with its width and the optimizer's time with them; thinned to a budget,
-// the samples keep where the edges lie (OptimizerOptions::maxSamples; RESULTS.md, issue 25).
+// the samples keep where the edges lie (OptimizerOptions::maxSamples; RESULTS.md).
 LightSamples ThinSamples(const LightSamples& samples, std::size_t maxSamples);
 
 // ThinSamples for the optimizer's fit from the hull (OptimizerOptions::hullOnce): the same kept

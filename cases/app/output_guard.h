@@ -1,5 +1,5 @@
 // Checks a command makes before it writes its --out files, so that a refused run writes nothing:
-// two cases of one run never share an output name (issue 16, "names are file stems"). That no
+// two cases of one run never share an output name. That no
 // output replaces a case file the command reads is OutputSet's (its OutputPlan), for every
 // command alike.
 #pragma once

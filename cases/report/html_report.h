@@ -1,4 +1,4 @@
-// index.html for the --out directories of `lexel run` and `lexel sweep` (issue 24): one page that
+// index.html for the --out directories of `lexel run` and `lexel sweep`: one page that
 // shows a run's tables and images together, says in a sentence what each table means and what
 // each colour of an image is, and links every file the run wrote. Self-contained (inline CSS, no
 // script), every link relative to the directory; names are percent-encoded (MarkdownLinkTarget)

@@ -1,8 +1,7 @@
 // Writing a command's --out files as one set: every file is written into a private staging
 // directory with checked writes, verified, flushed to disk, and only then moved into place, so a
-// run leaves all of its files or none of them (issue 16, "atomic output, really"), never deletes
-// or damages a file it did not create, and leaves nothing behind when stopped by a signal
-// (issue 24, "never lose a file").
+// run leaves all of its files or none of them, never deletes or damages a file it did not create,
+// and leaves nothing behind when stopped by a signal.
 #pragma once
 
 #include <cstdint>

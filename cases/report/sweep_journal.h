@@ -1,4 +1,4 @@
-// The resume journal of `lexel sweep --out DIR` (issue 28, `--resume`): each finished light is
+// The resume journal of `lexel sweep --out DIR`: each finished light is
 // appended as one line and synced to disk (write, fdatasync) as it completes, so that a run
 // killed outright (SIGKILL, power loss, a batch system's preemption) can be continued from the
 // lights it finished. The journal lies beside DIR as `.<DIR's name>.lexel-sweep-journal` (so

@@ -1,4 +1,4 @@
-// The sweep record (`sweep-record.json`) and the resume journal's lines (issue 28): every cell of
+// The sweep record (`sweep-record.json`) and the resume journal's lines: every cell of
 // a sweep's share losslessly (doubles in round-trip form, ±inf and NaN as the strings "inf",
 // "-inf", "nan") with the sweep's identity, so that `lexel merge` rebuilds the whole sweep's
 // files bit for bit. Layout in cases/README.md; read back by cases/load/sweep_record_reader.h.

@@ -8,7 +8,7 @@
 
 namespace lexel::cases {
 
-// The width every terminal table and line of text is kept within (issue 24): full detail stays in
+// The width every terminal table and line of text is kept within: full detail stays in
 // the CSV and JSON outputs.
 inline constexpr std::size_t kTerminalColumns = 120;
 

@@ -96,7 +96,7 @@ CameraPathStudy StudyLight(const spatial::Scene& scene, const spatial::RenderBac
         spatial::LightOutcome o = EvaluatePose(poseScene, backend, l, k, options, &evaluator);
         const spatial::HysteresisDecision d = spatial::ApplyHysteresis(
             previous, o.methods[optimal].matrix, o.samples, scene.shadowMap, margin,
-            spatial::kEdgeEnergy.kind);  // optimal's energy (issue 25)
+            spatial::kEdgeEnergy.kind);  // optimal's energy
         PoseOutcome pose;
         pose.changed = d.changed;
         pose.medianKept = d.medianPrevious;

@@ -1,4 +1,4 @@
-// The error model checked per boundary sample (issue 25, item 2; spatial/error_model.h): for each
+// The error model checked per boundary sample (spatial/error_model.h): for each
 // light of a case and each single-map method, every boundary sample's predicted band (frame
 // pixels, ExpectedBandWidth × the edge it stands for) beside the misclassified frame pixels
 // measured nearest to it, averaged over the map's sub-texel phases.

@@ -1,4 +1,4 @@
-// Sweeps that scale out (issue 28): `lexel sweep --shard K/N` evaluates its share of the lights
+// Sweeps that scale out: `lexel sweep --shard K/N` evaluates its share of the lights
 // (light i belongs to shard i mod N; a light's numbers depend on that light alone), `--resume`
 // skips the lights a killed run finished, and `lexel merge` joins the shares' records into the
 // result of one whole sweep, bit for bit but for the times.

@@ -9,7 +9,7 @@ paired difference of the reference method (default: `optimal`) against each --ag
 (default: `optimal-h`) and, where the sweep ran any of the five single-map baselines, against
 their per-light best (mean ± 95% half-width over the lights, Student t, as a % of the other's
 mean), with the lights on which the reference misclassifies more than twice that best plus 50
-pixels (issue 25's rule). Bad input: one line, exit status 2.
+pixels (the 2×best+50 rule). Bad input: one line, exit status 2.
 """
 import csv
 import math
@@ -82,7 +82,7 @@ def main(reference, against, dirs):
         if against is None:  # the default: optimal-h where the sweep ran it
             against = [m for m in ["optimal-h"] if m in mean and m != reference]
         out += [paired(ours, mean[m]) for m in against]
-        if base:  # the per-light best single-map baseline and issue 25's rule against it
+        if base:  # the per-light best single-map baseline and the 2×best+50 rule against it
             best = [min(mean[b][i] for b in base) for i in range(len(rows))]
             out.append(paired(ours, best))
             out.append(str(sum(1 for a, b in zip(ours, best) if a > 2 * b + 50)))

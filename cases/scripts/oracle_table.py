@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Summarize phase-averaged `lexel sweep --out DIR` runs with `optimal-oracle`: the share of one
-method's gap to the bound that another closes (RESULTS.md, "The bound"; issue 25).
+method's gap to the bound that another closes (RESULTS.md, "The bound").
 
 Usage: oracle_table.py [--reference METHOD] [--from METHOD] [--bound METHOD]
                        [--exclude PATTERN:LIGHT ...] [--resamples B] DIR [DIR ...]

@@ -36,7 +36,7 @@ bool IsVirtualMethod(std::string_view name);
 // Methods that run only when asked for by name: not in SpatialMethodNames (so every default list
 // and its outputs stay as they are), yet computed by ComputeLightMatrix and described by
 // SpatialMethodDescription. `optimal-refined-h`: optimal-h's best start refined on h (today's
-// optimal-refined before issue 25 moved it to e); `sdsm-optimal-h`: sdsm-optimal's searches and
+// optimal-refined before it moved to e); `sdsm-optimal-h`: sdsm-optimal's searches and
 // its Lagrange costs on h (eq. 6) whatever the case's cascade energy;
 // `optimal-oracle` (oracle.h): the bound, which the Evaluator computes against the truth
 // (ComputeLightMatrix refuses it). `optimal`, `optimal-refined` and `sdsm-optimal` are on e with

@@ -1,4 +1,4 @@
-// `optimal-oracle` (issue 25): the best single light matrix per light by the measured error —
+// `optimal-oracle`: the best single light matrix per light by the measured error —
 // the limit of the single-matrix family, not a method a renderer can use (it scores candidates
 // against the exact shadow rays).
 //

@@ -1,4 +1,4 @@
-// Shadow maps of any warp by ray casting (issue 27): a nonlinear parameterization (map_warp.h:
+// Shadow maps of any warp by ray casting: a nonlinear parameterization (map_warp.h:
 // RTW, LogPSM) cannot be rasterized exactly by a linear matrix, so each texel's map is built the
 // way the raster path's value is defined. Texel t stands for the light ray through its centre,
 // X = warp.Inverse(t + ½); Embree (ray_caster.h) finds the nearest triangle on that ray, and the

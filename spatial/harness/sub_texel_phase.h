@@ -44,7 +44,7 @@ struct PhaseMean {
 };
 PhaseMean MeanOverPhases(std::span<const std::int64_t> perPhase);
 
-// When an adaptive measurement stops adding phases (issue 25: "K chosen so the residual per-light
+// When an adaptive measurement stops adding phases (the goal: "K chosen so the residual per-light
 // variation is below 2%"): once a mean's standard error is at most kPhaseResidual of the mean, or
 // at most kPhaseResidualFloor pixels (a light whose mean is a few pixels would otherwise need
 // hundreds of phases to pin a difference of under a pixel).

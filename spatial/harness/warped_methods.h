@@ -1,12 +1,12 @@
-// The warped methods of the 3D harness (issue 27): single maps whose parameterization is not a
+// The warped methods of the 3D harness: single maps whose parameterization is not a
 // light matrix (map_warp.h), measured like every other method on the same readback, visible
 // points, margin, boundary samples, depth test and texel budget (W × H of the scene's map):
 //   rtw           P. Rosen, "Rectilinear Texture Warping for Fast Adaptive Shadow Mapping", I3D
 //                 2012: focused-tight's map and two 1-D warps from the readback's importance
 //                 (rtw.h);
 //   rtw-lagrange  the same base and warps with each axis's density from the thesis's Lagrange
-//                 allocation of a separable per-sample cost — h's term (eq. 6) until issue 25's
-//                 energy lands (rtw.h, SeparableCost);
+//                 allocation of a separable per-sample cost — h's term (eq. 6) until the edge
+//                 energy's energy lands (rtw.h, SeparableCost);
 //   logpsm        D. B. Lloyd et al., "Logarithmic Perspective Shadow Maps", ACM TOG 2008: the
 //                 perspective warp followed by the logarithm of its depth, at the aspect its
 //                 aliasing analysis asks for within the same texels (logpsm.h).

@@ -1,4 +1,4 @@
-// A case's name is the stem of its output files (issue 16): names that would leave --out, hide a
+// A case's name is the stem of its output files: names that would leave --out, hide a
 // NUL or a newline, or exceed kMaxCaseNameBytes are refused by both loaders with "/name: ...".
 #include "lexel/cases/load/case_name.h"
 
@@ -97,7 +97,7 @@ TEST(CaseName, TheFileStemFallbackObeysTheSameRule) {
     }
 }
 
-// Issue 24: a file stem of Latin-1 bytes ("caf\xE9") without /name passed, and the JSON report
+// A file stem of Latin-1 bytes ("caf\xE9") without /name passed, and the JSON report
 // then failed after computing with nlohmann's "[json.exception.type_error.316]" (exit 1). Names
 // must be UTF-8 (a /name string always is: the JSON parser checks it).
 TEST(CaseName, RefusesNamesThatAreNotUtf8) {

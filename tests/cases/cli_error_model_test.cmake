@@ -1,4 +1,4 @@
-# Issue 25, item 2: `lexel error-model` on a small case with few lights writes its four files, its
+# `lexel error-model` on a small case with few lights writes its four files, its
 # fit is finite and sane, and bad input is refused with one line naming the flag, exit 2, before
 # anything is written. Invoked by ctest with -DLEXEL=... -DDATA=... -DWORK=...
 file(REMOVE_RECURSE "${WORK}")

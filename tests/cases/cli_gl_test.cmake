@@ -18,7 +18,7 @@ if(lastStdout MATCHES "\ngl: unavailable: ([^\n]*)")
 endif()
 string(REGEX MATCH "\ngl: ([^\n]*)" renderer "${lastStdout}")
 
-# run: the GL output against the CPU's on a 160×120 camera with a 64² readback (issue 24: the GL
+# run: the GL output against the CPU's on a 160×120 camera with a 64² readback (before: the GL
 # readback of a camera whose aspect ratio was not the readback's saw another frustum): the same
 # counted pixels and boundary samples, and per method misclassified and uncovered pixels within
 # RESULTS.md's CPU/GL bound max(5, 5e-4 × counted).

@@ -1,5 +1,4 @@
-# Issue 24, "never lose a file" and "every refusal early, exit 2, one line": the built `lexel` on
-# --out directories it must not damage, flags and case files it must refuse before computing, mesh
+# Never lose a file, and refuse early (exit 2, one line): the built `lexel` on --out directories it must not damage, flags and case files it must refuse before computing, mesh
 # paths it must not open, and signals. Invoked by ctest with -DLEXEL=... -DCASES=... -DDATA=...
 # -DWORK=...; the parts that need root (another user's files, chattr) say when they are skipped.
 if(EXISTS "${WORK}")

@@ -1,4 +1,4 @@
-# Issue 28: scenes from the wild. `lexel mesh-info` on real glTF and PLY models of Debian's
+# Scenes from the wild. `lexel mesh-info` on real glTF and PLY models of Debian's
 # assimp-testmodels, with and without a case; the shipped formats.json case run end to end; and
 # malformed meshes refused in one line, exit 2, nothing on stdout.
 # Invoked by ctest with -DLEXEL=... -DCASES=... -DWORK=...

@@ -1,4 +1,4 @@
-# Issue 28 item 2, your own method: a case's clip matrices evaluated like every method. A matrix
+# Your own method: a case's clip matrices evaluated like every method. A matrix
 # that `lexel run` prints, fed back as a case method, reproduces its method's numbers; CSV rows
 # serve a sweep; bad matrices are refused in one line, exit 2; and a `lexel` built with
 # tests/examples/my_method.cpp (CONTRIBUTING.md) knows its registered methods.

@@ -1,6 +1,6 @@
 # A case inside lexel's 8 GiB budget on a machine that cannot give it that much (address space
 # limited to 1 GiB with `ulimit -v`): std::bad_alloc becomes one `lexel: error:` line, exit 2, and
-# no output directory (issue 16). Invoked by ctest with -DLEXEL=... -DDATA=... -DWORK=...
+# no output directory. Invoked by ctest with -DLEXEL=... -DDATA=... -DWORK=...
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 include("${CMAKE_CURRENT_LIST_DIR}/cli_expect_run.cmake")

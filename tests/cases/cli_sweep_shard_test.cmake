@@ -1,4 +1,4 @@
-# Issue 28, sweeps that scale out: `lexel sweep --shard K/N` run as N concurrent processes and
+# Sweeps that scale out: `lexel sweep --shard K/N` run as N concurrent processes and
 # joined by `lexel merge` gives the files of one unsharded sweep bit for bit (times aside), and
 # `lexel sweep --resume` after a SIGKILL finishes with the same files as an uninterrupted run
 # without recomputing the lights its journal holds. Invoked by ctest with -DLEXEL=... -DDATA=...

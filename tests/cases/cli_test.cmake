@@ -79,7 +79,7 @@ endforeach()
 file(WRITE "${WORK}/badhtml/index.html" "${head}<img src=\"there.png\">${tail}")
 check_html_links("${WORK}/badhtml/index.html" ALL_IMAGES)
 
-# --help lists every method with one line (issue 24).
+# --help lists every method with one line.
 expect_run(0 "\nFlatland methods \\(default: all\\):\n  optimal-l1 +exact L1 optimum[^\n]*\n.*\n  split-dp +[^\n]+\n\n3D methods \\(default: all, and a case's own \"methods\", cases/README\\.md\\):\n  optimal +Algorithm 1 from every baseline's start[^\n]*\n.*\n  tsm +Martin & Tan 2004[^\n]*\n.*\n  vsm-dynamic +[^\n]+\n\n3D methods run only when named \\(--method\\):\n  optimal-refined-h +optimal-h, [^\n]+\n.*\n  optimal-oracle +bound: [^\n]+\n+$"
            "^$" run --help)
 expect_run(0 "\n3D methods \\(default: all, and a case's own \"methods\", cases/README\\.md\\):\n  optimal +[^\n]+\n.*\n  optimal-report +Algorithm 1 as published[^\n]*\n.*\n  vsm +virtual shadow map[^\n]*\n  vsm-dynamic +[^\n]+\n\n3D methods run only when named \\(--method\\):\n.*\n  optimal-oracle +[^\n]+\n+$"
@@ -91,7 +91,7 @@ expect_run(2 "^$" "^lexel: error: .*bad_fov.json: /camera/fov_deg: must be in \\
 expect_run(2 "^$" "bad_syntax.json:4:[0-9]+: invalid JSON" run "${DATA}/bad_syntax.json" --out "${WORK}/bad")
 expect_run(2 "^$" "/camera/zoom: unknown key" run "${DATA}/unknown_key.json" --out "${WORK}/bad")
 expect_run(2 "^$" "no camera pixel sees any geometry" run "${DATA}/no_visible.json" --out "${WORK}/bad")
-# Issue 16: a camera and a second decision pass whose memory would pass the budget are refused
+# A camera and a second decision pass whose memory would pass the budget are refused
 # before anything is allocated, with the estimate, in one line.
 file(READ "${good}" goodText)
 string(REPLACE "\"pixels\": 1000" "\"pixels\": 100000000" bigText "${goodText}")
@@ -113,7 +113,7 @@ if(EXISTS "${WORK}/bad")
     message(FATAL_ERROR "a failed run left ${WORK}/bad behind")
 endif()
 
-# ---- Issue 16: names are file stems; no output replaces another or an input ----
+# ---- Names are file stems; no output replaces another or an input ----
 # A name that would leave --out, hide a NUL, or not fit a file name: exit 2, one line naming
 # /name, nothing written anywhere.
 file(READ "${good}" goodText)
@@ -169,7 +169,7 @@ expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*spatial_small.json would 
 file(WRITE "${WORK}/self/sweep.json" "${smallText}")
 expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*sweep.json would overwrite the case file [^\n]*self/sweep.json\n$"
            sweep "${WORK}/self/sweep.json" --lights 1 --method focused --out "${WORK}/self")
-# index.html is an output of run and sweep too (issue 24): a case file of that name is kept.
+# index.html is an output of run and sweep too: a case file of that name is kept.
 file(WRITE "${WORK}/selfhtml/flat/index.html" "${goodText}")
 file(WRITE "${WORK}/selfhtml/3d/index.html" "${smallText}")
 expect_run(2 "^$" "^lexel: error: --out: writing [^\n]*index.html would overwrite the case file [^\n]*flat/index.html\n$"
@@ -192,7 +192,7 @@ if(EXISTS "${WORK}/dup/out")
     message(FATAL_ERROR "a refused run wrote ${WORK}/dup/out")
 endif()
 
-# ---- Issue 16: never nan in any format ----
+# ---- Never nan in any format ----
 # The projection_aliasing plank without its floor: 5 and 10 decision pixels miss it, so the
 # low-resolution study's extra error is undefined there: "n/a" in text, empty in lowres.csv.
 file(MAKE_DIRECTORY "${WORK}/undecidable")
@@ -216,7 +216,7 @@ foreach(f lowres.csv tables.csv tables.md)
     endif()
 endforeach()
 
-# ---- Issue 16: every command-line error is one line, exit 2 ----
+# ---- Every command-line error is one line, exit 2 ----
 set(oneLine "^lexel: error: [^\n]+\n$")
 expect_run(2 "^$" "^lexel: error: cases: File does not exist: [^\n]*does_not_exist.json\n$"
            run "${WORK}/does_not_exist.json")
@@ -230,7 +230,7 @@ expect_run(2 "^$" "${oneLine}")
 expect_run(2 "^$" "${oneLine}" nope)
 expect_run(0 "Case files" "^$" run --help)
 
-# ---- Issue 16: a stdout that cannot be written is a failed run (exit 1, one line) ----
+# ---- A stdout that cannot be written is a failed run (exit 1, one line) ----
 if(EXISTS /dev/full)
     execute_process(COMMAND "${LEXEL}" run "${good}" --method normal OUTPUT_FILE /dev/full
                     RESULT_VARIABLE code ERROR_VARIABLE err)
@@ -239,7 +239,7 @@ if(EXISTS /dev/full)
     endif()
 endif()
 
-# ---- Issue 16: a run with --out leaves all its files or none ----
+# ---- A run with --out leaves all its files or none ----
 # A successful run leaves no staging directory (nor *.partial) beside or inside --out.
 file(GLOB leftovers "${WORK}/.lexel-staging-*" "${WORK}/out/.lexel-staging-*" "${WORK}/out/*partial*")
 if(leftovers)
@@ -306,7 +306,7 @@ if(leftovers)
     message(FATAL_ERROR "concurrent runs left ${leftovers}")
 endif()
 
-# ---- Issue 16: fit-thesis never writes over the thesis cases it reads ----
+# ---- Fit-thesis never writes over the thesis cases it reads ----
 # An installed layout in WORK (<prefix>/bin/lexel reads <prefix>/share/lexel/cases), so that the
 # test cannot touch the source tree's cases/flatland even if the guard failed.
 set(prefix "${WORK}/installed")
@@ -377,7 +377,7 @@ expect_run(0 "^light,method,[^\n]*\n0,vsm,[0-9]+,[0-9]+,[0-9]+,[^\n]*,[0-9.e+-]+
 # frame, errors and the page pool) + 6 × 6 + 5 = 104.
 expect_run(0 "^light 0" "^lexel: wrote 104 images, index.html and spatial_small.json/.csv to [^\n]*\n$"
            run "${small}" --out "${WORK}/out3d")
-# index.html shows every image and links both data files (issue 24: 154 loose PNGs, no index).
+# index.html shows every image and links both data files (before: 154 loose PNGs, no index).
 check_html_links("${WORK}/out3d/index.html" ALL_IMAGES)
 file(READ "${WORK}/out3d/index.html" page)
 if(NOT htmlLinks GREATER 155 OR NOT page MATCHES "href=\"spatial_small\\.json\"" OR NOT page MATCHES "href=\"spatial_small\\.csv\""
@@ -410,7 +410,7 @@ if(NOT method0 STREQUAL "optimal")
     message(FATAL_ERROR "unexpected ${WORK}/out3d/spatial_small.json:\n${written}")
 endif()
 
-# Progress on a terminal (issue 24: lexel run on a 3D case was silent for 30-40 s): `script` gives
+# Progress on a terminal (before: lexel run on a 3D case was silent for 30-40 s): `script` gives
 # lexel a pseudo-terminal; the bar appears at once with "estimating" and ends with every step
 # done. Without a terminal (every other test here) stderr stays empty.
 find_program(SCRIPT_PROGRAM script)
@@ -434,7 +434,7 @@ if(SCRIPT_PROGRAM)
     endforeach()
 endif()
 
-# The camera-path study kept its evaluator past the pose's scene it referenced (issue 24: with one
+# The camera-path study kept its evaluator past the pose's scene it referenced (before: with one
 # method the walkthrough's hysteresis re-render read a destroyed scene and asked for a map of
 # garbage size: "cannot create std::vector larger than max_size()").
 expect_run(0 "\ncamera path, light 1: P changed in 2 of 8 poses [^\n]*\n" "^$"
@@ -471,7 +471,7 @@ foreach(table report fair)
         endforeach()
     endforeach()
 endforeach()
-# Issue 24: worst-10% rows only from 20 lights (below, 10% is one or two lights).
+# Worst-10% rows only from 20 lights (below, 10% is one or two lights).
 expect_run(0 "^\\{\n  \"case\": \"spatial_small\"" "^$" sweep "${small}" --lights 20 --format json
            --methods optimal-report --methods focused)
 string(JSON nWorst LENGTH "${lastStdout}" report_table worst_10_percent)
@@ -489,7 +489,7 @@ expect_run(0 "^table,set,method,mean_misclassified,percent_more,percent_lights_b
            "^$" sweep "${small}" --lights 3 --format csv)
 expect_run(0 "^Table 1 as published .*\nThe fair comparison .*\nsweep: [0-9.]+ s for 3 lights\n$" "^$"
            sweep "${small}" --lights 3)
-# Adaptive phases (issue 25): from 2 phases, a mean is raised up to 16 where its residual is above
+# Adaptive phases: from 2 phases, a mean is raised up to 16 where its residual is above
 # 2%; lights.csv says at how many each mean is, the note how many were raised; the most below K
 # is refused.
 expect_run(0 "mean over 2 sub-texel phases of its map\\(s\\), raised \\(doubling, up to 16\\) where its[ \n]+standard[ \n]+error[ \n]+was[ \n]+above"
@@ -690,7 +690,7 @@ expect_bad3d(spatial_sweep_only.json
              "${any}spatial_sweep_only.json: /lights: the case has no fixed lights; run `lexel sweep`${any}" run)
 expect_bad3d(spatial_no_sweep.json
              "${any}spatial_no_sweep.json: /light_sweep: the case has none${any}" sweep)
-# Issue 16: out-of-range 3D scenes name the field and the real reason.
+# Out-of-range 3D scenes name the field and the real reason.
 expect_bad3d(spatial_scale_overflow.json
              "${any}spatial_scale_overflow.json: /geometry/1/transform: the transformed geometry reaches \\|x\\| = 5e\\+299, coordinates must be at most 1e\\+15")
 expect_bad3d(spatial_depth_range.json
@@ -701,7 +701,7 @@ expect_bad3d(spatial_camera_in_box.json
 # Found once the camera is rendered, before any method runs: a fixed light in the floor's plane.
 expect_bad3d(spatial_light_in_floor.json
              "${any}spatial_light_in_floor.json: /lights/0/position: no visible pixel faces the light: all [0-9]+ pixels the camera sees have n·l <= 0 \\(the light lies in the plane of, or behind, every surface in view\\), so every count and h would be 0" run)
-# Issue 16: flatland coordinates beyond the bounds, not "zero-length segment".
+# Flatland coordinates beyond the bounds, not "zero-length segment".
 expect_run(2 "^$" "^lexel: error: ${any}flat_huge_coordinate.json: /geometry/0/0: coordinate too large: \\|x\\| = 1e\\+200, must be at most 1e\\+15\n$"
            run "${DATA}/flat_huge_coordinate.json" --out "${WORK}/bad")
 expect_run(2 "^$" "^lexel: error: ${any}flat_tiny_scene.json: /geometry: the scene is too small: its size \\(the largest distance from the camera to the light or a geometry point\\) is 4\\.0078e-299, must be at least 1e-15\n$"
@@ -764,7 +764,7 @@ expect_run(2 "^$" "^lexel: error: --backend: flatland cases have no renderer; --
            run "${good}" --backend gl)
 expect_run(0 "^lexel [0-9.]+\ncpu \\([0-9]+ threads\\)\ngl: " "^$" info)
 
-# ---- lexel storage: Lloyd et al. 2006's storage factor (issue 15) ----
+# ---- lexel storage: Lloyd et al. 2006's storage factor ----
 # The default frustum is Fig. 12's (60°, f/n = 1000): S̄_opt 5.98, ZP + W overhead 865, 53.0, 16.0,
 # 9.5 for 1, 2, 4, 8 maps; Figs. 5–6's S̄ = 85.74 from PSM to LiSPSM at f/n = 100.
 expect_run(0 "^Lloyd et al. 2006's storage factor[^\n]*\n  fov_y 60°, aspect 1, n 1, f 1000 \\(f/n = 1000\\)\nS̄_opt = [^\n]* = 5.98229 .*\n *0.00 +16.454[0-9]* +85.736[0-9]* .*\nFig. 12:[^\n]*\n[^\n]*\n-+\n *1 +865159 +865.159 .*\n *8 +22.53[0-9]* +9.50[0-9]* "
@@ -816,7 +816,7 @@ if(EXISTS "${WORK}/bad_dev")
     message(FATAL_ERROR "a refused /dev/zero left ${WORK}/bad_dev behind")
 endif()
 
-# Issue 16: a number that overflows a double names its line, column and JSON pointer.
+# A number that overflows a double names its line, column and JSON pointer.
 file(WRITE "${WORK}/overflow/overflow.json" "{\"name\": \"x\",\n \"camera\": {\"position\": [0, 1e400]}}")
 expect_run(2 "^$" "^lexel: error: [^\n]*overflow.json:2:29: /camera/position/1: number 1e400 does not fit a double \\(numbers must be finite\\)\n$"
            run "${WORK}/overflow/overflow.json" --out "${WORK}/overflow/out")

@@ -155,7 +155,7 @@ TEST(Figures, LowresPlotIntoMissingDirectoryThrowsAndLeavesNothing) {
     EXPECT_FALSE(HasPartialFile(scratch.path));
 }
 
-// ---- image figures (issue 24: error and map images had no title, count or colour key) ----
+// ---- image figures (before: error and map images had no title, count or colour key) ----
 
 int Byte(float v) { return static_cast<int>(std::lround(255 * v)); }
 

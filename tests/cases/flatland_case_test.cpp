@@ -29,7 +29,7 @@ std::string ErrorFor(const std::string& pointerPatch) {
     return "no error";
 }
 
-// Issue 16: 10^8 camera pixels with a second decision pass of 9·10^7 need
+// 10^8 camera pixels with a second decision pass of 9·10^7 need
 // 32 (10^8 + 9·10^7) + max(32·9·10^7, 16·9·10^7 + 8·10^8, 24·10^8) + 1 MiB ≈ 8.35 GiB
 // (flatland/memory.h): refused before anything is allocated, naming the larger pixel count.
 TEST(FlatlandCase, RefusesPixelsOverTheMemoryBudget) {
@@ -98,7 +98,7 @@ TEST(FlatlandCase, BadFieldsAreNamed) {
               "/light: required key is missing");
 }
 
-// Issue 16: coordinates whose squared lengths overflow (±1e200, a camera or light at 1e300) or a
+// Coordinates whose squared lengths overflow (±1e200, a camera or light at 1e300) or a
 // scene whose squared lengths underflow (scaled by 1e-300) were reported as "zero-length
 // segment"; each now names its field and the bound (flatland/scene.h).
 TEST(FlatlandCase, OutOfRangeScenesGiveTheRealReason) {

@@ -1,4 +1,4 @@
-// index.html of `lexel run --out` and `lexel sweep --out` (issue 24): the tables and what each
+// index.html of `lexel run --out` and `lexel sweep --out`: the tables and what each
 // means, images and files linked by encoded names, every text escaped. (That every link resolves
 // in a real --out directory is checked by cli_tests with check_html_links.cmake.)
 #include "lexel/cases/report/html_report.h"

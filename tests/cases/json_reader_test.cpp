@@ -29,7 +29,7 @@ TEST(JsonReader, ParseErrorsNameLineAndColumn) {
     EXPECT_EQ(message.rfind("case.json:3:14: invalid JSON: ", 0), 0u) << message;
 }
 
-// Issue 24: nlohmann's lexer ends the input at a NUL byte, so `{...}\0 garbage` was read as
+// Nlohmann's lexer ends the input at a NUL byte, so `{...}\0 garbage` was read as
 // `{...}`. A NUL anywhere is refused with its line and column.
 TEST(JsonReader, NulBytesAreRefused) {
     using namespace std::string_literals;

@@ -1,6 +1,6 @@
-// OutputSet: a run's --out files appear all together or not at all (issue 16, "atomic output,
-// really"). Write failures are real ones: RLIMIT_FSIZE makes write(2) fail with EFBIG the way a
-// full disk fails it with ENOSPC, also for root (mode bits do not stop root's writes).
+// OutputSet: a run's --out files appear all together or not at all. Write failures are real ones:
+// RLIMIT_FSIZE makes write(2) fail with EFBIG the way a full disk fails it with ENOSPC, also for
+// root (mode bits do not stop root's writes).
 #include "lexel/cases/report/output.h"
 
 #include <fcntl.h>
@@ -305,7 +305,7 @@ TEST_F(OutputSetTest, OutputNamedLikeADirectoryReplacesNothing) {
     EXPECT_EQ(Entries(), (std::vector<std::string>{"out", "out/a.csv", "out/b.csv"}));
 }
 
-// Issue 24: every --out that cannot be a directory is refused before anything is computed, with
+// Every --out that cannot be a directory is refused before anything is computed, with
 // its reason (before, a symlink loop, a dangling link and a 300-byte name were found only by the
 // final rename, exit 1 after computing, and an empty --out was ignored).
 TEST_F(OutputSetTest, OutPathsThatCannotBeDirectoriesAreBadInput) {
@@ -378,7 +378,7 @@ TEST_F(OutputSetTest, OutputReplacingAnInputIsRefused) {
     EXPECT_EQ(Entries(), (std::vector<std::string>{"cases", "cases/storage_x.json", "link"}));
 }
 
-// Issue 24: a later run removes what killed runs left — its own prefix, this user's directories,
+// A later run removes what killed runs left — its own prefix, this user's directories,
 // none that a live run holds — and nothing else.
 TEST_F(OutputSetTest, DebrisOfKilledRunsIsRemovedButNoLiveStaging) {
     const fs::path outDir = base / "out";
@@ -454,7 +454,7 @@ class AttributeGuard {
     bool set_ = false;
 };
 
-// Issue 24: an append-only --out (chattr +a) takes new files, and the staging directory, made
+// An append-only --out (chattr +a) takes new files, and the staging directory, made
 // beside it, goes (before, one was left inside after every successful run); an old output there
 // cannot be replaced, so it is refused before anything is computed.
 TEST_F(OutputSetTest, AppendOnlyDirectoryKeepsNoStaging) {
@@ -512,7 +512,7 @@ bool ProtectedHardlinks() {
     return (setting >> value) && value == 1;
 }
 
-// Issue 24's data loss: the old files of an existing --out could not be kept as hard links
+// A data loss once: the old files of an existing --out could not be kept as hard links
 // (another user's), and a later rename failed; the rollback then deleted each file it could not
 // restore (78 of 79 gone) and said "no file was replaced". Here a.csv cannot be kept and b.csv
 // cannot be replaced (immutable): now the run refuses before replacing anything — at once when
@@ -600,7 +600,7 @@ int StopWith(pid_t child, int signal) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-// Issue 24: SIGTERM (SIGINT, SIGHUP) removes the staging directory and exits with 128 + n
+// SIGTERM (SIGINT, SIGHUP) removes the staging directory and exits with 128 + n
 // (before, no handler: the staging directory stayed like after SIGKILL).
 TEST_F(OutputSetTest, TerminationSignalRemovesTheStaging) {
     for (const int signal : {SIGTERM, SIGINT}) {

@@ -1,4 +1,4 @@
-// Undefined quantities are never printed as "nan" (issue 16): NaN is an empty CSV field and table
+// Undefined quantities are never printed as "nan": NaN is an empty CSV field and table
 // cell (JSON: null, by nlohmann::json).
 #include <gtest/gtest.h>
 
@@ -39,7 +39,7 @@ TEST(ReportNumbers, LowresCsvLeavesAnUndecidableResolutionEmpty) {
               "c,10,1.5,2.5,0.25\n");
 }
 
-// A case name is a file stem, so it may hold ',' and '"' (issue 16): CSV quotes such fields
+// A case name is a file stem, so it may hold ',' and '"': CSV quotes such fields
 // (RFC 4180) and Markdown links percent-encode the file name.
 TEST(ReportNumbers, CsvQuotesNamesWithCommasAndQuotes) {
     EXPECT_EQ(CsvText("plain name"), "plain name");

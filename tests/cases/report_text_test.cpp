@@ -1,4 +1,4 @@
-// What a reader sees on a terminal (issue 24): tables within 120 columns (cut into blocks of whole
+// What a reader sees on a terminal: tables within 120 columns (cut into blocks of whole
 // columns when wider, headers stacked over lines), wrapped captions, no worst-10% rows for a
 // handful of lights, the report's published counts labelled as such, a progress line with an
 // estimate, one line of --help per method, and CSV numbers in the shortest form that reads back
@@ -107,7 +107,7 @@ TEST(TextTable, WrapsTextAtSpacesWithinTheWidth) {
 
 // ---- CSV and JSON numbers ----
 
-// Issue 24: `lexel run --format csv` printed 0.93800000000000128 (17 significant digits).
+// Before: `lexel run --format csv` printed 0.93800000000000128 (17 significant digits).
 TEST(ReportNumbers, CsvNumbersAreTheShortestThatReadBack) {
     EXPECT_EQ(CsvNumber(0.938), "0.938");
     EXPECT_EQ(CsvNumber(0.93800000000000128), "0.9380000000000013");
@@ -250,7 +250,7 @@ TEST(SweepTable, FitsTheTerminal) {
     }
 }
 
-// Issue 24: `--lights 10` printed "worst 10%" rows that each repeat one light.
+// Before: `--lights 10` printed "worst 10%" rows that each repeat one light.
 TEST(SweepTable, HasWorstTenPercentRowsFromTwentyLights) {
     const ReportTable1 report = PublishedTable1();
     for (std::size_t lights : {1u, 10u, 19u}) {
@@ -274,7 +274,7 @@ TEST(SweepTable, HasWorstTenPercentRowsFromTwentyLights) {
     EXPECT_EQ(text.find("No worst-10% rows"), std::string::npos);
 }
 
-// Issue 24: Table 1's published counts (1,886,057) sat beside ours (1,247) unlabelled.
+// Table 1's published counts (1,886,057) sat beside ours (1,247) unlabelled.
 TEST(SweepTable, LabelsThePublishedCountsAsTheReportsOwnScale) {
     const SweepResult r = WideSweep(20);
     for (const std::string& text :
@@ -350,7 +350,7 @@ const nlohmann::json& FairEntry(const nlohmann::json& doc, const std::string& me
     throw std::runtime_error("no " + method);
 }
 
-// Issue 25's report bugs: the grazing share of h averaged only over lights with 0 < h < inf (a
+// Report bugs once: the grazing share of h averaged only over lights with 0 < h < inf (a
 // light without boundary samples has h = 0 and no share), and "h orders as errors" counting
 // neither a tie in h (both 0) nor a difference within the noise (one phase: under 2% or a pixel).
 TEST(SweepReport, GrazingShareAndHOrderingsSkipLightsWithoutOrder) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks that two lexel builds write the same results on the shipped cases, times aside.
 
-A refactoring must not change a number (issue 26). This runs the same commands with both
+A refactoring must not change a number. This runs the same commands with both
 binaries into WORKDIR/old and WORKDIR/new and compares every file both wrote: PNGs and other
 binary files byte for byte; CSV, JSON and Markdown with every time masked (a CSV column, JSON key
 or Markdown table column named ms, seconds or a time). Files and JSON keys only the new build

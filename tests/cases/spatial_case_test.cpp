@@ -300,7 +300,7 @@ TEST(SpatialCase, BadFieldsAreNamed) {
               "= [0, -0.7, 10])");
 }
 
-// Issue 16: out-of-range scenes name the field and the real reason (spatial_case.h's bounds),
+// Out-of-range scenes name the field and the real reason (spatial_case.h's bounds),
 // where a scale of 1e300 reported "bounding radius inf" and near 1e-300, far 1e300 was accepted.
 TEST(SpatialCase, OutOfRangeScenesGiveTheRealReason) {
     auto replace = [](const std::string& path, const std::string& value) {

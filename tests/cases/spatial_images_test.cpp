@@ -1,4 +1,4 @@
-// The images of `lexel run --out` on a 3D case (issue 24): uncovered pixels are marked exactly
+// The images of `lexel run --out` on a 3D case: uncovered pixels are marked exactly
 // where the evaluation counts them, and every image is a titled figure the index can list.
 #include <gtest/gtest.h>
 
@@ -117,7 +117,7 @@ TEST(SpatialImages, EveryImageIsListedWithItsLightMethodAndKind) {
     fs::remove_all(dir, ignored);
 }
 
-// Issue 24: lexel run on a 3D case was silent for 30-40 s; its progress bar counts these steps.
+// Lexel run on a 3D case was silent for 30-40 s; its progress bar counts these steps.
 TEST(SpatialRun, CallsOnStepOncePerCountedStep) {
     spatial::Scene scene = SmallScene();
     spatial::Camera moved = scene.camera;

@@ -102,7 +102,7 @@ TEST(StorageRun, FiguresAreSevenPngFiles) {
         EXPECT_EQ(std::filesystem::path(f).extension(), ".png") << f;
         EXPECT_GT(std::filesystem::file_size(dir / f), 300u) << f;
     }
-    // Fig. 7: a titled figure, the 9 × 9 grid scaled by 8, with its log scale (issue 24: the
+    // Fig. 7: a titled figure, the 9 × 9 grid scaled by 8, with its log scale (before: the
     // hemisphere images had no scale): the bar runs from the ramp's dark blue to its red.
     const spatial::Image hemisphere = spatial::ReadImage((dir / files[1]).string());
     EXPECT_EQ(hemisphere.width, 720);

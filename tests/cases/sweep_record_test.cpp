@@ -1,4 +1,4 @@
-// The sweep record and journal (issue 28): every cell survives writing and reading bit for bit,
+// The sweep record and journal: every cell survives writing and reading bit for bit,
 // a merge of shards' records is the whole sweep's record, and records that are not one sweep are
 // refused naming the light or the field.
 #include "lexel/cases/report/sweep_record.h"

@@ -111,7 +111,8 @@ TEST(FlatlandMemory, EstimateBoundsTheMeasuredPeakOfOnePass) {
     const double measured = MeasuredRunBytes(scene);
     RecordProperty("bytes_per_pixel", std::to_string(measured / pixels));
     EXPECT_LE(measured, estimate) << "measured " << measured / pixels << " bytes per pixel";
-    // Issue 16's goal, and an estimate that is an upper bound without being loose.
+    // The goal (at most 64 bytes a pixel), and an estimate that is an upper bound without being
+    // loose.
     EXPECT_LE(measured / pixels, kRunBytesPerPixel);
     EXPECT_GE(measured, 0.7 * estimate) << "estimate " << estimate << ", measured " << measured;
 }

@@ -466,8 +466,8 @@ double ExpectedNear(const Camera& camera, const std::vector<glm::dvec3>& body, d
     return ::testing::AssertionFailure() << x << " does not round to " << printed;
 }
 
-TEST(LispsmNearRule, FrustumAndSlabBodiesGiveTheIssuesNumbers) {
-    // Issue 29's table, from Filament's applyLISPSM and Wimmer's formula, to the digits printed:
+TEST(LispsmNearRule, FrustumAndSlabBodiesGiveThePublishedNumbers) {
+    // The table, from Filament's applyLISPSM and Wimmer's formula, to the digits printed:
     // frustum body n = 3.26 both at 90°, 4.61 / 4.11 at 45°, 18.8 / 8.69 at 10°, 93.5 / 21.3 at
     // 2°; slab body (z_n = 2√3) 22.08 both at 90°, 31.2 / 23.8, 127 / 47.3, 633 / 201. The
     // library's n (through the whole tight construction) must equal the closed form to 1e-9.
@@ -518,7 +518,7 @@ TEST(LispsmNearRule, ClosedFormsAndFilamentsVirtualPlanes) {
     // ... capped at z_f: d = 400 would put z₁ at 201; it stays 100: n = (1 + 10) / (1/2) = 22.
     EXPECT_NEAR(*LispsmNear(engine, {1.0, 100.0, 400.0}, 0.5, 0.1), 22.0, 1e-13);
     // Filament's defaults (near hint 1 m, far hint 100 m) at γ = 90° on the frustum body: vz₀ = 1,
-    // vz₁ = 100, n = 0.1 + √100 = 10.1 (issue 29); its floor dzn / (2 - 3 dzn / 99.9) = 0.456.
+    // vz₁ = 100, n = 0.1 + √100 = 10.1; its floor dzn / (2 - 3 dzn / 99.9) = 0.456.
     LispsmNearRule filament = engine;
     filament.virtualNear = 1.0;
     filament.virtualFar = 100.0;

@@ -1,5 +1,5 @@
 // The camera's one definition of a pixel's ray (camera.h): RayDirection is ScreenFromWorld's
-// inverse on the ray for every aspect ratio of camera and image. Issue 24: RayDirection took the
+// inverse on the ray for every aspect ratio of camera and image. Before: RayDirection took the
 // aspect ratio from the image while ScreenFromWorld took it from the camera, so the GL backend's
 // readback (which rebuilds its points along RayDirection) saw another frustum than the CPU's
 // whenever the readback's aspect ratio was not the camera's.

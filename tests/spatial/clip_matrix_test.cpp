@@ -207,7 +207,7 @@ TEST(LightDepthRange, KeepsEveryCasterAndSpansTheReceiversTightly) {
         const double nearest = range.near + 0.02 / 1.04 * (range.far - range.near);
         EXPECT_GE(sampledNearest, nearest * (1.0 - 1e-12));
         EXPECT_LT(sampledNearest, nearest * 1.02);
-        // A guess for the point light ({0.5, 60}, issue 24) squeezes the receivers.
+        // A guess for the point light ({0.5, 60}) squeezes the receivers.
         const DepthRange guess{0.5, 60.0};
         std::pair<double, double> guessed{1.0, 0.0};
         if (ls.IsPoint()) {

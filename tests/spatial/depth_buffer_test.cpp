@@ -1,4 +1,4 @@
-// A renderer's depth buffer in every convention engines use (issue 24: a reversed-Z buffer was
+// A renderer's depth buffer in every convention engines use (before: a reversed-Z buffer was
 // read as a standard one, and Vulkan/Direct3D conventions were not covered): each gives the world
 // points of the exact camera pass to float precision, a convention that contradicts its
 // projection is refused, and DownsampleDepth keeps exactly the source pixels' points.
@@ -135,7 +135,7 @@ TEST(DepthBuffer, EveryConventionGivesTheExactPassesPoints) {
     }
 }
 
-// Issue 24: reversed-Z buffers "failed": read as standard ones, their cleared 0 is the near plane.
+// Reversed-Z buffers "failed": read as standard ones, their cleared 0 is the near plane.
 TEST(DepthBuffer, AConventionThatContradictsItsProjectionIsRefused) {
     const Pass pass = FloorAndBox({64, 48});
     for (const Convention& c : Conventions(pass.camera)) {

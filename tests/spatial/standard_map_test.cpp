@@ -1,4 +1,4 @@
-// The renderer's side of Algorithm 1 step 1 (issue 24: the embedding recipe never said what
+// The renderer's side of Algorithm 1 step 1 (before: the embedding recipe never said what
 // "your standard map" was, nor how deep to render it). StandardLightMatrix is the map
 // OptimizeLightMatrix starts from; the recipe an embedder follows — a reversed-Z depth buffer of
 // its camera pass, the standard map rendered through ClipFromWorld with LightDepthRange into a

@@ -148,7 +148,7 @@ TEST(VirtualShadowMap, NeverExceedsItsPoolAndKeepsTheMostRequestedPages) {
     }
 }
 
-// Issue 27's check: a frame pixel's page level matches its footprint within one level. The
+// The check: a frame pixel's page level matches its footprint within one level. The
 // serving page's own perspective aliasing w_l/w_i at the pixel (measured on the page's matrix,
 // independently of the level arithmetic) over 2^bias is in [1, 2) when the page is at the level
 // the pixel's footprint asks for (⌈L + b⌉, L = −log₂ of level 0's w_l/w_i), in [2, 4) one level

@@ -1,4 +1,4 @@
-// The OpenGL backend against the CPU for every camera shape (issue 24): cameras 1:1, 4:3, 16:9
+// The OpenGL backend against the CPU for every camera shape: cameras 1:1, 4:3, 16:9
 // and 9:16, each with a square readback and one of its own aspect ratio, on every shipped scene
 // (cases/spatial/*.json, at reduced resolutions so that llvmpipe runs the matrix in seconds) and
 // the CLI's small case, each with a point and a directional light. Each backend renders its own

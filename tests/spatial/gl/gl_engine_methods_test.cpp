@@ -1,4 +1,4 @@
-// What engines ship on the GPU against the CPU backend (issue 27): `tsm` is one light matrix and
+// What engines ship on the GPU against the CPU backend: `tsm` is one light matrix and
 // `vsm` / `vsm-dynamic` a linear map per resident page, each page rendered by the GL shadow pass
 // and the frame shaded through the page that serves each pixel. Each backend renders its own
 // frame, readback, maps and decisions; the truth is the same Embree rays. On the walkthrough's

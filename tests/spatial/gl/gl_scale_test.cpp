@@ -1,4 +1,4 @@
-// The OpenGL backend's results do not depend on the scene's scale or offset (issue 24): the
+// The OpenGL backend's results do not depend on the scene's scale or offset: the
 // similar scenes of scale_invariance_test.cpp (spatial_small mapped by x → s·x + o in its case
 // file) evaluated on the GPU give the GPU's counts for the case itself — counted and truly
 // shadowed pixels, boundary samples, misclassified and uncovered pixels per light and method —

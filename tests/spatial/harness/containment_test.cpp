@@ -1,5 +1,5 @@
 // Point-in-closed-geometry by ray parity (containment.h): crossing counts and distances against
-// the unit primitives' closed forms, and the cases the loader relies on (issue 16).
+// the unit primitives' closed forms, and the cases the loader relies on.
 #include "lexel/spatial/harness/containment.h"
 
 #include <gtest/gtest.h>

@@ -39,7 +39,7 @@ TEST(Evaluation, FocusedTruthMapAgreesWithShadowRays) {
     }
 }
 
-// CountedPixels (what `run` checks before any method, issue 16) counts what Evaluate counts.
+// CountedPixels (what `run` checks before any method) counts what Evaluate counts.
 TEST(Evaluation, CountedPixelsAreTheReceiverPixels) {
     const Scene& scene = Walkthrough();
     const auto backend = MakeCpuRenderer(scene.geometry);

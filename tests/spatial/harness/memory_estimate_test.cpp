@@ -1,4 +1,4 @@
-// The 3D memory estimate is an upper bound of what the evaluation really holds (issue 16): the
+// The 3D memory estimate is an upper bound of what the evaluation really holds: the
 // peak resident memory of one light's evaluation, every method with its buffers kept, measured
 // through Linux's VmHWM (reset by /proc/self/clear_refs), stays under the estimate, and not far
 // under it (the estimate would refuse cases that fit).

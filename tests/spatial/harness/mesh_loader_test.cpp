@@ -181,7 +181,7 @@ TEST(MeshLoader, RejectsNonFiniteCoordinates) {
 }
 
 // Assimp allocates what a header declares: its own invalid/OutOfMemory.off (3.5e11 vertices in
-// 309 bytes) took gigabytes in seconds (issue 16). The declared counts are held against the size.
+// 309 bytes) took gigabytes in seconds. The declared counts are held against the size.
 TEST(MeshLoader, RefusesDeclaredCountsTheFileCannotHold) {
     if (!ModelsInstalled()) return;
     const auto oom = kModels / "invalid/OutOfMemory.off";
@@ -313,7 +313,7 @@ class ScratchDirectory {
     std::filesystem::path path_;
 };
 
-// Issue 24: a mesh path that is not a regular file says what it is (before: "mesh file not
+// A mesh path that is not a regular file says what it is (before: "mesh file not
 // found" for all of them), and nothing is opened to find out.
 TEST(MeshLoader, RefusesPathsThatAreNotRegularFilesSayingWhatTheyAre) {
     const ScratchDirectory scratch;
@@ -355,7 +355,7 @@ TEST(MeshLoader, ASideFileOutsideTheMeshsFolderIsAbsentWhateverThePathSpelling) 
     std::filesystem::current_path(before);
 }
 
-// Issue 24: an OBJ whose mtllib names a FIFO hung for ever (Assimp's default file system opened
+// An OBJ whose mtllib names a FIFO hung for ever (Assimp's default file system opened
 // it and waited for a writer). Now only regular files are opened, and the mesh is refused naming
 // what it would have opened. A watchdog opens the FIFO's write end after 10 s, which would free a
 // loader blocked on it, so the old behaviour fails the test instead of hanging it.
@@ -398,7 +398,7 @@ TEST(MeshLoader, NeverOpensAFifoOrDirectoryAnObjNames) {
     EXPECT_EQ(LoadError(objMissing), "no error");
 }
 
-// Issue 24: Assimp 5.2 reads an OFF face's indices with strtoul10 and clamps the ones past the
+// Assimp 5.2 reads an OFF face's indices with strtoul10 and clamps the ones past the
 // vertices, so "-1" became vertex 0 and "7" of 3 vertices the last one, silently (the same in OBJ
 // is refused). Now each is refused naming the face, its line and the index.
 TEST(MeshLoader, RefusesOffFaceIndicesThatAreNoVertex) {

@@ -1,4 +1,4 @@
-// optimal-oracle (issue 25): the compass search finds a known best axis, and on a shipped scene
+// optimal-oracle: the compass search finds a known best axis, and on a shipped scene
 // the oracle's measured error is at most every fair single-map method's (it starts from their
 // matrices, scored on held-out phases).
 #include "lexel/spatial/harness/oracle.h"

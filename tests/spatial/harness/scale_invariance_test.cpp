@@ -1,4 +1,4 @@
-// 3D results do not depend on where a scene sits or how large it is (issue 24): the CLI test case
+// 3D results do not depend on where a scene sits or how large it is: the CLI test case
 // spatial_small mapped by x → s·x + o in its case file (similar_case.h) gives, on the CPU
 // backend, the case's counted and truly shadowed pixels, boundary samples, and misclassified and
 // uncovered pixels for every method and light, with h equal to rounding, at scales 1e-12 … 1e12

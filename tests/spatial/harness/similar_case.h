@@ -1,4 +1,4 @@
-// The scale and offset tests' scene (issue 24): the CLI test case
+// The scale and offset tests' scene: the CLI test case
 // tests/cases/data/spatial_small.json mapped by x → s·x + o in its case document — camera position
 // and target, near and far, point lights, every geometry entry's translate and scale, the sweep
 // radius — loaded by the case loader and evaluated light by light (its fixed light and four of its

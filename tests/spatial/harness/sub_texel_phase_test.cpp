@@ -1,4 +1,4 @@
-// Sub-texel phase averaging (issue 25): the phases, the mean and its standard error, and the
+// Sub-texel phase averaging: the phases, the mean and its standard error, and the
 // Evaluator's phase means against a brute-force reference (each phase's map measured alone).
 #include "lexel/spatial/harness/sub_texel_phase.h"
 
