@@ -119,9 +119,8 @@ int RunSpatial(const RunFlags& flags, const CaseFile& file) {
     options.keepBuffers = !flags.outDir.empty();
     options.backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(options.methods, options.backend);
-    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile
     std::optional<OutputSet> out;             // --out is checked before anything is computed
-    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
+    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile (made after out)
     if (!flags.outDir.empty())
         out.emplace(
             flags.outDir,
@@ -131,6 +130,7 @@ int RunSpatial(const RunFlags& flags, const CaseFile& file) {
                                   (file.starts_with(name + "_light") && file.ends_with(".png")) ||
                                   file == "index.html";
                        }});
+    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     Progress bar("run " + scene.name, SpatialRunSteps(scene, options), "steps");
     options.onStep = [&] { bar.Step(); };
     const SpatialRun run = WithCaseName(casePath, [&] { return RunSpatialCase(scene, options); });
@@ -183,10 +183,10 @@ int RunFlatland(const RunFlags& flags, const CaseFile& first) {
     scenes.push_back(LoadFlatScene(first));
     for (std::size_t i = 1; i < flags.cases.size(); ++i)
         scenes.push_back(LoadFlatScene(flags.cases[i]));
-    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile
     std::optional<OutputSet> out;             // --out is checked before anything is computed
-    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
+    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile (made after out)
     if (!flags.outDir.empty()) out.emplace(flags.outDir, FlatlandOutputPlan(flags, scenes));
+    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     std::vector<flatland::CaseReport> reports;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         try {
@@ -297,15 +297,15 @@ int CaseStorageCommand(const StorageFlags& flags) {
     const fs::path casePath = flags.casePath;
     const spatial::Scene scene = LoadSpatialScene(casePath);
     const std::vector<std::string> methods = SpatialMethods(flags.methods);
-    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile
     std::optional<OutputSet> out;             // --out is checked before anything is computed
+    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile (made after out)
     const std::string stem = "storage_" + scene.name;
-    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     if (!flags.outDir.empty())
         out.emplace(flags.outDir, OutputPlan{{casePath}, [stem](const std::string& file) {
                                                  return file == stem + ".json" ||
                                                         file == stem + ".csv";
                                              }});
+    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     const CaseStorage result =
         WithCaseName(casePath, [&] { return RunCaseStorage(scene, methods); });
     PrintReport(flags.format, {.json = [&] { return CaseStorageJson(result); },
@@ -327,15 +327,15 @@ int StorageCommand(const StorageFlags& flags) {
     if (!flags.methods.empty())
         throw InputError("--method: applies with --case (the measured storage factor)");
     const spatial::ViewFrustum frustum = StorageFrustum(flags);
-    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile
     std::optional<OutputSet> out;             // --out is checked before anything is computed
-    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
+    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile (made after out)
     if (!flags.outDir.empty())
         out.emplace(flags.outDir,
                     OutputPlan{{}, [](const std::string& file) {
                                    return file == "storage.json" || file == "storage.csv" ||
                                           (file.starts_with("fig") && file.ends_with(".png"));
                                }});
+    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
     const StorageStudy study = RunStorageStudy(frustum);
     PrintReport(flags.format, {.json = [&] { return StorageJson(study); },
                                .csv = [&] { return StorageCsv(study); },

@@ -305,7 +305,8 @@ int SweepCommand(const SweepFlags& flags) {
 
 namespace {
 
-// The most bytes a shard's first-light image may have (a 16384² RGBA image compresses below it).
+// The most bytes a shard's first-light image may have, and its images together (a 16384² RGBA
+// image compresses below it; a 720² sweep's images are about 30 KB each).
 constexpr std::uintmax_t kMaxShardImageBytes = std::uintmax_t{1} << 30;
 
 // The bytes of a shard's first-light image `file` in `dir`, read as every file beside an --out
@@ -332,10 +333,16 @@ int MergeCommand(const MergeFlags& flags) {
     const SweepIdentity& id = merged.record.identity;
     // Every shard's images are checked, and the ones merged read, before anything is printed.
     std::vector<std::string> imageBytes;
+    std::uintmax_t keptBytes = 0;
     for (std::size_t d = 0; d < records.size(); ++d)
         for (const SpatialImageFile& image : records[d].images) {
             std::string bytes = ReadShardImage(flags.dirs[d], image.file, id.caseName);
-            if (static_cast<int>(d) == merged.imagesFrom) imageBytes.push_back(std::move(bytes));
+            if (static_cast<int>(d) != merged.imagesFrom) continue;
+            keptBytes += bytes.size();
+            if (keptBytes > kMaxShardImageBytes)
+                throw InputError("merge: " + flags.dirs[d] + ": its first-light images hold more " +
+                                 "than " + std::to_string(kMaxShardImageBytes) + " bytes");
+            imageBytes.push_back(std::move(bytes));
         }
     // No output may replace a shard's record or image (a shard directory given as --out).
     OutputPlan plan = SweepOutputPlan("", id.caseName);
@@ -345,8 +352,8 @@ int MergeCommand(const MergeFlags& flags) {
         for (const SpatialImageFile& image : records[d].images)
             plan.inputs.push_back(fs::path(flags.dirs[d]) / image.file);
     }
-    const SweepExclusion exclusion(flags.outDir);  // no sweep into --out meanwhile
     OutputSet out(flags.outDir, plan);
+    const SweepExclusion exclusion(flags.outDir);  // no sweep into --out meanwhile
     const ReportTable1 report =
         LoadReportTable1(DataDirectory() / "published" / "report_table1.json");
     std::optional<CascadeCountStudy> study;

@@ -3,10 +3,12 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <set>
@@ -254,7 +256,7 @@ std::size_t ProcBytes(const char* file, std::string_view key) {
 // What this process can still take: the address space left under its limit (ulimit -v) and the
 // memory the machine has available, three quarters of the smaller (a quarter kept for
 // fragmentation and what the rest of the process takes); unbounded where neither says.
-std::size_t MemoryLeft() {
+std::size_t ReadMemoryLeft() {
     std::size_t left = std::numeric_limits<std::size_t>::max();
     struct rlimit limit {};
     if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
@@ -264,6 +266,22 @@ std::size_t MemoryLeft() {
     if (const std::size_t available = ProcBytes("/proc/meminfo", "MemAvailable:"); available > 0)
         left = std::min(left, available);
     return left == std::numeric_limits<std::size_t>::max() ? left : left / 4 * 3;
+}
+
+// ReadMemoryLeft, read again at most every kMemoryLeftSeconds: a resume journal parses one JSON
+// line per light, and two /proc reads a line would cost more than the parse.
+constexpr double kMemoryLeftSeconds = 0.1;
+std::size_t MemoryLeft() {
+    static std::mutex mutex;
+    static std::chrono::steady_clock::time_point readAt;
+    static std::size_t left = 0;
+    const std::lock_guard lock(mutex);
+    const auto now = std::chrono::steady_clock::now();
+    if (left == 0 || std::chrono::duration<double>(now - readAt).count() > kMemoryLeftSeconds) {
+        left = std::max<std::size_t>(ReadMemoryLeft(), 1);
+        readAt = now;
+    }
+    return left;
 }
 
 // nlohmann's DOM of `text` under a ScopedAllocationCap: the cap refuses before the machine does,

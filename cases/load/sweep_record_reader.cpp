@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
+#include <set>
+#include <string_view>
 
+#include "lexel/cases/load/case_name.h"
 #include "lexel/cases/load/hostile_file.h"
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/cases/load/spatial_case.h"
@@ -59,6 +63,8 @@ SweepIdentity ParseIdentity(const JsonField& f) {
                     "max_phases", "shimmer_poses", "lights", "lights_fnv1a64"});
     SweepIdentity id;
     id.caseName = f["case"].String();
+    if (const std::optional<std::string> problem = CaseNameProblem(id.caseName))
+        f["case"].Fail(*problem);
     id.caseHash = f["case_fnv1a64"].String();
     id.methods = Strings(f["methods"]);
     id.backend = f["backend"].String();
@@ -158,9 +164,10 @@ SpatialImageFile ParseImage(const JsonField& f) {
     SpatialImageFile image;
     image.file = f["file"].String();
     // A plain file name beside the record: merge copies it, and nothing outside the directory.
-    if (image.file.empty() || image.file.find('/') != std::string::npos || image.file == "." ||
-        image.file == ".." || !image.file.ends_with(".png"))
-        f["file"].Fail("must be a plain .png file name, got \"" + image.file + "\"");
+    // A case name (a safe file stem, echoed nowhere) with ".png" after it.
+    if (!image.file.ends_with(".png") ||
+        CaseNameProblem(std::string_view(image.file).substr(0, image.file.size() - 4)))
+        f["file"].Fail("must be a plain .png file name (a safe file stem and .png)");
     image.light = static_cast<std::size_t>(f["light"].Integer(0, kMaxCount));
     image.method = f["method"].String();
     image.kind = f["kind"].String();
@@ -191,8 +198,12 @@ SweepRecord ParseRecord(const nlohmann::json& doc) {
             k.Fail("must be a count of the partitions study beside cascades " +
                    std::to_string(r.identity.cascades) + ", increasing");
     }
-    for (const JsonField& image : f["first_light_images"].Array())
+    std::set<std::string> imageFiles;
+    for (const JsonField& image : f["first_light_images"].Array()) {
         r.images.push_back(ParseImage(image));
+        if (!imageFiles.insert(r.images.back().file).second)
+            image["file"].Fail("names an image listed before");
+    }
     const std::size_t studyMethods = CascadeStudyMethods(r.identity.methods).size();
     r.study.assign(r.studyCounts.size(), {});
     const std::vector<JsonField> lights = f["lights"].Array();

@@ -228,9 +228,9 @@ std::vector<OutputSet::Staging*>& LiveStagings() {
     static auto* live = new std::vector<OutputSet::Staging*>;
     return *live;
 }
-// RemoveOnSignal's files, under LiveMutex.
-std::vector<fs::path>& SignalRemovals() {
-    static auto* removals = new std::vector<fs::path>;
+// RemoveOnSignal's files and their descriptors, under LiveMutex.
+std::vector<std::pair<fs::path, int>>& SignalRemovals() {
+    static auto* removals = new std::vector<std::pair<fs::path, int>>;
     return *removals;
 }
 
@@ -519,10 +519,11 @@ namespace {
 // fails rather than report files that a power loss may take.
 void SyncPublished(const fs::path& dir) {
     if (SyncPath(dir, true)) return;
+    const int reason = errno;
     for (const int passed : {EACCES, EPERM, EINVAL, EROFS, ENOTSUP})
-        if (errno == passed) return;
+        if (reason == passed) return;
     throw std::runtime_error(dir.string() + ": the files are in place, but syncing the directory " +
-                             "failed (" + ErrnoText(errno) +
+                             "failed (" + ErrnoText(reason) +
                              "): they may not survive a power loss");
 }
 
@@ -641,9 +642,12 @@ const char* SignalName(int signal) {
         discarded = discarded || (!staging->dir.empty() && !staging->committed);
         staging->Discard();
     }
-    for (const fs::path& path : SignalRemovals()) {
-        struct stat st {};
-        if (::lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size == 0)
+    for (const auto& [path, fd] : SignalRemovals()) {
+        struct stat open {
+        }, named{};
+        if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &open) == 0 &&
+            ::lstat(path.c_str(), &named) == 0 && open.st_dev == named.st_dev &&
+            open.st_ino == named.st_ino && open.st_size == 0)
             ::unlink(path.c_str());
     }
     std::string line = std::string(::isatty(STDERR_FILENO) ? "\n" : "") +
@@ -676,16 +680,14 @@ std::string PngBytesDefect(const std::string& bytes) {
     return "truncated: " + std::to_string(bytes.size()) + " bytes end before the IEND chunk";
 }
 
-void RemoveOnSignal(const fs::path& path) {
+void RemoveOnSignal(const fs::path& path, int fd) {
     const std::lock_guard live(LiveMutex());
-    SignalRemovals().push_back(path);
+    SignalRemovals().emplace_back(path, fd);
 }
 
-void ForgetOnSignal(const fs::path& path) {
+void ForgetOnSignal(const fs::path& path, int fd) {
     const std::lock_guard live(LiveMutex());
-    std::vector<fs::path>& removals = SignalRemovals();
-    if (const auto at = std::find(removals.begin(), removals.end(), path); at != removals.end())
-        removals.erase(at);
+    std::erase(SignalRemovals(), std::pair(path, fd));
 }
 
 void StopCleanlyOnSignals() {

@@ -129,10 +129,11 @@ void StopCleanlyOnSignals();
 // exactly (PNG specification, 2nd ed., sections 5.2-5.3). The CRCs are not checked.
 std::string PngBytesDefect(const std::string& bytes);
 
-// A file this process made beside an --out and removes itself when done (the empty journal a
-// SweepExclusion holds): until ForgetOnSignal(path), a signal that StopCleanlyOnSignals takes
-// removes it too, when it is still an empty regular file.
-void RemoveOnSignal(const std::filesystem::path& path);
-void ForgetOnSignal(const std::filesystem::path& path);
+// A file beside an --out that this process holds open as `fd` under a shared flock and removes
+// when it is the last holder (the empty journal a SweepExclusion holds): until ForgetOnSignal, a
+// signal that StopCleanlyOnSignals takes removes it too, when `path` still names `fd`'s file, it
+// is empty, and no other process holds it (an exclusive flock on `fd` is granted).
+void RemoveOnSignal(const std::filesystem::path& path, int fd);
+void ForgetOnSignal(const std::filesystem::path& path, int fd);
 
 }  // namespace lexel::cases

@@ -56,7 +56,10 @@ std::string ReadFd(int fd, const std::string& shown) {
     for (;;) {
         const ::ssize_t got = ::read(fd, buffer, sizeof buffer);
         if (got < 0 && errno == EINTR) continue;
-        if (got < 0) throw std::runtime_error(shown + ": cannot read (" + ErrnoText(errno) + ")");
+        if (got < 0) {
+            const int reason = errno;
+            throw std::runtime_error(shown + ": cannot read (" + ErrnoText(reason) + ")");
+        }
         if (got == 0) break;
         if (text.size() + static_cast<std::size_t>(got) > kMaxSweepJournalBytes) throw tooLarge();
         text.append(buffer, static_cast<std::size_t>(got));
@@ -64,12 +67,24 @@ std::string ReadFd(int fd, const std::string& shown) {
     return text;
 }
 
-// Why the journal's path cannot be opened, in words ("is a symbolic link ...").
-std::string OpenRefusal(int reason) {
-    if (reason == ELOOP)
+// What stands at the journal's path when it is not a regular file, in words ("is a symbolic
+// link ..."), found with lstat so that nothing there is opened; empty for a regular file or
+// nothing.
+std::string NotAJournal(const fs::path& path) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return {};
+    if (S_ISLNK(st.st_mode))
         return "is a symbolic link (lexel opens no file beside --out through a link; remove it)";
-    if (reason == EISDIR) return "is a directory, not a resume journal (remove it)";
-    return "cannot create the resume journal (" + ErrnoText(reason) + ")";
+    if (S_ISDIR(st.st_mode)) return "is a directory, not a resume journal (remove it)";
+    return "is " + spatial::FileKind(st.st_mode) + ", not a resume journal";
+}
+
+// Whether open(2) failing with `reason` is the path's fault (exit 2, before computing) rather
+// than the machine's (a full disk, too many open files: exit 1).
+bool PathsFault(int reason) {
+    for (const int path : {ELOOP, EISDIR, EACCES, EPERM, EROFS, ENOENT, ENOTDIR, ENAMETOOLONG})
+        if (reason == path) return true;
+    return false;
 }
 
 // True when `path` still names the file open as `fd` (no one removed or replaced it meanwhile).
@@ -94,6 +109,30 @@ InputError HeldBy(const fs::path& path) {
                       std::string("holds the resume journal ") + path.string() + ")");
 }
 
+// Refuses a journal line's entry (`one`: one light or one light of the study) for a light outside
+// `shard` of `identity`'s lights, or for a count the partitions study does not sweep: a journal of
+// this run holds none.
+void CheckInShare(const SweepDone& one, const SweepIdentity& identity, SweepShard shard,
+                  const std::string& where) {
+    const auto inShare = [&](std::size_t index) {
+        return index < identity.lights && index % shard.count == shard.index;
+    };
+    const auto outside = [&](std::size_t index) {
+        return InputError(where + ": light " + std::to_string(index) + " is not in this run's " +
+                          "lights (shard " + ShardText(shard) + " of " +
+                          std::to_string(identity.lights) + " lights): a damaged journal");
+    };
+    for (const auto& [index, light] : one.lights)
+        if (!inShare(index)) throw outside(index);
+    const std::vector<int> counts = CascadeStudyExtraCounts(identity.cascades);
+    for (const auto& [key, light] : one.study) {
+        if (!inShare(key.second)) throw outside(key.second);
+        if (std::find(counts.begin(), counts.end(), key.first) == counts.end())
+            throw InputError(where + ": the partitions study has no count k = " +
+                             std::to_string(key.first) + ": a damaged journal");
+    }
+}
+
 }  // namespace
 
 fs::path SweepJournal::PathFor(const fs::path& outDir) {
@@ -107,8 +146,8 @@ SweepJournal::SweepJournal(const fs::path& path, const SweepIdentity& identity, 
                            bool resume)
     : path_(path) {
     Open();
-    const std::string header = JournalHeaderLine(identity, shard);
     try {
+        const std::string header = JournalHeaderLine(identity, shard);
         const std::string text = resume ? ReadFd(fd_, "--resume: " + path_.string()) : "";
         if (text.find('\n') == std::string::npos) {  // none, or a header cut short by a kill
             created_ = true;                         // begun anew: this run's to remove
@@ -118,32 +157,43 @@ SweepJournal::SweepJournal(const fs::path& path, const SweepIdentity& identity, 
         }
     } catch (...) {
         // A journal of another sweep, or a damaged one, is left as it is.
-        if (created_) ::unlink(path_.c_str());
-        ::close(fd_);
-        fd_ = -1;
+        if (created_ && StillNamed(fd_, path_)) ::unlink(path_.c_str());
+        ::close(std::exchange(fd_, -1));
         throw;
     }
 }
 
 // Opens (or creates) the journal as a regular file, never through a link nor blocking on a FIFO,
-// and takes its exclusive lock; retried when another process removed the file meanwhile.
+// and takes its exclusive lock; retried when another process removed the file meanwhile. A file
+// this run made and could not lock is left to the holder of the lock, which removes it.
 void SweepJournal::Open() {
     const std::string shown = "--out: " + path_.string() + ": ";
     for (int attempt = 0;; ++attempt) {
+        if (const std::string what = NotAJournal(path_); !what.empty())
+            throw InputError(shown + what);
         fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         created_ = fd_ >= 0;
-        if (fd_ < 0 && errno == EEXIST)
+        int reason = errno;
+        if (fd_ < 0 && reason == EEXIST) {
             fd_ = ::open(path_.c_str(), O_RDWR | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-        if (fd_ < 0) throw InputError(shown + OpenRefusal(errno));
+            reason = errno;
+            if (fd_ < 0 && reason == ENOENT && attempt < 8) continue;  // removed in between
+        }
+        if (fd_ < 0) {
+            const std::string what = reason == ELOOP ? NotAJournal(path_) : "";
+            const std::string text =
+                what.empty() ? "cannot create the resume journal (" + ErrnoText(reason) + ")"
+                             : what;
+            if (PathsFault(reason)) throw InputError(shown + text);
+            throw std::runtime_error(path_.string() + ": " + text);
+        }
         struct stat st {};
-        if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
+        if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {  // replaced after the lstat
             ::close(std::exchange(fd_, -1));
-            throw InputError(shown + "is " + spatial::FileKind(st.st_mode) +
-                             ", not a resume journal");
+            throw InputError(shown + "is not a regular file, not a resume journal");
         }
         if (!Flock(fd_, LOCK_EX | LOCK_NB)) {
             const int reason = errno;
-            if (created_) ::unlink(path_.c_str());
             ::close(std::exchange(fd_, -1));
             if (reason == EWOULDBLOCK) throw HeldBy(path_);
             throw std::runtime_error(path_.string() + ": cannot lock (" + ErrnoText(reason) + ")");
@@ -156,42 +206,21 @@ void SweepJournal::Open() {
 
 SweepJournal::~SweepJournal() {
     if (fd_ < 0) return;
-    ::unlink(path_.c_str());
+    if (StillNamed(fd_, path_)) ::unlink(path_.c_str());
     ::close(fd_);
 }
 
 void SweepJournal::StartAnew(const std::string& header) {
-    if (::ftruncate(fd_, 0) != 0 || ::lseek(fd_, 0, SEEK_SET) != 0 || !WriteSynced(fd_, header))
+    if (::ftruncate(fd_, 0) != 0 || ::lseek(fd_, 0, SEEK_SET) != 0 || !WriteSynced(fd_, header)) {
+        const int reason = errno;
         throw std::runtime_error(path_.string() + ": cannot write the resume journal (" +
-                                 ErrnoText(errno) + ")");
+                                 ErrnoText(reason) + ")");
+    }
     // The journal's name must outlive a power loss too.
     const fs::path dir = path_.parent_path();
     if (const int dirFd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dirFd >= 0) {
         ::fsync(dirFd);
         ::close(dirFd);
-    }
-}
-
-// Refuses a journal line for a light outside `shard` of `identity`'s lights, or for a count the
-// partitions study does not sweep: a journal of this run holds none.
-void CheckInShare(const SweepDone& done, const SweepIdentity& identity, SweepShard shard,
-                  const std::string& where) {
-    const auto inShare = [&](std::size_t index) {
-        return index < identity.lights && index % shard.count == shard.index;
-    };
-    const auto outside = [&](std::size_t index) {
-        return InputError(where + ": light " + std::to_string(index) + " is not in this run's " +
-                          "lights (shard " + ShardText(shard) + " of " +
-                          std::to_string(identity.lights) + " lights): a damaged journal");
-    };
-    for (const auto& [index, light] : done.lights)
-        if (!inShare(index)) throw outside(index);
-    const std::vector<int> counts = CascadeStudyExtraCounts(identity.cascades);
-    for (const auto& [key, light] : done.study) {
-        if (!inShare(key.second)) throw outside(key.second);
-        if (std::find(counts.begin(), counts.end(), key.first) == counts.end())
-            throw InputError(where + ": the partitions study has no count k = " +
-                             std::to_string(key.first) + ": a damaged journal");
     }
 }
 
@@ -214,28 +243,33 @@ void SweepJournal::ReadFinished(const std::string& text, const SweepIdentity& id
         ++line;
         if (end == std::string::npos) break;  // torn by a kill mid-write: dropped
         const std::string where = shown + ":" + std::to_string(line);
-        ParseJournalEntry(text.substr(at, end - at), where, methods, studyMethods, done_);
-        CheckInShare(done_, identity, shard, where);
+        SweepDone one;  // this line's entry, checked alone; a later line replaces an earlier one
+        ParseJournalEntry(text.substr(at, end - at), where, methods, studyMethods, one);
+        CheckInShare(one, identity, shard, where);
+        for (auto& [index, light] : one.lights) done_.lights[index] = std::move(light);
+        for (auto& [key, light] : one.study) done_.study[key] = std::move(light);
         kept = end + 1;
     }
     if (::ftruncate(fd_, static_cast<::off_t>(kept)) != 0 ||
-        ::lseek(fd_, 0, SEEK_END) != static_cast<::off_t>(kept))
+        ::lseek(fd_, 0, SEEK_END) != static_cast<::off_t>(kept)) {
+        const int reason = errno;
         throw std::runtime_error(path_.string() + ": cannot drop the journal's torn line (" +
-                                 ErrnoText(errno) + ")");
+                                 ErrnoText(reason) + ")");
+    }
 }
 
 SweepExclusion::SweepExclusion(const fs::path& outDir) : path_(SweepJournal::PathFor(outDir)) {
     for (int attempt = 0; attempt <= 8; ++attempt) {
-        fd_ = ::open(path_.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-        created_ = false;
-        if (fd_ < 0 && errno == ENOENT) {
-            fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-            created_ = fd_ >= 0;
+        if (const std::string what = NotAJournal(path_); !what.empty()) {
+            if (what.starts_with("is a symbolic link"))
+                throw InputError("--out: " + path_.string() + ": " + what);
+            return;  // a directory, a FIFO, ...: no sweep can journal here either
         }
-        if (fd_ < 0 && errno == EEXIST) continue;  // made by another run meanwhile
-        if (fd_ < 0 && errno == ELOOP)
-            throw InputError("--out: " + path_.string() + ": " + OpenRefusal(ELOOP));
-        if (fd_ < 0) return;  // not creatable here: no sweep can journal here either
+        fd_ = ::open(path_.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+        if (fd_ < 0 && errno == ENOENT)
+            fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd_ < 0 && (errno == EEXIST || errno == ELOOP)) continue;  // changed meanwhile
+        if (fd_ < 0) return;  // not creatable here (a missing or read-only parent): nor by a sweep
         struct stat st {};
         if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
             ::close(std::exchange(fd_, -1));  // no sweep can journal here either
@@ -243,13 +277,17 @@ SweepExclusion::SweepExclusion(const fs::path& outDir) : path_(SweepJournal::Pat
         }
         if (!Flock(fd_, LOCK_SH | LOCK_NB)) {
             const int reason = errno;
-            if (created_) ::unlink(path_.c_str());
-            ::close(std::exchange(fd_, -1));
+            ::close(std::exchange(fd_, -1));  // a file made here is the lock holder's to remove
             if (reason == EWOULDBLOCK) throw HeldBy(path_);
             return;  // a file system without locks
         }
         if (StillNamed(fd_, path_)) {
-            if (created_) RemoveOnSignal(path_);
+            try {
+                RemoveOnSignal(path_, fd_);
+            } catch (...) {
+                ::close(std::exchange(fd_, -1));
+                throw;
+            }
             return;
         }
         ::close(std::exchange(fd_, -1));  // removed by its last holder meanwhile: open it anew
@@ -259,7 +297,7 @@ SweepExclusion::SweepExclusion(const fs::path& outDir) : path_(SweepJournal::Pat
 
 SweepExclusion::~SweepExclusion() {
     if (fd_ < 0) return;
-    if (created_) ForgetOnSignal(path_);
+    ForgetOnSignal(path_, fd_);
     struct stat st {};
     // The last holder of an empty journal removes it (a sweep's journal, with lines, is kept).
     if (Flock(fd_, LOCK_EX | LOCK_NB) && ::fstat(fd_, &st) == 0 && st.st_size == 0 &&
@@ -270,9 +308,11 @@ SweepExclusion::~SweepExclusion() {
 
 void SweepJournal::Append(const std::string& line) {
     const std::lock_guard lock(mutex_);
-    if (!WriteSynced(fd_, line))
+    if (!WriteSynced(fd_, line)) {
+        const int reason = errno;
         throw std::runtime_error(path_.string() + ": cannot write the resume journal (" +
-                                 ErrnoText(errno) + ")");
+                                 ErrnoText(reason) + ")");
+    }
 }
 
 }  // namespace lexel::cases

@@ -33,11 +33,12 @@ class SweepJournal {
     // exclusive flock on it. With `resume`, the lights a former run finished are read (a torn
     // last line, as a kill mid-write leaves, is dropped) and kept; without, or when there is no
     // journal, it starts anew. Throws InputError "--resume: <path>: ..." for a journal of another
-    // sweep (naming what differs), a damaged line or a line for a light outside this shard;
-    // "--out: <path>: ..." when another run holds the lock, the path is a link, a directory or
-    // another kind of file that is not a regular one, it is larger than kMaxSweepJournalBytes, or
-    // it cannot be created (a read-only parent); std::runtime_error when it cannot be written (a
-    // full disk). A journal this constructor created or began anew is removed when it throws.
+    // sweep (naming what differs), a damaged line, a line for a light outside this shard, or a
+    // journal larger than kMaxSweepJournalBytes; "--out: <path>: ..." when another run holds the
+    // lock, the path is a link, a directory or another kind of file that is not a regular one
+    // (found with lstat: nothing there is opened), or it cannot be created (a read-only or missing
+    // parent); std::runtime_error when the machine fails it (a full disk, too many open files).
+    // A journal this constructor created or began anew is removed when it throws.
     SweepJournal(const std::filesystem::path& path, const SweepIdentity& identity, SweepShard shard,
                  bool resume);
     ~SweepJournal();  // removes the journal (a killed process never gets here)
@@ -67,9 +68,11 @@ class SweepJournal {
 // a sweep into DIR never run at once: refuses (InputError "--out: ...") while a sweep holds DIR's
 // journal, and holds a shared lock on the journal's path for as long as it lives, so that a sweep
 // into DIR started meanwhile is refused. Where there is no journal it makes an empty one to hold
-// (removed again by the last holder; a killed command leaves it, and a sweep takes an empty
-// journal for none). Where none can be made (a read-only parent) or the path holds something
-// other than a regular file, no sweep can journal there either, and nothing is held.
+// (removed again by the last holder, on SIGINT, SIGTERM and SIGHUP too; a command killed outright
+// leaves it, and a sweep takes an empty journal for none). Where none can be made (a read-only
+// parent) or the path holds something other than a regular file or a link, no sweep can journal
+// there either, and nothing is held; a link there is refused (InputError). Make it after the
+// OutputSet, which makes --out's missing parents, and destroy it before.
 class SweepExclusion {
   public:
     explicit SweepExclusion(const std::filesystem::path& outDir);
@@ -80,7 +83,6 @@ class SweepExclusion {
   private:
     std::filesystem::path path_;
     int fd_ = -1;
-    bool created_ = false;  // this made the empty journal (RemoveOnSignal)
 };
 
 }  // namespace lexel::cases

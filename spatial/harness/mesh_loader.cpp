@@ -66,12 +66,17 @@ class RegularFileSystem : public Assimp::DefaultIOSystem {
   public:
     explicit RegularFileSystem(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
-    bool Exists(const char* file) const override { return Inside(file) && IsRegular(file); }
+    bool Exists(const char* file) const override {
+        return !Resolved(file).empty() && IsRegular(file);
+    }
 
     Assimp::IOStream* Open(const char* file, const char* mode) override {
         if (std::string_view(mode).find_first_of("wa+") != std::string_view::npos) return nullptr;
-        if (!Inside(file) || !IsRegular(file)) return nullptr;
-        const int fd = ::open(file, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+        const std::filesystem::path resolved = Resolved(file);
+        if (resolved.empty() || !IsRegular(file)) return nullptr;
+        // The resolved path, its last part not followed: a link put there after Resolved is not.
+        const int fd =
+            ::open(resolved.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
         if (fd < 0) return nullptr;
         struct stat st {};
         if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) ||
@@ -92,13 +97,14 @@ class RegularFileSystem : public Assimp::DefaultIOSystem {
     const std::string& Refused() const { return refused_; }
 
   private:
-    // True when `file`, links resolved, lies in folder_ or below it.
-    bool Inside(const char* file) const {
+    // `file` with its links resolved when that lies in folder_ or below it, else empty.
+    std::filesystem::path Resolved(const char* file) const {
         std::error_code error;
-        const std::filesystem::path resolved = std::filesystem::weakly_canonical(file, error);
-        if (error) return false;
+        std::filesystem::path resolved = std::filesystem::weakly_canonical(file, error);
+        if (error) return {};
         const std::filesystem::path relative = resolved.lexically_relative(folder_);
-        return !relative.empty() && *relative.begin() != "..";
+        if (relative.empty() || *relative.begin() == "..") return {};
+        return resolved;
     }
     // False for a missing path and (kept in refused_) for one that is not a regular file.
     bool IsRegular(const char* file) const {

@@ -110,6 +110,13 @@ shard_copy(renamed)
 string(REPLACE "\"file\":\"${firstImage}\"" "\"file\":\"cascades.png\"" text "${record}")
 file(WRITE "${WORK}/renamed/sweep-record.json" "${text}")
 merge_refused(renamed "merge: [^\n]*renamed/cascades\\.png: the record names an image that a sweep of spatial_small does not write")
+# The same image listed twice (before: read twice into memory, then exit 1 after the tables).
+string(REGEX MATCHALL "\"file\": *\"[^\"]+\"" imageEntries "${record}")
+list(GET imageEntries 1 secondEntry)
+shard_copy(twice)
+string(REPLACE "${secondEntry}" "\"file\":\"${firstImage}\"" text "${record}")
+file(WRITE "${WORK}/twice/sweep-record.json" "${text}")
+merge_refused(twice "[^\n]*twice/sweep-record\\.json: /first_light_images/1/file: names an image listed before")
 # A merge into a directory a sweep holds is refused like a run.
 if(FLOCK)
     execute_process(COMMAND "${FLOCK}" "${WORK}/.merged.lexel-sweep-journal" "${LEXEL}" merge "${WORK}/shard" --out "${WORK}/merged"
