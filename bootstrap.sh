@@ -40,14 +40,13 @@ if ((${#missing[@]})); then
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# With the packages above a GL context can always be made (llvmpipe at worst), so the test job
-# requires the OpenGL backend and its tests rather than letting them skip. It also builds with
-# warnings as errors (LEXEL_WERROR), which the tables job leaves to the developers' compilers.
-gl=AUTO
-werror=OFF
+# With the packages above a GL context can always be made (llvmpipe at worst), so both jobs build
+# the OpenGL backend, and the test job requires its tests rather than letting them skip. Both
+# build with warnings as errors (LEXEL_WERROR; Debian 12's GCC 12 is the compiler CI uses): the
+# two jobs configure build/ alike, so `test` after `tables` compiles nothing again.
+gl=ON
+werror=ON
 if [[ "$job" == "test" ]]; then
-    gl=ON
-    werror=ON
     export LEXEL_REQUIRE_GL=1
 fi
 
@@ -81,7 +80,8 @@ sanitizer_build() {
         -DLEXEL_FUZZ=ON -DLEXEL_WERROR="$werror" -DLEXEL_GL=OFF -DLEXEL_BUILD_BENCHMARKS=OFF \
         -DLEXEL_BUILD_NOTEBOOKS=OFF
     cmake --build build-asan --parallel "$(nproc)" --target input_tests \
-        flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer ply_fuzzer gltf_fuzzer sweep_record_fuzzer
+        flatland_case_fuzzer spatial_case_fuzzer mesh_fuzzer ply_fuzzer gltf_fuzzer \
+        sweep_record_fuzzer
 }
 sanitizer_tests() {
     (cd build-asan && ctest --output-on-failure --parallel "$(nproc)" -L '^(input|fuzz)$')
