@@ -370,142 +370,145 @@ void CheckSceneExtent(const std::string& field, const spatial::Bounds& wsBounds)
 
 }  // namespace
 
-spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
-                                    const std::filesystem::path& baseDir) {
-    const JsonField root(document, "");
-    root.ExpectObject({"camera"}, {"name", "description", "lights", "shadow_map", "readback",
-                                   "geometry", "generator", "light_sweep", "camera_path",
-                                   "cascades", "methods", "phases", "max_phases", "optimizer"});
-    spatial::Scene scene;
-    scene.name = CaseNameOf(root, fallbackName);
-    if (root.Has("description")) root["description"].String();
+namespace {
 
-    ReadCamera(root["camera"], &scene.camera);
-
-    if (root.Has("light_sweep")) {
-        const JsonField sweep = root["light_sweep"];
-        sweep.ExpectObject({}, {"count", "seed", "radius", "type"});
-        spatial::LightSweep lightSweep;
-        if (sweep.Has("count"))
-            lightSweep.count = static_cast<int>(sweep["count"].Integer(1, kMaxSweepLights));
-        if (sweep.Has("seed"))
-            lightSweep.seed = static_cast<std::uint64_t>(
-                sweep["seed"].Integer(0, std::numeric_limits<long long>::max()));
-        if (sweep.Has("radius"))
-            lightSweep.radius = sweep["radius"].NumberIn(0.0, kMaxCoordinate, true, false);
-        if (sweep.Has("type")) {
-            const std::string type = sweep["type"].String();
-            if (type != "point" && type != "directional")
-                sweep["type"].Fail("must be point or directional, got '" + type + "'");
-            lightSweep.type =
-                type == "point" ? spatial::Light::Type::kPoint : spatial::Light::Type::kDirectional;
-        }
-        scene.lightSweep = lightSweep;
+// /light_sweep: the hemisphere of lights `lexel sweep` draws.
+spatial::LightSweep ReadLightSweep(const JsonField& sweep) {
+    sweep.ExpectObject({}, {"count", "seed", "radius", "type"});
+    spatial::LightSweep lightSweep;
+    if (sweep.Has("count"))
+        lightSweep.count = static_cast<int>(sweep["count"].Integer(1, kMaxSweepLights));
+    if (sweep.Has("seed"))
+        lightSweep.seed = static_cast<std::uint64_t>(
+            sweep["seed"].Integer(0, std::numeric_limits<long long>::max()));
+    if (sweep.Has("radius"))
+        lightSweep.radius = sweep["radius"].NumberIn(0.0, kMaxCoordinate, true, false);
+    if (sweep.Has("type")) {
+        const std::string type = sweep["type"].String();
+        if (type != "point" && type != "directional")
+            sweep["type"].Fail("must be point or directional, got '" + type + "'");
+        lightSweep.type =
+            type == "point" ? spatial::Light::Type::kPoint : spatial::Light::Type::kDirectional;
     }
-    if (root.Has("cascades")) scene.partitions = ReadPartitions(root["cascades"]);
+    return lightSweep;
+}
+
+// /optimizer, /phases and /max_phases into `scene`.
+void ReadMeasurement(const JsonField& root, spatial::Scene* scene) {
     if (root.Has("optimizer")) {
         const JsonField optimizer = root["optimizer"];
         optimizer.ExpectObject({}, {"max_samples", "edge_exponent"});
         if (optimizer.Has("max_samples"))
-            scene.optimizerMaxSamples =
+            scene->optimizerMaxSamples =
                 static_cast<std::size_t>(optimizer["max_samples"].Integer(1, kMaxOptimizerSamples));
         if (optimizer.Has("edge_exponent"))
-            scene.edgeExponent =
+            scene->edgeExponent =
                 optimizer["edge_exponent"].NumberIn(0.0, kMaxEdgeExponent, true, false);
     }
     if (root.Has("phases"))
-        scene.phases = static_cast<int>(root["phases"].Integer(1, spatial::kMaxPhases));
+        scene->phases = static_cast<int>(root["phases"].Integer(1, spatial::kMaxPhases));
     if (root.Has("max_phases")) {
-        scene.maxPhases = static_cast<int>(root["max_phases"].Integer(1, spatial::kMaxPhases));
-        if (scene.maxPhases < scene.phases)
-            root["max_phases"].Fail("must be at least phases (" + std::to_string(scene.phases) +
-                                    "), got " + std::to_string(scene.maxPhases));
+        scene->maxPhases = static_cast<int>(root["max_phases"].Integer(1, spatial::kMaxPhases));
+        if (scene->maxPhases < scene->phases)
+            root["max_phases"].Fail("must be at least phases (" + std::to_string(scene->phases) +
+                                    "), got " + std::to_string(scene->maxPhases));
     }
+}
+
+// /lights into `scene` (after /light_sweep: without one, lights are required and not empty).
+void ReadLights(const JsonField& root, spatial::Scene* scene) {
     if (root.Has("lights")) {
         const JsonField lights = root["lights"];
         const auto items = lights.Array();
-        if (items.empty() && !scene.lightSweep)
+        if (items.empty() && !scene->lightSweep)
             lights.Fail("must not be empty unless light_sweep is given");
-        for (const JsonField& light : items) scene.lights.push_back(ReadLight(light));
-    } else if (!scene.lightSweep) {
+        for (const JsonField& light : items) scene->lights.push_back(ReadLight(light));
+    } else if (!scene->lightSweep) {
         throw InputError("/lights: required key is missing (give lights, light_sweep or both)");
     }
+}
 
-    std::vector<CaseMethodEntry> methods;  // checked against the lights once the geometry is read
-    if (root.Has("methods")) methods = ReadCaseMethods(root["methods"], scene, baseDir);
+// One /geometry entry's primitive in its object space; a plane is the scene's floor when it is
+// the first.
+spatial::TriangleMesh ReadPrimitive(const JsonField& entry, const spatial::Transform& transform,
+                                    spatial::Scene* scene) {
+    const JsonField primitive = entry["primitive"];
+    const std::string kind = primitive.String();
+    if (kind == "plane") {
+        if (!scene->floorPlane) scene->floorPlane = TransformedPlane(transform.Matrix());
+        return spatial::MakePlane();
+    }
+    if (kind == "box") return spatial::MakeBox();
+    if (kind == "sphere") return spatial::MakeSphere();
+    if (kind == "cylinder") return spatial::MakeCylinder();
+    primitive.Fail("must be one of plane, box, sphere, cylinder, got '" + kind + "'");
+}
 
-    if (root.Has("shadow_map")) scene.shadowMap = ReadResolution(root["shadow_map"]);
-    if (root.Has("readback")) scene.readback = ReadResolution(root["readback"]);
-    CheckEvaluationMemory(scene);
-
-    std::vector<std::size_t> entryEnd;  // per geometry entry: the end of its triangles
-    if (root.Has("geometry")) {
-        for (const JsonField& entry : root["geometry"].Array()) {
-            const spatial::Transform transform = ReadEntryTransform(document, entry);
-            spatial::TriangleMesh osMesh;
-            if (entry.Has("mesh")) {
-                const spatial::MeshFrame frame = ReadMeshFrame(document, entry);
-                const std::filesystem::path file = ReadMeshPath(entry, baseDir);
-                spatial::TriangleMesh fileMesh;
-                try {
-                    fileMesh = spatial::LoadMesh(file);
-                } catch (const DomainError& e) {
-                    entry["mesh"].Fail(e.what());
-                }
-                osMesh = MeshInSceneFrame(entry, fileMesh, frame);
-            } else {
-                const JsonField primitive = entry["primitive"];
-                const std::string kind = primitive.String();
-                if (kind == "plane") {
-                    osMesh = spatial::MakePlane();
-                    if (!scene.floorPlane) scene.floorPlane = TransformedPlane(transform.Matrix());
-                } else if (kind == "box") {
-                    osMesh = spatial::MakeBox();
-                } else if (kind == "sphere") {
-                    osMesh = spatial::MakeSphere();
-                } else if (kind == "cylinder") {
-                    osMesh = spatial::MakeCylinder();
-                } else {
-                    primitive.Fail("must be one of plane, box, sphere, cylinder, got '" + kind +
-                                   "'");
-                }
+// /geometry into `scene`: each entry's mesh or primitive placed in the world; returns, per entry,
+// the end of its triangles.
+std::vector<std::size_t> ReadGeometry(const nlohmann::json& document, const JsonField& root,
+                                      const std::filesystem::path& baseDir, spatial::Scene* scene) {
+    std::vector<std::size_t> entryEnd;
+    if (!root.Has("geometry")) return entryEnd;
+    for (const JsonField& entry : root["geometry"].Array()) {
+        const spatial::Transform transform = ReadEntryTransform(document, entry);
+        spatial::TriangleMesh osMesh;
+        if (entry.Has("mesh")) {
+            const spatial::MeshFrame frame = ReadMeshFrame(document, entry);
+            const std::filesystem::path file = ReadMeshPath(entry, baseDir);
+            spatial::TriangleMesh fileMesh;
+            try {
+                fileMesh = spatial::LoadMesh(file);
+            } catch (const DomainError& e) {
+                entry["mesh"].Fail(e.what());
             }
-            spatial::TriangleMesh wsMesh = spatial::TransformMesh(osMesh, transform);
-            CheckEntryExtent(entry, osMesh, transform, wsMesh);
-            scene.geometry.Append(wsMesh);
-            CheckEvaluationMemory(scene);  // many entries of one large mesh add up
-            entryEnd.push_back(scene.geometry.triangles.size());
+            osMesh = MeshInSceneFrame(entry, fileMesh, frame);
+        } else {
+            osMesh = ReadPrimitive(entry, transform, scene);
         }
+        spatial::TriangleMesh wsMesh = spatial::TransformMesh(osMesh, transform);
+        CheckEntryExtent(entry, osMesh, transform, wsMesh);
+        scene->geometry.Append(wsMesh);
+        CheckEvaluationMemory(*scene);  // many entries of one large mesh add up
+        entryEnd.push_back(scene->geometry.triangles.size());
     }
+    return entryEnd;
+}
 
-    if (root.Has("generator")) {
-        const JsonField generator = root["generator"];
-        generator.ExpectObject({"kind", "count", "seed"});
-        const std::string kind = generator["kind"].String();
-        if (kind != "floor_objects")
-            generator["kind"].Fail("must be floor_objects, got '" + kind + "'");
-        const int count = static_cast<int>(generator["count"].Integer(1, 1000));
-        const auto seed = static_cast<std::uint64_t>(
-            generator["seed"].Integer(0, std::numeric_limits<long long>::max()));
-        glm::dvec4 floor;
-        scene.geometry.Append(spatial::FloorObjects(count, seed, &floor));
-        CheckEvaluationMemory(scene);
-        // A plane primitive, when there is one, is the floor the case author chose.
-        if (!scene.floorPlane) scene.floorPlane = floor;
+// /generator's objects into `scene`; its floor is the scene's unless a plane primitive came first.
+void ReadGenerator(const JsonField& generator, spatial::Scene* scene) {
+    generator.ExpectObject({"kind", "count", "seed"});
+    const std::string kind = generator["kind"].String();
+    if (kind != "floor_objects")
+        generator["kind"].Fail("must be floor_objects, got '" + kind + "'");
+    const int count = static_cast<int>(generator["count"].Integer(1, 1000));
+    const auto seed = static_cast<std::uint64_t>(
+        generator["seed"].Integer(0, std::numeric_limits<long long>::max()));
+    glm::dvec4 floor;
+    scene->geometry.Append(spatial::FloorObjects(count, seed, &floor));
+    CheckEvaluationMemory(*scene);
+    // A plane primitive, when there is one, is the floor the case author chose.
+    if (!scene->floorPlane) scene->floorPlane = floor;
+}
+
+// /camera_path's poses, each the case's camera moved.
+std::vector<spatial::Camera> ReadCameraPath(const JsonField& path, const spatial::Camera& camera) {
+    std::vector<spatial::Camera> poses;
+    for (const JsonField& pose : path.Array(1)) {
+        pose.ExpectObject({"position", "target"}, {"up"});
+        spatial::Camera moved = camera;
+        ReadPose(pose, &moved);
+        CheckPose(moved, pose);
+        poses.push_back(moved);
     }
+    return poses;
+}
 
-    if (root.Has("camera_path")) {
-        for (const JsonField& pose : root["camera_path"].Array(1)) {
-            pose.ExpectObject({"position", "target"}, {"up"});
-            spatial::Camera camera = scene.camera;
-            ReadPose(pose, &camera);
-            CheckPose(camera, pose);
-            scene.cameraPath.push_back(camera);
-        }
-    }
-
-    // Checks that need the whole scene.
-    const spatial::Bounds wsBounds = scene.geometry.ComputeBounds();
+// The checks that need the whole scene: geometry there and of a sane extent, every camera outside
+// it, every fixed point light outside its bounds and with a light space, the sweep's radius
+// beyond them.
+void CheckWholeScene(const JsonField& root, const spatial::Scene& scene,
+                     const std::vector<std::size_t>& entryEnd, const spatial::Bounds& wsBounds) {
     if (wsBounds.Empty())
         throw InputError(std::string(root.Has("geometry") ? "/geometry" : "/") +
                          ": the scene has no geometry (give geometry entries or a generator)");
@@ -536,6 +539,35 @@ spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::s
             "/light_sweep/radius: must be larger than the geometry's bounding radius " +
             FormatNumber(wsBounds.Radius()) + " (the sweep is centred on the bounds), got " +
             FormatNumber(scene.lightSweep->radius));
+}
+
+}  // namespace
+
+spatial::Scene SpatialSceneFromJson(const nlohmann::json& document, const std::string& fallbackName,
+                                    const std::filesystem::path& baseDir) {
+    const JsonField root(document, "");
+    root.ExpectObject({"camera"}, {"name", "description", "lights", "shadow_map", "readback",
+                                   "geometry", "generator", "light_sweep", "camera_path",
+                                   "cascades", "methods", "phases", "max_phases", "optimizer"});
+    spatial::Scene scene;
+    scene.name = CaseNameOf(root, fallbackName);
+    if (root.Has("description")) root["description"].String();
+    ReadCamera(root["camera"], &scene.camera);
+    if (root.Has("light_sweep")) scene.lightSweep = ReadLightSweep(root["light_sweep"]);
+    if (root.Has("cascades")) scene.partitions = ReadPartitions(root["cascades"]);
+    ReadMeasurement(root, &scene);
+    ReadLights(root, &scene);
+    std::vector<CaseMethodEntry> methods;  // checked against the lights once the geometry is read
+    if (root.Has("methods")) methods = ReadCaseMethods(root["methods"], scene, baseDir);
+    if (root.Has("shadow_map")) scene.shadowMap = ReadResolution(root["shadow_map"]);
+    if (root.Has("readback")) scene.readback = ReadResolution(root["readback"]);
+    CheckEvaluationMemory(scene);
+    const std::vector<std::size_t> entryEnd = ReadGeometry(document, root, baseDir, &scene);
+    if (root.Has("generator")) ReadGenerator(root["generator"], &scene);
+    if (root.Has("camera_path"))
+        scene.cameraPath = ReadCameraPath(root["camera_path"], scene.camera);
+    const spatial::Bounds wsBounds = scene.geometry.ComputeBounds();
+    CheckWholeScene(root, scene, entryEnd, wsBounds);
     CheckCaseMethodMatrices(methods, scene, wsBounds);
     for (CaseMethodEntry& entry : methods) scene.methods.push_back(std::move(entry.method));
     return scene;
