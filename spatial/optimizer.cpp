@@ -286,6 +286,99 @@ LightSamples SamplesWithinBudget(const LightSamples& samples, const OptimizerOpt
                             : ThinSamples(samples, options.maxSamples);
 }
 
+namespace {
+
+// Step 4b-ii for an axis: the map fitted around the cone of relevant rays, from the readback's
+// hull when there is one (RelevantHull::Fit), else from every generator (FitMapToPoints).
+struct AxisFit {
+    const RelevantHull* hull;  // null: fit from every generator
+    std::span<const glm::dvec3> lsCone;
+    Resolution map;
+    FitOptions options;
+    std::optional<LightMatrix> operator()(const glm::dvec3& p4) const {
+        return hull ? hull->Fit(p4, map, options) : FitMapToPoints(p4, lsCone, map, options);
+    }
+};
+
+// Where the search stands: the axis it is at, and the best map and energy so far.
+struct AxisSearch {
+    glm::dvec3 p4;
+    std::optional<LightMatrix> best;
+    double bestH = std::numeric_limits<double>::infinity();
+};
+
+// Algorithm 1's search (report §2.3): from `initialP4`, `options.iterations` times, rotate the
+// axis by each of options.anglesDeg about p4 × (−∇) and keep the candidate of least energy.
+// Counts candidates and the energy after each iteration into `r`.
+AxisSearch SearchAxis(const AxisFit& fit, const SearchEnergy& energy, const glm::dvec3& initialP4,
+                      const OptimizerOptions& options, OptimizerResult& r) {
+    AxisSearch s{glm::normalize(initialP4), std::nullopt};
+    s.best = fit(s.p4);
+    s.bestH = s.best ? energy(*s.best) : std::numeric_limits<double>::infinity();
+    r.hAfterIteration.push_back(s.bestH);
+    for (int it = 0; it < options.iterations && s.best; ++it) {
+        const glm::dvec3 g = energy.Gradient(*s.best);
+        const glm::dvec3 axis = glm::cross(s.p4, -g);
+        const double axisLength = glm::length(axis);
+        if (!(axisLength > 0.0) || !std::isfinite(axisLength)) break;
+        const glm::dvec3 unitAxis = axis / axisLength;
+        glm::dvec3 nextP4 = s.p4;
+        for (double deg : options.anglesDeg) {
+            ++r.candidatesTried;
+            const glm::dvec3 candidate = RotateAxis(s.p4, unitAxis, glm::radians(deg));
+            const std::optional<LightMatrix> m = fit(candidate);
+            if (!m) {
+                ++r.candidatesRejected;
+                continue;
+            }
+            const double h = energy(*m, s.bestH);
+            if (h < s.bestH) {
+                s.bestH = h;
+                s.best = m;
+                nextP4 = candidate;
+            }
+        }
+        s.p4 = nextP4;
+        r.hAfterIteration.push_back(s.bestH);
+    }
+    return s;
+}
+
+// The search's axis refined by Ceres LBFGS on the sphere (OptimizerOptions::refine), kept when
+// its energy is lower and the map does not collapse (Collapses); sets r.refineCollapsed.
+void RefineAxis(const AxisFit& fit, const LightSamples& samples, const OptimizerOptions& options,
+                AxisSearch& s, OptimizerResult& r) {
+    double x[3] = {s.p4.x, s.p4.y, s.p4.z};
+    ceres::GradientProblem problem(
+        new ceres::AutoDiffFirstOrderFunction<RefinedEnergy, 3>(new RefinedEnergy(
+            fit.hull->Vertices(), &samples, fit.map, fit.options, 1.0 / s.bestH, options.energy)),
+        new ceres::SphereManifold<3>());
+    ceres::GradientProblemSolver::Options solverOptions;
+    solverOptions.max_num_iterations = options.refineIterations;
+    solverOptions.logging_type = ceres::SILENT;
+    // Run to the iteration limit or a stationary point: h/h0 changes of 1e-12 still move p4
+    // by ~1e-6 rad near a flat minimum (the default 1e-6 stops ~1e-3 rad short).
+    solverOptions.function_tolerance = 1e-12;
+    // The Wolfe line search grows a decreasing step by this factor (default 10): on the
+    // sphere a step of a few radians wraps around and lands outside the valid cone, which the
+    // zoom phase cannot recover from. Tripling keeps the bracket within a fraction of a turn.
+    solverOptions.max_line_search_step_expansion = 3.0;
+    ceres::GradientProblemSolver::Summary summary;
+    ceres::Solve(solverOptions, problem, x, &summary);
+    const glm::dvec3 refined = glm::normalize(glm::dvec3(x[0], x[1], x[2]));
+    if (const std::optional<LightMatrix> m = fit(refined)) {
+        const double h = Energy(*m, samples, options.energy);
+        if (h < s.bestH && Collapses(*s.best, *m, samples, options.collapseFactor)) {
+            r.refineCollapsed = true;
+        } else if (h < s.bestH) {
+            s.bestH = h;
+            s.best = m;
+        }
+    }
+}
+
+}  // namespace
+
 OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec3& initialP4,
                                     Resolution map, const OptimizerOptions& options) {
     if (options.maxSamples != 0 && samples.lsX.size() > options.maxSamples) {
@@ -312,89 +405,33 @@ OptimizerResult OptimizeLightMatrix(const LightSamples& samples, const glm::dvec
     if (options.hullOnce) hull = RelevantHull::Of(lsCone, glm::normalize(initialP4));
     if (hull) r.hullVertices = hull->Vertices().size();
     r.hullMs = timer.Ms();
-    const auto fit = [&](const glm::dvec3& p4) {
-        return hull ? hull->Fit(p4, map, fitOptions) : FitMapToPoints(p4, lsCone, map, fitOptions);
-    };
+    const AxisFit fit{hull ? &*hull : nullptr, lsCone, map, fitOptions};
 
     timer.Restart();
     const SearchEnergy energy(samples, options.energy);  // stops once the bound is reached
-    glm::dvec3 p4 = glm::normalize(initialP4);
-    std::optional<LightMatrix> best = fit(p4);
-    double bestH = best ? energy(*best) : std::numeric_limits<double>::infinity();
-    r.hAfterIteration.push_back(bestH);
-    for (int it = 0; it < options.iterations && best; ++it) {
-        const glm::dvec3 g = energy.Gradient(*best);
-        const glm::dvec3 axis = glm::cross(p4, -g);
-        const double axisLength = glm::length(axis);
-        if (!(axisLength > 0.0) || !std::isfinite(axisLength)) break;
-        const glm::dvec3 unitAxis = axis / axisLength;
-        glm::dvec3 nextP4 = p4;
-        for (double deg : options.anglesDeg) {
-            ++r.candidatesTried;
-            const glm::dvec3 candidate = RotateAxis(p4, unitAxis, glm::radians(deg));
-            const std::optional<LightMatrix> m = fit(candidate);
-            if (!m) {
-                ++r.candidatesRejected;
-                continue;
-            }
-            const double h = energy(*m, bestH);
-            if (h < bestH) {
-                bestH = h;
-                best = m;
-                nextP4 = candidate;
-            }
-        }
-        p4 = nextP4;
-        r.hAfterIteration.push_back(bestH);
-    }
+    AxisSearch s = SearchAxis(fit, energy, initialP4, options, r);
     r.searchMs = timer.Ms();
-    if (!best) {
+    if (!s.best) {
         // Not even the initial axis sees every relevant point; nothing to optimize.
         r.usedFallback = true;
-        best = FitMapToPoints(glm::normalize(initialP4), lsCone, map, fitOptions);
-        if (!best)
+        s.best = FitMapToPoints(glm::normalize(initialP4), lsCone, map, fitOptions);
+        if (!s.best)
             throw DomainError(Subject::kLight,
                               "no light matrix from the initial axis sees every visible point");
-        bestH = Energy(*best, samples, options.energy);
+        s.bestH = Energy(*s.best, samples, options.energy);
     }
-    r.hBeforeRefine = bestH;
+    r.hBeforeRefine = s.bestH;
 
     // h = 0 without samples: nothing to refine. The other energies have the prior to go by.
     const bool anything = !samples.lsX.empty() || (options.energy.priorWeight > 0.0 &&
-                                                   !samples.lsPrior.empty() && bestH > 0.0);
+                                                   !samples.lsPrior.empty() && s.bestH > 0.0);
     if (options.refine && hull && hull->Vertices().size() >= 3 && anything) {
         timer.Restart();
-        double x[3] = {p4.x, p4.y, p4.z};
-        ceres::GradientProblem problem(
-            new ceres::AutoDiffFirstOrderFunction<RefinedEnergy, 3>(new RefinedEnergy(
-                hull->Vertices(), &samples, map, fitOptions, 1.0 / bestH, options.energy)),
-            new ceres::SphereManifold<3>());
-        ceres::GradientProblemSolver::Options solverOptions;
-        solverOptions.max_num_iterations = options.refineIterations;
-        solverOptions.logging_type = ceres::SILENT;
-        // Run to the iteration limit or a stationary point: h/h0 changes of 1e-12 still move p4
-        // by ~1e-6 rad near a flat minimum (the default 1e-6 stops ~1e-3 rad short).
-        solverOptions.function_tolerance = 1e-12;
-        // The Wolfe line search grows a decreasing step by this factor (default 10): on the
-        // sphere a step of a few radians wraps around and lands outside the valid cone, which the
-        // zoom phase cannot recover from. Tripling keeps the bracket within a fraction of a turn.
-        solverOptions.max_line_search_step_expansion = 3.0;
-        ceres::GradientProblemSolver::Summary summary;
-        ceres::Solve(solverOptions, problem, x, &summary);
-        const glm::dvec3 refined = glm::normalize(glm::dvec3(x[0], x[1], x[2]));
-        if (const std::optional<LightMatrix> m = fit(refined)) {
-            const double h = Energy(*m, samples, options.energy);
-            if (h < bestH && Collapses(*best, *m, samples, options.collapseFactor)) {
-                r.refineCollapsed = true;
-            } else if (h < bestH) {
-                bestH = h;
-                best = m;
-            }
-        }
+        RefineAxis(fit, samples, options, s, r);
         r.refineMs = timer.Ms();
     }
-    r.matrix = *best;
-    r.h = bestH;
+    r.matrix = *s.best;
+    r.h = s.bestH;
     return r;
 }
 
