@@ -642,14 +642,7 @@ const char* SignalName(int signal) {
         discarded = discarded || (!staging->dir.empty() && !staging->committed);
         staging->Discard();
     }
-    for (const auto& [path, fd] : SignalRemovals()) {
-        struct stat open {
-        }, named{};
-        if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &open) == 0 &&
-            ::lstat(path.c_str(), &named) == 0 && open.st_dev == named.st_dev &&
-            open.st_ino == named.st_ino && open.st_size == 0)
-            ::unlink(path.c_str());
-    }
+    for (const auto& [path, fd] : SignalRemovals()) RemoveIfLastEmptyHolder(path, fd);
     std::string line = std::string(::isatty(STDERR_FILENO) ? "\n" : "") +
                        "lexel: error: interrupted by " + SignalName(signal) +
                        (discarded ? "; no --out file was written" : "") + "\n";
@@ -678,6 +671,15 @@ std::string PngBytesDefect(const std::string& bytes) {
         if (type == "IEND") return at == bytes.size() ? "" : "bytes follow the IEND chunk";
     }
     return "truncated: " + std::to_string(bytes.size()) + " bytes end before the IEND chunk";
+}
+
+void RemoveIfLastEmptyHolder(const fs::path& path, int fd) {
+    struct stat open {
+    }, named{};
+    if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &open) == 0 &&
+        ::lstat(path.c_str(), &named) == 0 && open.st_dev == named.st_dev &&
+        open.st_ino == named.st_ino && open.st_size == 0)
+        ::unlink(path.c_str());
 }
 
 void RemoveOnSignal(const fs::path& path, int fd) {

@@ -136,4 +136,9 @@ std::string PngBytesDefect(const std::string& bytes);
 void RemoveOnSignal(const std::filesystem::path& path, int fd);
 void ForgetOnSignal(const std::filesystem::path& path, int fd);
 
+// Removes `path` when it still names the file open as `fd`, that file is empty, and no other
+// process holds it (an exclusive flock on `fd` is granted): what the last holder of an empty
+// journal does, on its own and on a signal.
+void RemoveIfLastEmptyHolder(const std::filesystem::path& path, int fd);
+
 }  // namespace lexel::cases

@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <utility>
+#include <vector>
 
 #include "lexel/cases/load/sweep_record_reader.h"
 #include "lexel/cases/report/output.h"
@@ -67,16 +69,20 @@ std::string ReadFd(int fd, const std::string& shown) {
     return text;
 }
 
-// What stands at the journal's path when it is not a regular file, in words ("is a symbolic
-// link ..."), found with lstat so that nothing there is opened; empty for a regular file or
-// nothing.
-std::string NotAJournal(const fs::path& path) {
+// The mode of what stands at the journal's path when it is not a regular file, found with lstat
+// so that nothing there is opened; nullopt for a regular file or nothing.
+std::optional<::mode_t> NotRegularAt(const fs::path& path) {
     struct stat st {};
-    if (::lstat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return {};
-    if (S_ISLNK(st.st_mode))
+    if (::lstat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return std::nullopt;
+    return st.st_mode;
+}
+
+// Why a file of `mode` (NotRegularAt's) is no journal, in words ("is a symbolic link ...").
+std::string NotAJournal(::mode_t mode) {
+    if (S_ISLNK(mode))
         return "is a symbolic link (lexel opens no file beside --out through a link; remove it)";
-    if (S_ISDIR(st.st_mode)) return "is a directory, not a resume journal (remove it)";
-    return "is " + spatial::FileKind(st.st_mode) + ", not a resume journal";
+    if (S_ISDIR(mode)) return "is a directory, not a resume journal (remove it)";
+    return "is " + spatial::FileKind(mode) + ", not a resume journal";
 }
 
 // Whether open(2) failing with `reason` is the path's fault (exit 2, before computing) rather
@@ -110,10 +116,10 @@ InputError HeldBy(const fs::path& path) {
 }
 
 // Refuses a journal line's entry (`one`: one light or one light of the study) for a light outside
-// `shard` of `identity`'s lights, or for a count the partitions study does not sweep: a journal of
-// this run holds none.
+// `shard` of `identity`'s lights, or for a count not among `studyCounts` (the partitions study's,
+// CascadeStudyExtraCounts): a journal of this run holds none.
 void CheckInShare(const SweepDone& one, const SweepIdentity& identity, SweepShard shard,
-                  const std::string& where) {
+                  const std::vector<int>& studyCounts, const std::string& where) {
     const auto inShare = [&](std::size_t index) {
         return index < identity.lights && index % shard.count == shard.index;
     };
@@ -124,10 +130,9 @@ void CheckInShare(const SweepDone& one, const SweepIdentity& identity, SweepShar
     };
     for (const auto& [index, light] : one.lights)
         if (!inShare(index)) throw outside(index);
-    const std::vector<int> counts = CascadeStudyExtraCounts(identity.cascades);
     for (const auto& [key, light] : one.study) {
         if (!inShare(key.second)) throw outside(key.second);
-        if (std::find(counts.begin(), counts.end(), key.first) == counts.end())
+        if (std::find(studyCounts.begin(), studyCounts.end(), key.first) == studyCounts.end())
             throw InputError(where + ": the partitions study has no count k = " +
                              std::to_string(key.first) + ": a damaged journal");
     }
@@ -169,8 +174,8 @@ SweepJournal::SweepJournal(const fs::path& path, const SweepIdentity& identity, 
 void SweepJournal::Open() {
     const std::string shown = "--out: " + path_.string() + ": ";
     for (int attempt = 0;; ++attempt) {
-        if (const std::string what = NotAJournal(path_); !what.empty())
-            throw InputError(shown + what);
+        if (const std::optional<::mode_t> mode = NotRegularAt(path_))
+            throw InputError(shown + NotAJournal(*mode));
         fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         created_ = fd_ >= 0;
         int reason = errno;
@@ -180,10 +185,11 @@ void SweepJournal::Open() {
             if (fd_ < 0 && reason == ENOENT && attempt < 8) continue;  // removed in between
         }
         if (fd_ < 0) {
-            const std::string what = reason == ELOOP ? NotAJournal(path_) : "";
+            const std::optional<::mode_t> mode =
+                reason == ELOOP ? NotRegularAt(path_) : std::nullopt;
             const std::string text =
-                what.empty() ? "cannot create the resume journal (" + ErrnoText(reason) + ")"
-                             : what;
+                mode ? NotAJournal(*mode)
+                     : "cannot create the resume journal (" + ErrnoText(reason) + ")";
             if (PathsFault(reason)) throw InputError(shown + text);
             throw std::runtime_error(path_.string() + ": " + text);
         }
@@ -237,6 +243,7 @@ void SweepJournal::ReadFinished(const std::string& text, const SweepIdentity& id
                          diff + "; run without --resume to start over");
     const std::size_t methods = identity.methods.size();
     const std::size_t studyMethods = CascadeStudyMethods(identity.methods).size();
+    const std::vector<int> studyCounts = CascadeStudyExtraCounts(identity.cascades);
     std::size_t line = 1, kept = end + 1;
     for (std::size_t at = end + 1; at < text.size(); at = end + 1) {
         end = text.find('\n', at);
@@ -245,7 +252,7 @@ void SweepJournal::ReadFinished(const std::string& text, const SweepIdentity& id
         const std::string where = shown + ":" + std::to_string(line);
         SweepDone one;  // this line's entry, checked alone; a later line replaces an earlier one
         ParseJournalEntry(text.substr(at, end - at), where, methods, studyMethods, one);
-        CheckInShare(one, identity, shard, where);
+        CheckInShare(one, identity, shard, studyCounts, where);
         for (auto& [index, light] : one.lights) done_.lights[index] = std::move(light);
         for (auto& [key, light] : one.study) done_.study[key] = std::move(light);
         kept = end + 1;
@@ -260,9 +267,9 @@ void SweepJournal::ReadFinished(const std::string& text, const SweepIdentity& id
 
 SweepExclusion::SweepExclusion(const fs::path& outDir) : path_(SweepJournal::PathFor(outDir)) {
     for (int attempt = 0; attempt <= 8; ++attempt) {
-        if (const std::string what = NotAJournal(path_); !what.empty()) {
-            if (what.starts_with("is a symbolic link"))
-                throw InputError("--out: " + path_.string() + ": " + what);
+        if (const std::optional<::mode_t> mode = NotRegularAt(path_)) {
+            if (S_ISLNK(*mode))
+                throw InputError("--out: " + path_.string() + ": " + NotAJournal(*mode));
             return;  // a directory, a FIFO, ...: no sweep can journal here either
         }
         fd_ = ::open(path_.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
@@ -298,11 +305,7 @@ SweepExclusion::SweepExclusion(const fs::path& outDir) : path_(SweepJournal::Pat
 SweepExclusion::~SweepExclusion() {
     if (fd_ < 0) return;
     ForgetOnSignal(path_, fd_);
-    struct stat st {};
-    // The last holder of an empty journal removes it (a sweep's journal, with lines, is kept).
-    if (Flock(fd_, LOCK_EX | LOCK_NB) && ::fstat(fd_, &st) == 0 && st.st_size == 0 &&
-        StillNamed(fd_, path_))
-        ::unlink(path_.c_str());
+    RemoveIfLastEmptyHolder(path_, fd_);  // a sweep's journal, with lines, is kept
     ::close(fd_);
 }
 

@@ -20,6 +20,7 @@
 #include "lexel/cases/report/sweep_journal.h"
 #include "lexel/cases/run/sweep_share.h"
 #include "lexel/solvers/errors.h"
+#include "scratch_directory.h"
 
 namespace lexel::cases {
 namespace {
@@ -234,12 +235,7 @@ TEST(SweepJournal, LinesReadBackIntoTheFinishedLights) {
 // A scratch directory of this test, removed after it.
 class SweepJournalFile : public ::testing::Test {
   protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "lexel_journal_test_XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    void SetUp() override { ASSERT_FALSE(dir_.empty()); }
     // The message of the InputError that making a journal at `path` throws, or "no error".
     static std::string Refusal(const fs::path& path, bool resume, SweepShard shard = {}) {
         try {
@@ -249,7 +245,8 @@ class SweepJournalFile : public ::testing::Test {
         }
         return "no error";
     }
-    fs::path dir_;
+    const test::ScratchDirectory scratch_{"lexel_journal_test"};
+    const fs::path dir_ = scratch_.Path();
 };
 
 // Before: a link at the journal's path was followed, its target truncated and then the link

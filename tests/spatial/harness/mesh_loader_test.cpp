@@ -21,6 +21,7 @@
 
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/mesh_file_check.h"
+#include "scratch_directory.h"
 
 namespace lexel::spatial {
 namespace {
@@ -296,21 +297,8 @@ TEST(MeshLoader, RefusesLongOffLinesAndUtf16Or32Text) {
 }
 
 // A fresh directory for one test, removed afterwards.
-class ScratchDirectory {
-  public:
-    ScratchDirectory() {
-        std::string pattern =
-            (std::filesystem::temp_directory_path() / "lexel_mesh_paths_XXXXXX").string();
-        if (::mkdtemp(pattern.data()) != nullptr) path_ = pattern;
-    }
-    ~ScratchDirectory() {
-        std::error_code error;
-        if (!path_.empty()) std::filesystem::remove_all(path_, error);
-    }
-    const std::filesystem::path& Path() const { return path_; }
-
-  private:
-    std::filesystem::path path_;
+struct ScratchDirectory : test::ScratchDirectory {
+    ScratchDirectory() : test::ScratchDirectory("lexel_mesh_paths") {}
 };
 
 // A mesh path that is not a regular file says what it is (before: "mesh file not
