@@ -626,11 +626,12 @@ BENCHMARK(BM_WalkthroughFineReadbackBudget)->Unit(benchmark::kMillisecond)->UseR
 
 // The partitioned methods: per light, the cascades of one scheme at the default k = 4
 // against `optimal` (every start, Algorithm 1 from each) in the same run on one core; ratio =
-// scheme / optimal. Argument: the index into PartitionedMethodNames().
+// scheme / optimal. Argument: the index into MethodNamesOf(MethodFamily::kPartitioned).
 void BM_WalkthroughPartitioned(benchmark::State& state) {
     tbb::global_control oneCore(tbb::global_control::max_allowed_parallelism, 1);
     const Walkthrough& w = Case();
-    const std::string name = PartitionedMethodNames().at(static_cast<std::size_t>(state.range(0)));
+    const std::string name =
+        MethodNamesOf(MethodFamily::kPartitioned).at(static_cast<std::size_t>(state.range(0)));
     state.SetLabel(name);
     double optimalMs = 0.0, partitionedMs = 0.0;
     for (auto _ : state) {

@@ -7,6 +7,8 @@
 //      readback's shadow mask under it → MakeLightSamples (samples.h);
 //   3. OptimizeLightMatrix (optimizer.h) from the standard map's axis → LightMatrix →
 //      ClipFromWorld with LightDepthRange, the 4×4 to render the shadow map with.
+// Every named method (optimal, the baselines, the cascades) is also one call by name:
+// ComputeLightMatrix (methods/registry.h; MethodInfos lists them).
 // spatial/README.md, the embedding guide, has the whole of it, compiled by the test suite.
 #pragma once
 
@@ -19,6 +21,7 @@
 #include "lexel/spatial/energy_gradient.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
+#include "lexel/spatial/methods/registry.h"
 #include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/partitions.h"

@@ -8,7 +8,7 @@
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/spatial/harness/methods.h"
-#include "lexel/spatial/harness/warped_methods.h"
+#include "lexel/spatial/methods/registry.h"
 
 namespace lexel::cases {
 
@@ -94,11 +94,12 @@ BackendKind BackendOf(const std::string& name) {
 }
 
 // With --backend gl, one line on stderr for each method whose map the GPU does not render
-// (logpsm: a logarithm is no vertex warp, its map is ray-cast on the CPU: warped_methods.h).
+// (MethodTraits::gpuMap false: logpsm, whose logarithm is no vertex warp; its map is ray-cast on
+// the CPU).
 void NoteCpuOnlyMethods(const std::vector<std::string>& methods, BackendKind backend) {
     if (backend != BackendKind::kGl) return;
     for (const std::string& m : methods)
-        if (spatial::IsWarpedMethod(m) && !spatial::WarpedMethodRendersOnGl(m))
+        if (!spatial::RendersOnGl(m))
             std::cerr << "lexel: note: --backend gl: " << m
                       << "'s map is ray-cast on the CPU (a logarithmic warp is no vertex warp)\n";
 }

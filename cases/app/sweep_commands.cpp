@@ -52,7 +52,7 @@
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/primitives.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
-#include "lexel/spatial/harness/warped_methods.h"
+#include "lexel/spatial/methods/registry.h"
 
 #ifndef LEXEL_SOURCE_DATA_DIR
 #define LEXEL_SOURCE_DATA_DIR ""

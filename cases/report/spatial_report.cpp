@@ -11,7 +11,7 @@
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/spatial/harness/images.h"
-#include "lexel/spatial/harness/warped_methods.h"
+#include "lexel/spatial/methods/registry.h"
 
 namespace lexel::cases {
 

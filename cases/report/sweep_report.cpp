@@ -11,8 +11,8 @@
 #include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
-#include "lexel/spatial/harness/method_names.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
+#include "lexel/spatial/methods/method_info.h"
 
 namespace lexel::cases {
 namespace {
@@ -69,8 +69,10 @@ std::optional<View> FairView(const SweepResult& r) {
 // The equal-texel table: optimal (one map) against the partitioned methods and the virtual
 // shadow maps, when any ran.
 std::optional<View> EqualTexelView(const SweepResult& r) {
-    std::vector<std::string> partitioned = spatial::PartitionedMethodNames();
-    for (const std::string& m : spatial::VirtualMethodNames()) partitioned.push_back(m);
+    std::vector<std::string> partitioned =
+        spatial::MethodNamesOf(spatial::MethodFamily::kPartitioned);
+    for (const std::string& m : spatial::MethodNamesOf(spatial::MethodFamily::kVirtual))
+        partitioned.push_back(m);
     if (std::none_of(r.methods.begin(), r.methods.end(), [](const std::string& m) {
             return spatial::IsPartitionedMethod(m) || spatial::IsVirtualMethod(m);
         }))

@@ -17,7 +17,7 @@
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
-#include "lexel/spatial/harness/warped_methods.h"
+#include "lexel/spatial/methods/registry.h"
 
 namespace lexel::cases {
 

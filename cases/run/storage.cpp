@@ -98,47 +98,69 @@ double BestSingleMapStorage(const spatial::ViewFrustum& frustum, const glm::dvec
     return std::min({best, sc, sd});
 }
 
-SchemeValue AnalyticStorageOf(const std::string& method, int partitions,
+namespace {
+
+// TSM's single map: the 80% rule with the focus at mid-depth puts the projection centre λ/3
+// before the near plane (tsm.h: η = λ δ'(1 + ξ)/(λ(1 − ξ) − 2δ'), δ' = λ/2, ξ = −0.6), λ = f − n
+// for an overhead light; over sin γ for others, as the schemes' LiSPSM (Lloyd 2006 §4.4).
+SchemeValue TrapezoidStorage(const spatial::ViewFrustum& frustum, const glm::dvec3& esToLight) {
+    const glm::dvec3 toLight = glm::normalize(esToLight);
+    const double sinGamma = glm::length(glm::cross(glm::dvec3(0.0, 0.0, -1.0), toLight));
+    const double nPrime = sinGamma > 1e-3
+                              ? (frustum.farPlane - frustum.nearPlane) / (3.0 * sinGamma)
+                              : std::numeric_limits<double>::infinity();
+    return {"TSM (n' = (f − n) / 3 sin γ)",
+            spatial::StorageFactorForWarpOffset(frustum, esToLight, nPrime)};
+}
+
+}  // namespace
+
+SchemeValue AnalyticStorageOf(spatial::StorageModel model, int partitions,
                               const spatial::ViewFrustum& frustum, const glm::dvec3& esToLight) {
     const auto scheme = [&](const std::string& label, const spatial::Scheme& s) {
         return SchemeValue{label, spatial::EvaluateScheme(frustum, esToLight, s).storage};
     };
     const std::string k = std::to_string(partitions);
-    if (method == "pssm" || method.rfind("sdsm", 0) == 0) {
-        if (method.rfind("sdsm-optimal", 0) == 0)
+    using enum spatial::StorageModel;
+    switch (model) {
+        case kBestSingleMap:
+            return {"best single map", BestSingleMapStorage(frustum, esToLight)};
+        case kUnwarped:
+            return scheme("no warp", spatial::Scheme::Zp(1));
+        case kLispsm:
+            return scheme("LiSPSM", spatial::Scheme::ZpWarp(1, 0.0));
+        case kPsm:
+            return scheme("PSM", spatial::Scheme::ZpWarp(1, 1.0));
+        case kTrapezoid:
+            return TrapezoidStorage(frustum, esToLight);
+        case kLogPsm:
+            return {"LogPSM", spatial::LogPsmStorageFactor(frustum, esToLight)};
+        // RTW's warps follow the scene's importance: no closed form in Lloyd's analysis.
+        case kAdaptive:
+            return {"adaptive (RTW)", std::numeric_limits<double>::quiet_NaN()};
+        case kZPartitions:
+            return scheme("ZP (k = " + k + ")", spatial::Scheme::Zp(partitions));
+        case kZPartitionsWarped:
             return scheme("ZP + W (k = " + k + ")", spatial::Scheme::ZpWarp(partitions));
-        return scheme("ZP (k = " + k + ")", spatial::Scheme::Zp(partitions));
+        case kFacePartitionsWarped:
+            return scheme("FP + W", spatial::Scheme::FpZpWarp(1));
+        case kVirtualLevels: {
+            // A virtual map's levels halve the texel width per level and each pixel takes the
+            // level its footprint asks for: unwarped z-partitions with ratio ρ ≤ 2,
+            // k = ⌈log₂ f/n⌉.
+            const int levels =
+                std::max(1, static_cast<int>(std::ceil(std::log2(frustum.DepthRatio()) - 1e-9)));
+            return scheme("ZP, k = ⌈log₂ f/n⌉", spatial::Scheme::Zp(levels));
+        }
     }
-    if (method == "zp-lispsm")
-        return scheme("ZP + W (k = " + k + ")", spatial::Scheme::ZpWarp(partitions));
-    if (method == "fp-lispsm") return scheme("FP + W", spatial::Scheme::FpZpWarp(1));
-    if (method.rfind("vsm", 0) == 0) {
-        // A virtual map's levels halve the texel width per level and each pixel takes the level
-        // its footprint asks for: unwarped z-partitions with ratio ρ ≤ 2, k = ⌈log₂ f/n⌉.
-        const int levels =
-            std::max(1, static_cast<int>(std::ceil(std::log2(frustum.DepthRatio()) - 1e-9)));
-        return scheme("ZP, k = ⌈log₂ f/n⌉", spatial::Scheme::Zp(levels));
-    }
-    if (method.rfind("tsm", 0) == 0) {
-        // The 80% rule with the focus at mid-depth puts the projection centre λ/3 before the near
-        // plane (tsm.h: η = λ δ'(1 + ξ)/(λ(1 − ξ) − 2δ'), δ' = λ/2, ξ = −0.6), λ = f − n for an
-        // overhead light; over sin γ for others, as the schemes' LiSPSM (Lloyd 2006 §4.4).
-        const glm::dvec3 toLight = glm::normalize(esToLight);
-        const double sinGamma = glm::length(glm::cross(glm::dvec3(0.0, 0.0, -1.0), toLight));
-        const double nPrime = sinGamma > 1e-3
-                                  ? (frustum.farPlane - frustum.nearPlane) / (3.0 * sinGamma)
-                                  : std::numeric_limits<double>::infinity();
-        return {"TSM (n' = (f − n) / 3 sin γ)",
-                spatial::StorageFactorForWarpOffset(frustum, esToLight, nPrime)};
-    }
-    if (method == "logpsm") return {"LogPSM", spatial::LogPsmStorageFactor(frustum, esToLight)};
-    // RTW's warps follow the scene's importance: no closed form in Lloyd's analysis.
-    if (method.rfind("rtw", 0) == 0)
-        return {"adaptive (RTW)", std::numeric_limits<double>::quiet_NaN()};
-    if (method.rfind("focused", 0) == 0) return scheme("no warp", spatial::Scheme::Zp(1));
-    if (method.rfind("lispsm", 0) == 0) return scheme("LiSPSM", spatial::Scheme::ZpWarp(1, 0.0));
-    if (method.rfind("psm", 0) == 0) return scheme("PSM", spatial::Scheme::ZpWarp(1, 1.0));
     return {"best single map", BestSingleMapStorage(frustum, esToLight)};
+}
+
+SchemeValue AnalyticStorageOf(const std::string& method, int partitions,
+                              const spatial::ViewFrustum& frustum, const glm::dvec3& esToLight) {
+    const spatial::MethodInfo* info = spatial::FindMethodInfo(method);
+    return AnalyticStorageOf(info ? info->storage : spatial::StorageModel::kBestSingleMap,
+                             partitions, frustum, esToLight);
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lexel/spatial/harness/scene.h"
+#include "lexel/spatial/methods/method_info.h"
 #include "lexel/spatial/studies/storage_factor.h"
 
 namespace lexel::cases {
@@ -50,19 +51,23 @@ StorageStudy RunStorageStudy(const spatial::ViewFrustum& frustum,
 // The view frustum of a camera (fov, aspect from its resolution, near, far).
 spatial::ViewFrustum FrustumOf(const spatial::Camera& camera);
 
-// The analytic S̄ (vertex rule, EvaluateScheme) a method's kind of map needs for the light: its
-// scheme's label and value. Single maps: focused* unwarped, lispsm* LiSPSM (η = 0), psm* PSM
-// (η = 1); optimal*, plane-optimal, normal: the best single map, the smallest S̄ over n'
-// (BestSingleMapStorage). Partitioned (k maps): pssm, sdsm* ZP (unwarped, logarithmic splits),
-// zp-lispsm and sdsm-optimal* ZP + W, fp-lispsm FP + W (one map per face, no z-split). tsm*: the
-// single map of n' = (f − n) / (3 sin γ), the 80% rule with the focus at mid-depth; vsm*: ZP with
+// The analytic S̄ (vertex rule, EvaluateScheme) a storage model gives the light, with k maps for
+// the partitioned models: its scheme's label and value. kBestSingleMap: the smallest S̄ over n'
+// (BestSingleMapStorage); kUnwarped "no warp" (η = ∞); kLispsm "LiSPSM" (η = 0); kPsm "PSM"
+// (η = 1); kTrapezoid the single map of n' = (f − n) / (3 sin γ), the 80% rule with the focus at
+// mid-depth; kLogPsm LogPSM (LogPsmStorageFactor: S̄_opt with the light overhead); kAdaptive
+// "adaptive (RTW)" with no value (NaN: an empty cell, null in JSON), its warps having no closed
+// form; kZPartitions "ZP" (unwarped, logarithmic splits); kZPartitionsWarped "ZP + W";
+// kFacePartitionsWarped "FP + W" (one map per face, no z-split); kVirtualLevels ZP with
 // k = ⌈log₂ f/n⌉ unwarped maps (ρ ≤ 2: a level per halving of the texel, as its pages have).
-// Warped: logpsm LogPSM (LogPsmStorageFactor: S̄_opt with the light overhead); rtw* "adaptive
-// (RTW)" with no value (NaN: an empty cell, null in JSON), its warps having no closed form.
 struct SchemeValue {
     std::string scheme;
     double storage = 0.0;
 };
+SchemeValue AnalyticStorageOf(spatial::StorageModel model, int partitions,
+                              const spatial::ViewFrustum& frustum, const glm::dvec3& esToLight);
+// The model the method declares (MethodInfo::storage); the best single map for a name the
+// registry does not know (a case's own method).
 SchemeValue AnalyticStorageOf(const std::string& method, int partitions,
                               const spatial::ViewFrustum& frustum, const glm::dvec3& esToLight);
 // min over n' of StorageFactorForWarpOffset (a geometric grid of n' from 10⁻³ n to 10⁶ n and +∞,

@@ -21,9 +21,9 @@
 #include <string_view>
 #include <vector>
 
-#include "lexel/spatial/harness/method_names.h"
 #include "lexel/spatial/harness/render_backend.h"
 #include "lexel/spatial/harness/scene.h"
+#include "lexel/spatial/methods/method_info.h"
 
 namespace lexel::spatial {
 

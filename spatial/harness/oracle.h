@@ -16,15 +16,16 @@
 #include <string>
 
 #include "lexel/spatial/light_matrix.h"
+#include "lexel/spatial/methods/method_info.h"
 #include "lexel/spatial/optimizer.h"
 
 namespace lexel::spatial {
 
-// The method's name; the Evaluator computes it (it needs the truth), from the fair single-map
-// methods' matrices (FairMethodNames) as starts, each candidate scored by its mean over K phases
-// held out of the K the evaluation reports (HeldOutSubTexelPhases, sub_texel_phase.h), so that
-// the reported bound is not the minimum of 64 noisy means (the winner's curse).
-inline constexpr const char* kOracleMethod = "optimal-oracle";
+// kOracleMethod (method_info.h; bound_methods.cpp registers it): the Evaluator computes it (it
+// needs the truth), from the fair single-map methods' matrices (FairMethodNames) as starts, each
+// candidate scored by its mean over K phases held out of the K the evaluation reports
+// (HeldOutSubTexelPhases, sub_texel_phase.h), so that the reported bound is not the minimum of 64
+// noisy means (the winner's curse).
 
 struct OracleStart {
     std::string name;  // the method it came from

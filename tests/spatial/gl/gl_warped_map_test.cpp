@@ -20,7 +20,7 @@
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/ray_cast_map.h"
 #include "lexel/spatial/harness/ray_caster.h"
-#include "lexel/spatial/harness/warped_methods.h"
+#include "lexel/spatial/methods/registry.h"
 #include "spatial/gl/gl_test_support.h"
 
 namespace lexel::spatial {
@@ -82,7 +82,7 @@ void ExpectGpuWarpedMapsMatchTheRayCastMaps(const Scene& scene, const std::vecto
         context.readback = &readback;
         context.frame = scene.camera.resolution;
         for (const char* method : methods) {
-            const MethodMatrix m = WarpedLightMatrix(method, context);
+            const MethodMatrix m = ComputeLightMatrix(method, context);
             ASSERT_TRUE(m.warp);
             const std::optional<ShadowMap> onGpu =
                 gl->RenderWarpedShadowMap(lightSpace, *m.warp, scene.shadowMap);

@@ -2,8 +2,6 @@
 // box scene lit from overhead is within 10% of its analytic value (Lloyd et al. 2008; at γ = 90°
 // the analytic S̄_opt of Lloyd 2006 Appendix C) and its texels split as that analysis says; every
 // warped method gets the other single maps' texels and covers what focused-tight covers.
-#include "lexel/spatial/harness/warped_methods.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +12,7 @@
 #include "lexel/spatial/cascades.h"
 #include "lexel/spatial/harness/evaluation.h"
 #include "lexel/spatial/logpsm.h"
+#include "lexel/spatial/methods/registry.h"
 #include "lexel/spatial/perspective_aliasing.h"
 #include "lexel/spatial/rtw.h"
 #include "lexel/spatial/studies/storage_factor.h"
