@@ -25,6 +25,7 @@
 #include "lexel/cases/report/flatland_report.h"
 #include "lexel/cases/report/html_report.h"
 #include "lexel/cases/report/lowres_report.h"
+#include "lexel/cases/report/method_listing.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/report/spatial_report.h"
 #include "lexel/cases/report/storage_report.h"
@@ -48,7 +49,7 @@
 #include "lexel/spatial/harness/mesh_loader.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/primitives.h"
-#include "lexel/spatial/harness/warped_methods.h"
+#include "lexel/spatial/methods/registry.h"
 
 #ifndef LEXEL_SOURCE_DATA_DIR
 #define LEXEL_SOURCE_DATA_DIR ""
@@ -408,6 +409,11 @@ int MeshInfoCommand(const std::string& meshPath, const std::string& casePath) {
             << '\n';
     }
     std::cout << out.str();
+    return 0;
+}
+
+int MethodsCommand(bool json) {
+    std::cout << (json ? MethodListingJson() : MethodListingText());
     return 0;
 }
 

@@ -96,6 +96,8 @@ int MeshInfoCommand(const std::string& meshPath, const std::string& casePath);
 
 // The version and the backends this build and machine offer (the GL renderer, or why none).
 int InfoCommand(const std::string& version);
+// Every method lexel knows (MethodListingText, or MethodListingJson when `json`) on stdout.
+int MethodsCommand(bool json);
 
 int TablesCommand(const std::string& outDir, const std::string& casesDir);
 int LowresCommand(const std::string& casePath, const std::string& outDir);

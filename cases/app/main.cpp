@@ -255,6 +255,16 @@ Command RegisterStorage(CLI::App& app) {
     return [flags] { return cases::StorageCommand(*flags); };
 }
 
+Command RegisterMethods(CLI::App& app) {
+    auto* methods = app.add_subcommand(
+        "methods", "Every method: its family, whether it runs by default, its storage model");
+    auto format = std::make_shared<std::string>("text");
+    methods->add_option("--format", *format, "text (a table) or json (for scripts)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"text", "json"}));
+    return [format] { return cases::MethodsCommand(*format == "json"); };
+}
+
 Command RegisterMeshInfo(CLI::App& app) {
     auto* meshInfo = app.add_subcommand(
         "mesh-info", "A mesh file's format, triangles and bounds, and its placement by a case");
@@ -350,9 +360,9 @@ int RunLexel(int argc, char** argv) {
     app.require_subcommand(1);
     // In `lexel --help` order.
     const std::vector<Command> commands = {
-        RegisterRun(app),     RegisterSweep(app),     RegisterMerge(app),     RegisterTiming(app),
-        RegisterStorage(app), RegisterMeshInfo(app),  RegisterInfo(app),      RegisterTables(app),
-        RegisterLowres(app),  RegisterFitThesis(app), RegisterErrorModel(app)};
+        RegisterRun(app),    RegisterSweep(app),   RegisterMerge(app),     RegisterMethods(app),
+        RegisterTiming(app), RegisterStorage(app), RegisterMeshInfo(app),  RegisterInfo(app),
+        RegisterTables(app), RegisterLowres(app),  RegisterFitThesis(app), RegisterErrorModel(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

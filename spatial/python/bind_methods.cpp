@@ -2,6 +2,7 @@
 // partitions (standard_map.h, baselines.h, optimizer.h, multi_start.h, partitions.h).
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <list>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "bindings.h"
 #include "lexel/spatial/baselines.h"
+#include "lexel/spatial/methods/registry.h"
 #include "lexel/spatial/multi_start.h"
 #include "lexel/spatial/optimizer.h"
 #include "lexel/spatial/partitions.h"
@@ -129,33 +131,33 @@ void BindContext(py::module_& m) {
 // ---------------------------------------------------------------------------------------------
 // The baselines
 
-using Baseline = LightMatrix (*)(const BaselineContext&, BaselineDiagnostics*);
+// The registry's names of one family, quoted and joined ("'a', 'b' or 'c'") for a message.
+std::string QuotedNames(const std::vector<std::string>& names) {
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) text += i + 1 == names.size() ? " or " : ", ";
+        text += "'" + names[i] + "'";
+    }
+    return text;
+}
 
-struct NamedBaseline {
-    const char* name;
-    Baseline compute;
-    const char* description;
-};
+// {name: description} of one family's default methods, in registry order.
+py::dict FamilyDescriptions(MethodFamily family) {
+    py::dict out;
+    for (const std::string& name : MethodNamesOf(family))
+        out[py::str(name)] = std::string(SpatialMethodDescription(name));
+    return out;
+}
 
-// The report's baselines and the tight ones (baselines.h), named as `lexel run` names them.
-const NamedBaseline kBaselines[] = {
-    {"normal", &NormalLightMatrix, "the light's frustum over the scene bounds"},
-    {"focused", &FocusedLightMatrix,
-     "the report's focused map: view frustum and scene bounds on the light's plane"},
-    {"lispsm", &LispsmLightMatrix, "LiSPSM for the view frustum and scene bounds"},
-    {"psm", &PsmLightMatrix, "PSM with Kozlov's fixes for the view frustum and scene bounds"},
-    {"plane-optimal", &PlaneOptimalLightMatrix,
-     "Chong & Gortler 2004: the floor plane's optimum, refitted to the view"},
-    {"focused-tight", &FocusedTightLightMatrix,
-     "focused's axis, minimum-area rectangle around the visible points (Algorithm 1's start)"},
-    {"lispsm-tight", &LispsmTightLightMatrix,
-     "LiSPSM (Wimmer et al. 2004) fitted to the "
-     "visible points"},
-    {"lispsm-engine", &LispsmEngineLightMatrix,
-     "lispsm-tight with the engines' n (z1 = z0 + d sin(gamma): Filament, OGRE)"},
-    {"psm-tight", &PsmTightLightMatrix,
-     "PSM (Stamminger & Drettakis 2002) fitted to the visible points"},
-};
+// The method `name` of `family` (a default one), or ValueError naming the family's methods:
+// "ARGUMENT: unknown NOUN 'name' (lexel has ...)".
+void CheckFamily(const std::string& name, MethodFamily family, const char* argument,
+                 const char* noun) {
+    const std::vector<std::string> names = MethodNamesOf(family);
+    if (std::find(names.begin(), names.end(), name) == names.end())
+        throw py::value_error(std::string(argument) + ": unknown " + noun + " '" + name +
+                              "' (lexel has " + QuotedNames(names) + ")");
+}
 
 py::dict Diagnostics(const BaselineDiagnostics& d) {
     py::dict out;
@@ -172,21 +174,16 @@ py::dict Diagnostics(const BaselineDiagnostics& d) {
 }
 
 void BindBaselines(py::module_& m) {
-    py::dict baselines;
-    for (const NamedBaseline& b : kBaselines) baselines[b.name] = b.description;
-    m.attr("BASELINES") = baselines;
+    m.attr("BASELINES") = FamilyDescriptions(MethodFamily::kBaseline);
     m.def(
         "baseline",
         [](const std::string& name, const Context& context, bool diagnostics) -> py::object {
-            for (const NamedBaseline& b : kBaselines)
-                if (name == b.name) {
-                    BaselineDiagnostics d;
-                    const LightMatrix matrix = b.compute(context.View(), &d);
-                    if (!diagnostics) return py::cast(matrix);
-                    return py::make_tuple(matrix, Diagnostics(d));
-                }
-            throw py::value_error("name: unknown baseline '" + name + "' (lexel has " +
-                                  NameList(kBaselines) + ")");
+            CheckFamily(name, MethodFamily::kBaseline, "name", "baseline");
+            MethodContext method;
+            method.baseline = context.View();
+            const MethodMatrix result = ComputeLightMatrix(name, method);
+            if (!diagnostics) return py::cast(result.matrix);
+            return py::make_tuple(result.matrix, Diagnostics(result.diagnostics));
         },
         py::arg("name"), py::arg("context"), py::arg("return_diagnostics") = false,
         "The light matrix of a published baseline (lexel.BASELINES names them; report §3 and "
@@ -383,26 +380,6 @@ void BindOptimizer(py::module_& m) {
 // ---------------------------------------------------------------------------------------------
 // Partitioned maps
 
-struct NamedScheme {
-    const char* name;
-    PartitionScheme scheme;
-    const char* description;
-};
-
-const NamedScheme kSchemes[] = {
-    {"pssm", PartitionScheme::kPssm, "Zhang et al. 2006's split depths, a focused-tight map each"},
-    {"sdsm", PartitionScheme::kSdsm,
-     "Lauritzen et al. 2011, log splits of the visible depth range"},
-    {"sdsm-rect", PartitionScheme::kSdsmRect,
-     "sdsm's partitions, each fitted with the minimum-area rectangle"},
-    {"zp-lispsm", PartitionScheme::kZpLispsm,
-     "Lloyd et al. 2006's log z-partitions, LiSPSM in each"},
-    {"fp-lispsm", PartitionScheme::kFpLispsm,
-     "Lloyd et al. 2006's face partitioning: a LiSPSM map per face wedge"},
-    {"sdsm-optimal", PartitionScheme::kSdsmOptimal,
-     "sdsm's partitions, Algorithm 1 (multi-start on the energy, e by default) in each"},
-};
-
 std::vector<Cascade> ToCascades(const py::object& obj) {
     std::vector<Cascade> cascades;
     for (const py::handle item : py::iter(obj)) cascades.push_back(item.cast<Cascade>());
@@ -411,9 +388,7 @@ std::vector<Cascade> ToCascades(const py::object& obj) {
 }
 
 void BindPartitions(py::module_& m) {
-    py::dict schemes;
-    for (const NamedScheme& s : kSchemes) schemes[s.name] = s.description;
-    m.attr("PARTITION_SCHEMES") = schemes;
+    m.attr("PARTITION_SCHEMES") = FamilyDescriptions(MethodFamily::kPartitioned);
 
     py::class_<Cascade>(m, "Cascade",
                         "One map of a partitioned method: it serves the pixels whose planar eye "
@@ -452,14 +427,13 @@ void BindPartitions(py::module_& m) {
             else
                 throw py::value_error("allocation: expected 'equal' or 'lagrange', got '" +
                                       allocation + "'");
-            for (const NamedScheme& s : kSchemes)
-                if (name == s.name) {
-                    const LightSamples& samples = context.Samples(s.name);
-                    py::gil_scoped_release release;
-                    return PartitionedLightMatrices(s.scheme, context.View(), samples, o);
-                }
-            throw py::value_error("scheme: unknown partition scheme '" + name + "' (lexel has " +
-                                  NameList(kSchemes) + ")");
+            CheckFamily(name, MethodFamily::kPartitioned, "scheme", "partition scheme");
+            MethodContext method;
+            method.baseline = context.View();
+            method.samples = &context.Samples(name.c_str());
+            method.partitions = o;
+            py::gil_scoped_release release;
+            return ComputeLightMatrix(name, method).cascades;
         },
         py::arg("scheme"), py::arg("context"), py::kw_only(), py::arg("count") = 4,
         py::arg("pssm_lambda") = 0.5, py::arg("allocation") = "equal", py::arg("snap") = false,
@@ -495,9 +469,91 @@ void BindPartitions(py::module_& m) {
         "The LightSamples cascade `index` serves, with the visible points it serves.");
 }
 
+// ---------------------------------------------------------------------------------------------
+// The registry: every method's record, and any method that returns light matrices by name
+
+py::dict MethodRecord(const MethodInfo& info) {
+    const MethodTraits& t = info.traits;
+    py::dict traits;
+    traits["fair_table"] = t.fairTable;
+    traits["report_table"] = t.reportTable;
+    traits["frustum_fitted"] = t.frustumFitted;
+    traits["optimizer"] = t.optimizer;
+    traits["partitioned"] = t.partitioned;
+    traits["virtual_map"] = t.virtualMap;
+    traits["warped"] = t.warped;
+    traits["gpu_map"] = t.gpuMap;
+    py::dict out;
+    out["name"] = info.name;
+    out["description"] = info.description;
+    out["citation"] = info.citation;
+    out["family"] = std::string(MethodFamilyName(info.family));
+    out["default"] = !t.optIn;
+    out["storage_model"] = std::string(StorageModelName(info.storage));
+    out["traits"] = traits;
+    return out;
+}
+
+// compute's answer: the matrix, the cascades, the optimizer's trace and which start won.
+py::dict ComputedRecord(const MethodMatrix& result) {
+    py::dict out;
+    out["matrix"] = result.matrix;
+    out["cascades"] = result.cascades;
+    out["optimizer"] = result.optimizer ? py::cast(*result.optimizer) : py::none();
+    out["winner"] = result.winner;
+    out["fallback"] = result.diagnostics.fallback;
+    return out;
+}
+
+void BindRegistry(py::module_& m) {
+    m.def(
+        "methods",
+        [] {
+            py::list out;
+            for (const MethodInfo& info : MethodInfos()) out.append(MethodRecord(info));
+            return out;
+        },
+        "Every 3D method lexel knows, in the order its reports keep (the list `lexel methods "
+        "--format json` prints): dicts of name, description, citation, family, default (False: "
+        "run only when named), storage_model and traits (fair_table, report_table, "
+        "frustum_fitted, optimizer, partitioned, virtual_map, warped, gpu_map).");
+    m.def(
+        "compute",
+        [](const std::string& name, const Context& context, int count) {
+            const MethodInfo* info = FindMethodInfo(name);
+            if (!info) throw py::value_error("name: unknown 3D method '" + name + "'");
+            if (info->traits.warped || info->traits.virtualMap)
+                throw py::value_error("name: " + name +
+                                      "'s map is not a light matrix (warped or "
+                                      "virtual): lexel run measures it");
+            if (count < 1 || count > kMaxCascades)
+                throw py::value_error("count: must be in [1, " + std::to_string(kMaxCascades) +
+                                      "], got " + std::to_string(count));
+            MethodContext method;
+            method.baseline = context.View();
+            method.samples = context.samples ? &*context.samples : nullptr;
+            method.partitions.count = count;
+            MethodMatrix result;
+            {
+                py::gil_scoped_release release;
+                result = ComputeLightMatrix(name, method);
+            }
+            return ComputedRecord(result);
+        },
+        py::arg("name"), py::arg("context"), py::kw_only(), py::arg("count") = 4,
+        "A method's light matrix by its name in lexel.methods(), computed as `lexel run` "
+        "computes it from the context: a dict of matrix (LightMatrix), cascades (a partitioned "
+        "method's k = count, else empty), optimizer (an optimizer method's OptimizerResult, "
+        "else None), winner (the start that won, for optimal and optimal-refined) and fallback "
+        "(a baseline's fallback, empty when its own construction was used). ValueError for an "
+        "unknown name, a warped or virtual method (their maps are no light matrix), or a method "
+        "that needs the context's samples without them.");
+}
+
 }  // namespace
 
 void BindMethods(py::module_& m) {
+    BindRegistry(m);
     BindContext(m);
     BindBaselines(m);
     BindResults(m);

@@ -115,27 +115,6 @@ void WriteRaw(const std::string& path, const T* data, std::size_t count) {
     if (!out) throw std::runtime_error("cannot write " + path);
 }
 
-struct Baseline {
-    const char* name;
-    LightMatrix (*compute)(const BaselineContext&, BaselineDiagnostics*);
-};
-const Baseline kBaselines[] = {
-    {"normal", &NormalLightMatrix},
-    {"focused", &FocusedLightMatrix},
-    {"lispsm", &LispsmLightMatrix},
-    {"psm", &PsmLightMatrix},
-    {"plane-optimal", &PlaneOptimalLightMatrix},
-    {"focused-tight", &FocusedTightLightMatrix},
-    {"lispsm-tight", &LispsmTightLightMatrix},
-    {"lispsm-engine", &LispsmEngineLightMatrix},
-    {"psm-tight", &PsmTightLightMatrix},
-};
-const std::pair<const char*, PartitionScheme> kSchemes[] = {
-    {"pssm", PartitionScheme::kPssm},          {"sdsm", PartitionScheme::kSdsm},
-    {"sdsm-rect", PartitionScheme::kSdsmRect}, {"zp-lispsm", PartitionScheme::kZpLispsm},
-    {"fp-lispsm", PartitionScheme::kFpLispsm}, {"sdsm-optimal", PartitionScheme::kSdsmOptimal},
-};
-
 // Everything the module binds, for one light, into `out`; the mask into DIR/mask_<l>.u8.
 json OneLight(const Light& light, std::size_t l, const Readback& readback, const Camera& camera,
               const Bounds& bounds, Resolution map, const std::string& dir) {
@@ -180,11 +159,13 @@ json OneLight(const Light& light, std::size_t l, const Readback& readback, const
     context.wsRelevantHull = readback.wsRelevantHull;
     context.floorPlane = glm::dvec4(0.0, 1.0, 0.0, 0.0);
     context.samples = &samples;
-    for (const Baseline& b : kBaselines) {
-        BaselineDiagnostics d;
-        const LightMatrix m = b.compute(context, &d);
-        out["baselines"][b.name] = {
-            {"matrix", Matrix(m)}, {"fallback", d.fallback}, {"h", Num(Energy(m, samples))}};
+    for (const std::string& name : MethodNamesOf(MethodFamily::kBaseline)) {
+        MethodContext method;
+        method.baseline = context;
+        const MethodMatrix m = ComputeLightMatrix(name, method);
+        out["baselines"][name] = {{"matrix", Matrix(m.matrix)},
+                                  {"fallback", m.diagnostics.fallback},
+                                  {"h", Num(Energy(m.matrix, samples))}};
     }
     const std::vector<OptimizerStart> starts = StandardStarts(context);
     for (const OptimizerStart& s : starts) out["start_names"].push_back(s.name);
@@ -198,12 +179,13 @@ json OneLight(const Light& light, std::size_t l, const Readback& readback, const
                                                        {"start_h", Nums(r.startH)},
                                                        {"search_h", Nums(r.searchH)}};
     }
-    for (const auto& [name, scheme] : kSchemes) {
-        PartitionOptions options;
-        options.count = 3;
-        options.allocation = CascadeAllocation::kLagrange;
-        const std::vector<Cascade> cascades =
-            PartitionedLightMatrices(scheme, context, samples, options);
+    for (const std::string& name : MethodNamesOf(MethodFamily::kPartitioned)) {
+        MethodContext method;
+        method.baseline = context;
+        method.samples = &samples;
+        method.partitions.count = 3;
+        method.partitions.allocation = CascadeAllocation::kLagrange;
+        const std::vector<Cascade> cascades = ComputeLightMatrix(name, method).cascades;
         json c = json::array();
         for (const Cascade& cascade : cascades)
             c.push_back({{"matrix", Matrix(cascade.matrix)},
@@ -295,6 +277,8 @@ int main(int argc, char** argv) {
             {{"kind", light.type == Light::Type::kPoint ? "point" : "directional"},
              {"vector",
               Vec(light.type == Light::Type::kPoint ? light.position : light.direction)}});
+    for (const MethodInfo& m : MethodInfos())
+        out["methods"].push_back({{"name", m.name}, {"family", MethodFamilyName(m.family)}});
     for (std::size_t l = 0; l < std::size(lights); ++l)
         out["lights"].push_back(OneLight(lights[l], l, readback, camera, bounds, map, dir));
     std::ofstream(dir + "/reference.json") << out.dump(1) << "\n";

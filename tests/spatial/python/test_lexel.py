@@ -219,6 +219,36 @@ class ReferenceTest(unittest.TestCase):
                     self.assertEqual(diagnostics["fallback"], b["fallback"], name)
                     self.assertEqual(lexel.energy(matrix, samples), _number(b["h"]), name)
 
+    def test_methods_are_the_registry(self):
+        methods = lexel.methods()
+        self.assertEqual([(m["name"], m["family"]) for m in methods],
+                         [(m["name"], m["family"]) for m in self.ref["methods"]])
+        self.assertEqual(sorted(lexel.BASELINES),
+                         sorted(m["name"] for m in methods
+                                if m["family"] == "baseline" and m["default"]))
+        fair = [m["name"] for m in methods if m["traits"]["fair_table"]]
+        self.assertEqual(fair[0], "optimal")
+        for l, ref in enumerate(self.ref["lights"]):
+            _, samples = self.samples(l)
+            context = self.context(l, samples)
+            for name, b in ref["baselines"].items():
+                with self.subTest(light=l, method=name):
+                    computed = lexel.compute(name, context)
+                    _assert_matrix(self, computed["matrix"], b["matrix"], name)
+                    self.assertEqual(computed["fallback"], b["fallback"], name)
+                    self.assertEqual(computed["cascades"], [])
+            count = self.ref["inputs"]["partition_count"]
+            cascades = lexel.compute("pssm", context, count=count)["cascades"]
+            same = lexel.partitioned_light_matrices("pssm", context, count=count)
+            self.assertEqual([(c.z_near, c.z_far, c.map) for c in cascades],
+                             [(c.z_near, c.z_far, c.map) for c in same])
+            self.assertEqual(lexel.partitioned_energy(cascades, context),
+                             lexel.partitioned_energy(same, context))
+            with self.assertRaisesRegex(ValueError, r"^name: unknown 3D method 'nope'"):
+                lexel.compute("nope", context)
+            with self.assertRaisesRegex(ValueError, r"^name: rtw's map is not a light matrix"):
+                lexel.compute("rtw", context)
+
     def test_optimal(self):
         for l, ref in enumerate(self.ref["lights"]):
             with self.subTest(light=l):
@@ -619,7 +649,7 @@ class ErrorsTest(unittest.TestCase):
         context = lexel.BaselineContext(light_space, camera, (256, 256), bounds,
                                         [[0.0, 0.0, 0.0], [1.0, 0.0, 1.0]])
         with self.assertRaisesRegex(ValueError, r"^name: unknown baseline 'tsm' \(lexel has "
-                                                r"'normal', 'focused', .* or 'psm-tight'\)$"):
+                                                r"'focused-tight', 'lispsm-tight', .* or 'psm'\)$"):
             lexel.baseline("tsm", context)
         with self.assertRaisesRegex(ValueError, r"^context: optimal needs the light's samples"):
             lexel.optimal(context)
