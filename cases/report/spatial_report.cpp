@@ -10,6 +10,7 @@
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"
+#include "lexel/solvers/statistics.h"
 #include "lexel/spatial/harness/images.h"
 #include "lexel/spatial/methods/registry.h"
 
@@ -37,9 +38,9 @@ std::vector<std::string> LightHeaderLines(std::size_t l, const spatial::LightOut
     return lines;
 }
 
-// "mean ± 95% half-width" of a phase mean (sub_texel_phase.h): 1.96 standard errors.
+// "mean ± 95% half-width" of a phase mean (sub_texel_phase.h): kNormal95 standard errors.
 std::string PhaseMeanText(double mean, double standardError) {
-    return Fixed(mean, 1) + " ± " + Fixed(1.96 * standardError, 1);
+    return Fixed(mean, 1) + " ± " + Fixed(kNormal95 * standardError, 1);
 }
 
 namespace {

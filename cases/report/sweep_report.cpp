@@ -11,6 +11,7 @@
 #include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
+#include "lexel/solvers/statistics.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
 #include "lexel/spatial/methods/method_info.h"
 
@@ -163,27 +164,6 @@ std::vector<std::string> ReportCells(const ReportTable1& report, const std::stri
     return cells;
 }
 
-// The two-sided 95% quantile of Student's t with `dof` degrees of freedom: exact for 1 and 2,
-// else the Cornish–Fisher expansion about the normal's 1.959964 (within 0.1% for dof ≥ 3).
-double StudentT95(std::size_t dof) {
-    if (dof == 0) return std::numeric_limits<double>::quiet_NaN();
-    if (dof == 1) return 12.7062;
-    if (dof == 2) return 4.3027;
-    const double z = 1.959964, n = static_cast<double>(dof);
-    return z + (z * z * z + z) / (4.0 * n) +
-           (5.0 * std::pow(z, 5) + 16.0 * z * z * z + 3.0 * z) / (96.0 * n * n);
-}
-
-// The 95% half-width of the mean of `values` (t · s / √n); NaN for fewer than 2.
-double HalfWidth95(const std::vector<double>& values) {
-    const std::size_t n = values.size();
-    if (n < 2) return std::numeric_limits<double>::quiet_NaN();
-    const double mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
-    double squares = 0.0;
-    for (double v : values) squares += (v - mean) * (v - mean);
-    return StudentT95(n - 1) * std::sqrt(squares / (n - 1.0) / n);
-}
-
 // Whether two cells of one light differ beyond the noise of their phase means: by more than 1.96
 // standard errors of the difference (independent phase means). With one phase there is no noise
 // estimate and `fallback` decides: any difference (the wins), or one above 2% of the larger
@@ -191,7 +171,9 @@ double HalfWidth95(const std::vector<double>& values) {
 enum class Unmeasured { kAnyDifference, kTwoPercent };
 bool DiffersBeyondNoise(const SweepCell& a, const SweepCell& b, int phases, Unmeasured fallback) {
     const double d = std::abs(a.misclassifiedMean - b.misclassifiedMean);
-    if (phases > 1) return d > 1.96 * std::hypot(a.misclassifiedError, b.misclassifiedError);
+    if (phases > 1)
+        return DifferBeyondNoise(a.misclassifiedMean, a.misclassifiedError, b.misclassifiedMean,
+                                 b.misclassifiedError);
     if (fallback == Unmeasured::kAnyDifference) return d > 0.0;
     return d > std::max(1.0, 0.02 * std::max(a.misclassifiedMean, b.misclassifiedMean));
 }
@@ -273,10 +255,10 @@ void SummarizeMeans(const SweepResult& r, std::size_t m, std::size_t reference,
         errors += light[m].misclassifiedError;
     }
     const double sum = std::accumulate(values.begin(), values.end(), 0.0);
-    out->ci95 = HalfWidth95(values);
+    out->ci95 = MeanInterval95(values).halfWidth;
     const double refMean = refSum / static_cast<double>(std::max<std::size_t>(1, values.size()));
     if (m != reference && refMean > 0.0)
-        out->pairedPercentCi95 = 100.0 * HalfWidth95(differences) / refMean;
+        out->pairedPercentCi95 = 100.0 * MeanInterval95(differences).halfWidth / refMean;
     out->residualNoise = sum > 0.0 ? errors / sum : 0.0;
 }
 

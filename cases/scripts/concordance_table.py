@@ -21,8 +21,8 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fair_table import fail, parse_args  # noqa: E402
-from fair_table import read_lights as read_csv  # noqa: E402
+from sweep_lights import beyond_noise, fail, parse_args  # noqa: E402
+from sweep_lights import read_lights as read_csv  # noqa: E402
 
 NEEDED = ("_h", "_e", "_misclassified_mean", "_misclassified_se")
 
@@ -71,7 +71,7 @@ def concordance(rows, methods):
             for b in methods[i + 1:]:
                 ma, mb = number(r[a + "_misclassified_mean"]), number(r[b + "_misclassified_mean"])
                 sa, sb = number(r[a + "_misclassified_se"]), number(r[b + "_misclassified_se"])
-                if not abs(ma - mb) > 1.96 * math.hypot(sa, sb):
+                if not beyond_noise(ma, sa, mb, sb):
                     continue
                 h, e = ranks(r, a, b, "_h"), ranks(r, a, b, "_e")
                 if h is not None and e is not None:

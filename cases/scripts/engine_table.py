@@ -28,7 +28,7 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fair_table import fail, mean_ci, parse_args, read_rows  # noqa: E402
+from sweep_lights import beyond_noise, fail, paired_ci, parse_args, read_rows  # noqa: E402
 
 MEAN, SE, MS = "_misclassified_mean", "_misclassified_se", "_ms"
 STORAGE, STORAGE99 = "_storage_factor", "_storage_factor_p99"
@@ -55,7 +55,7 @@ def read_set(d, reference):
 
 
 def paired_percent(ours, ref):
-    dm, ci = mean_ci([a - b for a, b in zip(ours, ref)])
+    dm, ci = paired_ci(ours, ref)
     refm = sum(ref) / len(ref)
     if refm == 0:
         return "–"
@@ -65,7 +65,7 @@ def paired_percent(ours, ref):
 def wins(cells, ref):
     won = lost = 0
     for a, sa, b, sb in zip(cells[MEAN], cells[SE], ref[MEAN], ref[SE]):
-        if abs(a - b) > 1.96 * math.hypot(sa, sb):
+        if beyond_noise(a, sa, b, sb):
             won += a < b
             lost += a > b
     n = len(cells[MEAN])

@@ -21,8 +21,8 @@ import tempfile
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fair_table import fail  # noqa: E402
-from fair_table import read_lights as read_csv  # noqa: E402
+from sweep_lights import fail  # noqa: E402
+from sweep_lights import read_lights as read_csv  # noqa: E402
 
 USAGE = "usage: join_sweeps.py OUT DIR[:METHOD[=NAME]] ..."
 

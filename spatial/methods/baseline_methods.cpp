@@ -23,8 +23,8 @@ constexpr const char* kReport =
 
 MethodDescriptor Single(std::string name, std::string description, std::string citation,
                         MethodTraits traits, StorageModel storage, Baseline baseline) {
-    return {{std::move(name), std::move(description), std::move(citation),
-             MethodFamily::kBaseline, traits, storage},
+    return {{std::move(name), std::move(description), std::move(citation), MethodFamily::kBaseline,
+             traits, storage},
             [baseline](const MethodContext& context) {
                 MethodMatrix m;
                 m.matrix = baseline(context.baseline, &m.diagnostics);

@@ -53,15 +53,15 @@ enum class StorageModel {
 std::string_view StorageModelName(StorageModel model);
 
 struct MethodTraits {
-    bool fairTable = false;    // a row of the fair comparison (optimal the reference)
-    bool reportTable = false;  // a row of Table 1 as published (optimal-report the reference)
-    bool optIn = false;        // runs only when named: in no default list
+    bool fairTable = false;      // a row of the fair comparison (optimal the reference)
+    bool reportTable = false;    // a row of Table 1 as published (optimal-report the reference)
+    bool optIn = false;          // runs only when named: in no default list
     bool frustumFitted = false;  // fits the view frustum ∩ scene bounds, as the report's baselines
-    bool optimizer = false;    // runs Algorithm 1 for one map (its trace is reported)
-    bool partitioned = false;  // returns k cascades at the same total texels
-    bool virtualMap = false;   // returns a virtual map of pages
-    bool warped = false;       // its map's parameterization is not a light matrix
-    bool gpuMap = true;        // the GL backend renders its map (logpsm's is ray-cast on the CPU)
+    bool optimizer = false;      // runs Algorithm 1 for one map (its trace is reported)
+    bool partitioned = false;    // returns k cascades at the same total texels
+    bool virtualMap = false;     // returns a virtual map of pages
+    bool warped = false;         // its map's parameterization is not a light matrix
+    bool gpuMap = true;          // the GL backend renders its map (logpsm's is ray-cast on the CPU)
 };
 
 struct MethodInfo {

@@ -72,27 +72,34 @@ MethodDescriptor Optimizer(std::string name, std::string description, MethodTrai
 
 std::vector<MethodDescriptor> OptimizerMethods() {
     return {
-        Optimizer(kOptimalMethod,
-                  "Algorithm 1 from every baseline's start on the edge energy e (fair reference)",
-                  {.fairTable = true},
-                  [](const MethodContext& c) { return FromEveryStart(kOptimalMethod, c, true, false); }),
+        Optimizer(
+            kOptimalMethod,
+            "Algorithm 1 from every baseline's start on the edge energy e (fair reference)",
+            {.fairTable = true},
+            [](const MethodContext& c) { return FromEveryStart(kOptimalMethod, c, true, false); }),
         Optimizer("optimal-refined",
                   "optimal, its best start refined on e by Ceres LBFGS, collapses rejected",
                   {.fairTable = true},
-                  [](const MethodContext& c) { return FromEveryStart("optimal-refined", c, true, true); }),
-        Optimizer("optimal-h", "Algorithm 1 from every baseline's start on the report's h (eq. 6)",
-                  {.fairTable = true},
-                  [](const MethodContext& c) { return FromEveryStart("optimal-h", c, false, false); }),
-        Optimizer(kReportOptimalMethod,
-                  "Algorithm 1 as published: from focused's axis only (Table 1's optimal)",
-                  {.reportTable = true},
-                  [](const MethodContext& c) { return FromReportStart(kReportOptimalMethod, c, false); }),
+                  [](const MethodContext& c) {
+                      return FromEveryStart("optimal-refined", c, true, true);
+                  }),
+        Optimizer(
+            "optimal-h", "Algorithm 1 from every baseline's start on the report's h (eq. 6)",
+            {.fairTable = true},
+            [](const MethodContext& c) { return FromEveryStart("optimal-h", c, false, false); }),
+        Optimizer(
+            kReportOptimalMethod,
+            "Algorithm 1 as published: from focused's axis only (Table 1's optimal)",
+            {.reportTable = true},
+            [](const MethodContext& c) { return FromReportStart(kReportOptimalMethod, c, false); }),
         Optimizer("optimal-shear",
                   "Algorithm 1 with the report's affine shear (Fig. 3), optimized exactly", {},
                   [](const MethodContext& c) { return FromReportStart("optimal-shear", c, true); }),
         Optimizer("optimal-refined-h", "optimal-h, its best start refined on h by Ceres LBFGS",
                   {.optIn = true},
-                  [](const MethodContext& c) { return FromEveryStart("optimal-refined-h", c, false, true); }),
+                  [](const MethodContext& c) {
+                      return FromEveryStart("optimal-refined-h", c, false, true);
+                  }),
     };
 }
 

@@ -42,8 +42,11 @@ MethodMatrix Partitioned(const std::string& name, Partition partition,
 
 MethodDescriptor Cascades(std::string name, std::string description, std::string citation,
                           StorageModel storage, Partition partition, bool optIn = false) {
-    MethodInfo info{name,     std::move(description), std::move(citation),
-                    MethodFamily::kPartitioned, {.optIn = optIn, .partitioned = true},
+    MethodInfo info{name,
+                    std::move(description),
+                    std::move(citation),
+                    MethodFamily::kPartitioned,
+                    {.optIn = optIn, .partitioned = true},
                     storage};
     return {std::move(info), [name, partition](const MethodContext& context) {
                 return Partitioned(name, partition, context);

@@ -75,31 +75,50 @@ MethodMatrix Given(const GivenMatrix& given, const MethodContext& context) {
 
 std::string_view MethodFamilyName(MethodFamily family) {
     switch (family) {
-        case MethodFamily::kOptimizer: return "optimizer";
-        case MethodFamily::kBaseline: return "baseline";
-        case MethodFamily::kWarped: return "warped";
-        case MethodFamily::kPartitioned: return "partitioned";
-        case MethodFamily::kTrapezoid: return "trapezoid";
-        case MethodFamily::kVirtual: return "virtual";
-        case MethodFamily::kBound: return "bound";
-        case MethodFamily::kRegistered: return "registered";
+        case MethodFamily::kOptimizer:
+            return "optimizer";
+        case MethodFamily::kBaseline:
+            return "baseline";
+        case MethodFamily::kWarped:
+            return "warped";
+        case MethodFamily::kPartitioned:
+            return "partitioned";
+        case MethodFamily::kTrapezoid:
+            return "trapezoid";
+        case MethodFamily::kVirtual:
+            return "virtual";
+        case MethodFamily::kBound:
+            return "bound";
+        case MethodFamily::kRegistered:
+            return "registered";
     }
     return "registered";
 }
 
 std::string_view StorageModelName(StorageModel model) {
     switch (model) {
-        case StorageModel::kBestSingleMap: return "best-single-map";
-        case StorageModel::kUnwarped: return "unwarped";
-        case StorageModel::kLispsm: return "lispsm";
-        case StorageModel::kPsm: return "psm";
-        case StorageModel::kTrapezoid: return "trapezoid";
-        case StorageModel::kLogPsm: return "logpsm";
-        case StorageModel::kAdaptive: return "adaptive";
-        case StorageModel::kZPartitions: return "z-partitions";
-        case StorageModel::kZPartitionsWarped: return "z-partitions-warped";
-        case StorageModel::kFacePartitionsWarped: return "face-partitions-warped";
-        case StorageModel::kVirtualLevels: return "virtual-levels";
+        case StorageModel::kBestSingleMap:
+            return "best-single-map";
+        case StorageModel::kUnwarped:
+            return "unwarped";
+        case StorageModel::kLispsm:
+            return "lispsm";
+        case StorageModel::kPsm:
+            return "psm";
+        case StorageModel::kTrapezoid:
+            return "trapezoid";
+        case StorageModel::kLogPsm:
+            return "logpsm";
+        case StorageModel::kAdaptive:
+            return "adaptive";
+        case StorageModel::kZPartitions:
+            return "z-partitions";
+        case StorageModel::kZPartitionsWarped:
+            return "z-partitions-warped";
+        case StorageModel::kFacePartitionsWarped:
+            return "face-partitions-warped";
+        case StorageModel::kVirtualLevels:
+            return "virtual-levels";
     }
     return "best-single-map";
 }

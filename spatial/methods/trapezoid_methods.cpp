@@ -26,8 +26,9 @@ std::vector<MethodDescriptor> TrapezoidMethods() {
                                 }};
     };
     return {
-        trapezoid("tsm", "Martin & Tan 2004: the trapezoid around the visible points, 80% focus rule",
-                  {}, &TsmLightMatrix),
+        trapezoid("tsm",
+                  "Martin & Tan 2004: the trapezoid around the visible points, 80% focus rule", {},
+                  &TsmLightMatrix),
         trapezoid("tsm-report", "tsm as the paper fits it: the view frustum and scene bounds",
                   {.frustumFitted = true}, &TsmReportLightMatrix),
     };

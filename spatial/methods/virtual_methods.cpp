@@ -26,9 +26,12 @@ MethodMatrix Virtual(const std::string& name, bool fitPool, const MethodContext&
 }
 
 MethodDescriptor Pages(std::string name, std::string description, bool fitPool) {
-    MethodInfo info{name,          std::move(description),
-                    kSakmary,      MethodFamily::kVirtual,
-                    {.virtualMap = true}, StorageModel::kVirtualLevels};
+    MethodInfo info{name,
+                    std::move(description),
+                    kSakmary,
+                    MethodFamily::kVirtual,
+                    {.virtualMap = true},
+                    StorageModel::kVirtualLevels};
     return {std::move(info), [name, fitPool](const MethodContext& context) {
                 return Virtual(name, fitPool, context);
             }};
@@ -38,9 +41,11 @@ MethodDescriptor Pages(std::string name, std::string description, bool fitPool) 
 
 std::vector<MethodDescriptor> VirtualMethods() {
     return {
-        Pages("vsm", "virtual shadow map: 16k² pages at the footprint's level, the single map's texels",
+        Pages("vsm",
+              "virtual shadow map: 16k² pages at the footprint's level, the single map's texels",
               false),
-        Pages("vsm-dynamic", "vsm with the LOD bias raised until its pages fit the pool (UE5)", true),
+        Pages("vsm-dynamic", "vsm with the LOD bias raised until its pages fit the pool (UE5)",
+              true),
     };
 }
 

@@ -47,8 +47,7 @@ MethodMatrix RtwLagrange(const MethodContext& context) {
     m.matrix = FocusedTightLightMatrix(context.baseline);
     const SeparableCost cost = EnergyHCost();
     const AxisProfile costs = LagrangeAxisCosts(*context.samples, m.matrix, map, map, cost);
-    m.warp =
-        RectilinearWarp(m.matrix, map, LagrangeDensities(costs, cost.exponent), RtwOptions{});
+    m.warp = RectilinearWarp(m.matrix, map, LagrangeDensities(costs, cost.exponent), RtwOptions{});
     return m;
 }
 
@@ -66,10 +65,13 @@ MethodMatrix LogPsm(const MethodContext& context) {
 
 std::vector<MethodDescriptor> WarpedMethods() {
     const auto warped = [](std::string name, std::string description, std::string citation,
-                           bool gpuMap, StorageModel storage, MethodMatrix (*compute)(
-                                                                  const MethodContext&)) {
-        return MethodDescriptor{{std::move(name), std::move(description), std::move(citation),
-                                 MethodFamily::kWarped, {.warped = true, .gpuMap = gpuMap},
+                           bool gpuMap, StorageModel storage,
+                           MethodMatrix (*compute)(const MethodContext&)) {
+        return MethodDescriptor{{std::move(name),
+                                 std::move(description),
+                                 std::move(citation),
+                                 MethodFamily::kWarped,
+                                 {.warped = true, .gpuMap = gpuMap},
                                  storage},
                                 compute};
     };

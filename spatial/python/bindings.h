@@ -21,6 +21,7 @@ void BindGeometry(py::module_& m);
 void BindReadback(py::module_& m);
 void BindEnergy(py::module_& m);
 void BindMethods(py::module_& m);
+void BindStatistics(py::module_& m);
 
 // The energy `name` selects for Algorithm 1 (bind_energy.cpp's table): sets the optimizer's
 // energy; ValueError listing the names for an unknown one. None keeps the optimizer's default.

@@ -96,5 +96,6 @@ PYBIND11_MODULE(_lexel, m) {
     BindReadback(m);
     BindEnergy(m);
     BindMethods(m);
+    BindStatistics(m);
     m.attr("__name__") = "lexel._lexel";
 }

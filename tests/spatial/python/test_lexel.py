@@ -462,6 +462,30 @@ class ConventionsTest(unittest.TestCase):
 # ---------------------------------------------------------------------------------------------
 # numpy conventions
 
+class StatisticsTest(unittest.TestCase):
+    """The scripts' intervals and noise rule are lexel's own (solvers/statistics.h)."""
+
+    def test_student_t_and_intervals(self):
+        self.assertAlmostEqual(lexel.student_t95(1), 12.7062, places=4)
+        self.assertAlmostEqual(lexel.student_t95(99), 1.9842, places=4)
+        mean, half = lexel.mean_interval95([1, 2, 3, 4])
+        self.assertEqual(mean, 2.5)
+        self.assertAlmostEqual(half, lexel.student_t95(3) * math.sqrt(5 / 3 / 4), places=12)
+        self.assertTrue(math.isnan(lexel.mean_interval95([7.0])[1]))
+        self.assertEqual(lexel.paired_difference95([10, 12, 9], [11, 15, 9])[0], -4 / 3)
+        with self.assertRaisesRegex(ValueError, r"^theirs: has 1 values, ours has 3"):
+            lexel.paired_difference95([10, 12, 9], [1])
+        with self.assertRaisesRegex(ValueError, r"^dof: must be at least 1"):
+            lexel.student_t95(0)
+
+    def test_noise_rule(self):
+        # Errors 3 and 4: the difference's is 5, the threshold 1.96 * 5 = 9.8.
+        self.assertEqual(lexel.NORMAL95, 1.96)
+        self.assertTrue(lexel.differ_beyond_noise(110, 3, 100, 4))
+        self.assertFalse(lexel.differ_beyond_noise(109, 3, 100, 4))
+        self.assertFalse(lexel.differ_beyond_noise(math.nan, 3, 100, 4))
+
+
 class ArraysTest(unittest.TestCase):
     """Matrices are row-major (m @ [x, y, z, 1]); inputs of any dtype and order; outputs copies."""
 
