@@ -259,18 +259,123 @@ std::string ErrorModelText(const ErrorModelStudy& study) {
     return out.str();
 }
 
-void WriteErrorModelPlot(const std::string& pngPath, const ErrorModelStudy& study) {
-    const std::vector<ErrorModelSummary> summaries = SummarizeErrorModel(study);
-    const int width = 820, height = 690 + 17 * static_cast<int>(summaries.size() + 1);
-    const double left = 80, top = 50, plotW = 700, plotH = 570;
+namespace {
+
+// The scatter plot's square of predicted against measured band widths: [0, hi] on both axes,
+// gridded every `step` (frame pixels), drawn at (left, top) in a plotW × plotH box (image pixels).
+struct ScatterFrame {
+    double left = 80, top = 50, plotW = 700, plotH = 570;
+    double hi = 1.0, step = 1.0;
+    double X(double v) const { return left + plotW * v / hi; }
+    double Y(double v) const { return top + plotH * (1.0 - v / hi); }
+};
+
+ScatterFrame FrameOf(const ErrorModelStudy& study) {
+    ScatterFrame frame;
     double hi = 0.0;
     for (const ErrorModelSample& e : study.samples)
         if (Fitted(e)) hi = std::max({hi, e.predicted, e.measured});
     if (!(hi > 0.0)) hi = 1.0;
-    const double step = NiceStep(hi);
-    hi = std::ceil(hi / step) * step;
-    const auto px = [&](double v) { return left + plotW * v / hi; };
-    const auto py = [&](double v) { return top + plotH * (1.0 - v / hi); };
+    frame.step = NiceStep(hi);
+    frame.hi = std::ceil(hi / frame.step) * frame.step;
+    return frame;
+}
+
+void DrawGrid(cairo_t* cr, const ScatterFrame& f) {
+    for (double v = 0.0; v <= f.hi * (1 + 1e-9); v += f.step) {
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_set_line_width(cr, 1);
+        cairo_move_to(cr, f.X(v), f.top);
+        cairo_line_to(cr, f.X(v), f.top + f.plotH);
+        cairo_move_to(cr, f.left, f.Y(v));
+        cairo_line_to(cr, f.left + f.plotW, f.Y(v));
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        Text(cr, f.X(v), f.top + f.plotH + 16, Significant(v, 4), 0.5);
+        Text(cr, f.left - 6, f.Y(v) + 4, Significant(v, 4), 1.0);
+    }
+}
+
+// The samples, one colour per method, then y = x (dashed) and the pooled fit, clipped to the box.
+void DrawSamples(cairo_t* cr, const ScatterFrame& f, const ErrorModelStudy& study,
+                 const ErrorModelSummary& pooled) {
+    cairo_save(cr);
+    cairo_rectangle(cr, f.left, f.top, f.plotW, f.plotH);
+    cairo_clip(cr);
+    for (const ErrorModelSample& e : study.samples) {
+        if (!Fitted(e)) continue;
+        const Rgb c = kPalette[e.method % std::size(kPalette)];
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.35);
+        cairo_arc(cr, f.X(e.predicted), f.Y(e.measured), 2.0, 0, 2 * M_PI);
+        cairo_fill(cr);
+    }
+    const double dashes[] = {6.0, 4.0};
+    cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+    cairo_set_line_width(cr, 1.2);
+    cairo_set_dash(cr, dashes, 2, 0);
+    cairo_move_to(cr, f.X(0), f.Y(0));
+    cairo_line_to(cr, f.X(f.hi), f.Y(f.hi));
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    if (std::isfinite(pooled.fit.slope)) {
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_set_line_width(cr, 2.0);
+        cairo_move_to(cr, f.X(0), f.Y(pooled.fit.intercept));
+        cairo_line_to(cr, f.X(f.hi), f.Y(pooled.fit.intercept + pooled.fit.slope * f.hi));
+        cairo_stroke(cr);
+    }
+    cairo_restore(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.2);
+    cairo_rectangle(cr, f.left, f.top, f.plotW, f.plotH);
+    cairo_stroke(cr);
+}
+
+void DrawTitleAndAxes(cairo_t* cr, const ScatterFrame& f, const ErrorModelStudy& study) {
+    cairo_set_font_size(cr, 15);
+    Text(cr, f.left + f.plotW / 2, 28,
+         "Error model, " + study.caseName + ": " + std::to_string(study.lights.size()) +
+             " lights, " + std::to_string(study.phases) + " phases",
+         0.5);
+    cairo_set_font_size(cr, 13);
+    Text(cr, f.left + f.plotW / 2, f.top + f.plotH + 40,
+         "predicted band at the sample (frame pixels, ExpectedBandWidth)", 0.5);
+    cairo_save(cr);
+    cairo_translate(cr, 22, f.top + f.plotH / 2);
+    cairo_rotate(cr, -M_PI / 2);
+    Text(cr, 0, 0, "measured misclassified pixels nearest the sample (phase mean)", 0.5);
+    cairo_restore(cr);
+}
+
+// Under the plot: one line per method's fit, the pooled one last in black.
+void DrawLegend(cairo_t* cr, const ScatterFrame& f,
+                const std::vector<ErrorModelSummary>& summaries) {
+    cairo_set_font_size(cr, 12);
+    double y = f.top + f.plotH + 64;
+    for (std::size_t m = 0; m < summaries.size(); ++m) {
+        const ErrorModelSummary& s = summaries[m];
+        const bool isPooled = m + 1 == summaries.size();
+        const Rgb c = isPooled ? Rgb{0, 0, 0} : kPalette[m % std::size(kPalette)];
+        cairo_set_source_rgb(cr, c.r, c.g, c.b);
+        cairo_arc(cr, f.left + 16, y - 4, 4, 0, 2 * M_PI);
+        cairo_fill(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        Text(cr, f.left + 26, y,
+             (isPooled ? "fit, all: " : s.method + ": ") + "slope " + Fixed(s.fit.slope, 3) +
+                 ", intercept " + Fixed(s.fit.intercept, 3) + ", r " + Fixed(s.fit.r, 3) +
+                 ", explained " + Fixed(100.0 * s.ExplainedShare(), 1) + "%; per light: slope " +
+                 Fixed(s.fitPerLight.slope, 3) + ", r " + Fixed(s.fitPerLight.r, 3));
+        y += 17;
+    }
+    Text(cr, f.left + 26, y, "dashed: measured = predicted");
+}
+
+}  // namespace
+
+void WriteErrorModelPlot(const std::string& pngPath, const ErrorModelStudy& study) {
+    const std::vector<ErrorModelSummary> summaries = SummarizeErrorModel(study);
+    const int width = 820, height = 690 + 17 * static_cast<int>(summaries.size() + 1);
+    const ScatterFrame frame = FrameOf(study);
     const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
         cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height), cairo_surface_destroy);
     const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> context(cairo_create(surface.get()),
@@ -280,84 +385,10 @@ void WriteErrorModelPlot(const std::string& pngPath, const ErrorModelStudy& stud
     cairo_paint(cr);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, 12);
-    // Grid and ticks.
-    for (double v = 0.0; v <= hi * (1 + 1e-9); v += step) {
-        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-        cairo_set_line_width(cr, 1);
-        cairo_move_to(cr, px(v), top);
-        cairo_line_to(cr, px(v), top + plotH);
-        cairo_move_to(cr, left, py(v));
-        cairo_line_to(cr, left + plotW, py(v));
-        cairo_stroke(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        Text(cr, px(v), top + plotH + 16, Significant(v, 4), 0.5);
-        Text(cr, left - 6, py(v) + 4, Significant(v, 4), 1.0);
-    }
-    // Points, one colour per method.
-    cairo_save(cr);
-    cairo_rectangle(cr, left, top, plotW, plotH);
-    cairo_clip(cr);
-    for (const ErrorModelSample& e : study.samples) {
-        if (!Fitted(e)) continue;
-        const Rgb c = kPalette[e.method % std::size(kPalette)];
-        cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.35);
-        cairo_arc(cr, px(e.predicted), py(e.measured), 2.0, 0, 2 * M_PI);
-        cairo_fill(cr);
-    }
-    // y = x (dashed) and the pooled fit line.
-    const ErrorModelSummary& pooled = summaries.back();
-    const double dashes[] = {6.0, 4.0};
-    cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-    cairo_set_line_width(cr, 1.2);
-    cairo_set_dash(cr, dashes, 2, 0);
-    cairo_move_to(cr, px(0), py(0));
-    cairo_line_to(cr, px(hi), py(hi));
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0);
-    if (std::isfinite(pooled.fit.slope)) {
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        cairo_set_line_width(cr, 2.0);
-        cairo_move_to(cr, px(0), py(pooled.fit.intercept));
-        cairo_line_to(cr, px(hi), py(pooled.fit.intercept + pooled.fit.slope * hi));
-        cairo_stroke(cr);
-    }
-    cairo_restore(cr);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 1.2);
-    cairo_rectangle(cr, left, top, plotW, plotH);
-    cairo_stroke(cr);
-    // Title, axis labels, legend.
-    cairo_set_font_size(cr, 15);
-    Text(cr, left + plotW / 2, 28,
-         "Error model, " + study.caseName + ": " + std::to_string(study.lights.size()) +
-             " lights, " + std::to_string(study.phases) + " phases",
-         0.5);
-    cairo_set_font_size(cr, 13);
-    Text(cr, left + plotW / 2, top + plotH + 40,
-         "predicted band at the sample (frame pixels, ExpectedBandWidth)", 0.5);
-    cairo_save(cr);
-    cairo_translate(cr, 22, top + plotH / 2);
-    cairo_rotate(cr, -M_PI / 2);
-    Text(cr, 0, 0, "measured misclassified pixels nearest the sample (phase mean)", 0.5);
-    cairo_restore(cr);
-    cairo_set_font_size(cr, 12);
-    double y = top + plotH + 64;  // the legend under the plot
-    for (std::size_t m = 0; m < summaries.size(); ++m) {
-        const ErrorModelSummary& s = summaries[m];
-        const bool isPooled = m + 1 == summaries.size();
-        const Rgb c = isPooled ? Rgb{0, 0, 0} : kPalette[m % std::size(kPalette)];
-        cairo_set_source_rgb(cr, c.r, c.g, c.b);
-        cairo_arc(cr, left + 16, y - 4, 4, 0, 2 * M_PI);
-        cairo_fill(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        Text(cr, left + 26, y,
-             (isPooled ? "fit, all: " : s.method + ": ") + "slope " + Fixed(s.fit.slope, 3) +
-                 ", intercept " + Fixed(s.fit.intercept, 3) + ", r " + Fixed(s.fit.r, 3) +
-                 ", explained " + Fixed(100.0 * s.ExplainedShare(), 1) + "%; per light: slope " +
-                 Fixed(s.fitPerLight.slope, 3) + ", r " + Fixed(s.fitPerLight.r, 3));
-        y += 17;
-    }
-    Text(cr, left + 26, y, "dashed: measured = predicted");
+    DrawGrid(cr, frame);
+    DrawSamples(cr, frame, study, summaries.back());
+    DrawTitleAndAxes(cr, frame, study);
+    DrawLegend(cr, frame, summaries);
     cairo_status_t status = cairo_status(cr);
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface.get());
     cairo_surface_flush(surface.get());

@@ -331,23 +331,78 @@ std::int64_t Evaluator::Misclassified(const Light& light, const LightMatrix& mat
         TraceTruth(lightSpace), nullptr);
 }
 
+namespace {
+
+// The context every method gets for the light (MethodContext): the scene's cascades and optimizer
+// settings, the baselines' context, the readback and the frame's size; the caller sets the
+// samples.
+MethodContext LightMethodContext(const Scene& scene, const LightSpace& lightSpace,
+                                 const Bounds& bounds, const Readback& readback,
+                                 std::span<const GivenMatrix> given) {
+    MethodContext context;
+    context.given = given;
+    context.partitions = scene.partitions;
+    context.partitions.maxSamples = scene.optimizerMaxSamples;
+    context.maxSamples = scene.optimizerMaxSamples;
+    context.edgeExponent = scene.edgeExponent;
+    if (context.partitions.energy.kind == EnergyKind::kEdge)
+        context.partitions.energy.exponent = scene.edgeExponent;
+    context.baseline = MakeBaselineContext(scene, lightSpace, bounds, readback.wsRelevant,
+                                           readback.wsRelevantHull);
+    context.readback = &readback;
+    context.frame = scene.camera.resolution;
+    return context;
+}
+
+// The counted frame pixels (covered, facing the light) and how many the truth shadows.
+void CountReceivers(const CameraBuffer& frame, const LightSpace& lightSpace,
+                    std::span<const std::uint8_t> truth, LightOutcome* out) {
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        if (!frame.Covered(i)) continue;
+        const bool counted =
+            glm::dot(frame.wsNormal[i], lightSpace.DirectionToLight(frame.wsPosition[i])) > 0.0;
+        out->receiverPixels += counted;
+        out->truthShadowed += counted && truth[i];
+    }
+}
+
+// Which samples the light grazes (projection aliasing, evaluation.h).
+std::vector<std::uint8_t> GrazingSamples(const LightSamples& samples, const Readback& readback,
+                                         const LightSpace& lightSpace) {
+    std::vector<std::uint8_t> grazing(samples.lsX.size(), 0);
+    for (std::size_t s = 0; s < grazing.size(); ++s) {
+        const std::size_t pixel = samples.pixel[s];
+        const glm::dvec3& wsPoint = readback.buffer.wsPosition[pixel];
+        grazing[s] = std::abs(glm::dot(readback.buffer.wsNormal[pixel],
+                                       lightSpace.DirectionToLight(wsPoint))) < kGrazingCos;
+    }
+    return grazing;
+}
+
+// The pixels on which the focused map at size × size texels disagrees with the exact rays.
+std::int64_t MapTruthDisagreement(const RenderBackend& backend, const CameraBuffer& frame,
+                                  const LightSpace& lightSpace, const LightMatrix& focused,
+                                  Resolution caseMap, int size,
+                                  std::span<const std::uint8_t> truth) {
+    // The focused matrix is fitted for the case's map; scale its texels to the truth map's.
+    glm::dmat3 toTruth(1.0);
+    toTruth[0][0] = static_cast<double>(size) / caseMap.width;
+    toTruth[1][1] = static_cast<double>(size) / caseMap.height;
+    const ShadowMap truthMap =
+        backend.RenderShadowMap(lightSpace, focused.ThenAffine(toTruth), {size, size});
+    return CountWrong(backend.ShadePixels(frame, lightSpace, truthMap), truth, nullptr);
+}
+
+}  // namespace
+
 LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& options) const {
     LightOutcome out;
     out.light = light;
     out.phases = options.phases;
     out.maxPhases = MostPhases(options.phases, options.maxPhases);
     const LightSpace lightSpace(light, bounds_);
-
-    MethodContext context;
-    context.given = options.given;
-    context.partitions = scene_.partitions;
-    context.partitions.maxSamples = scene_.optimizerMaxSamples;
-    context.maxSamples = scene_.optimizerMaxSamples;
-    context.edgeExponent = scene_.edgeExponent;
-    if (context.partitions.energy.kind == EnergyKind::kEdge)
-        context.partitions.energy.exponent = scene_.edgeExponent;
-    context.baseline = MakeBaselineContext(scene_, lightSpace, bounds_, readback_.wsRelevant,
-                                           readback_.wsRelevantHull);
+    MethodContext context =
+        LightMethodContext(scene_, lightSpace, bounds_, readback_, options.given);
 
     // Step 1 of Algorithm 1: boundary samples from a standard (focused) shadow map.
     const LightMatrix focused = FocusedLightMatrix(context.baseline);
@@ -355,39 +410,13 @@ LightOutcome Evaluator::Evaluate(const Light& light, const EvaluationOptions& op
     out.samples = backend_.BoundarySamples(readback_, lightSpace, standardMap);
     context.samples = &out.samples;
     context.baseline.samples = &out.samples;
-    context.readback = &readback_;
-    context.frame = scene_.camera.resolution;
 
-    // The counted frame pixels (covered, facing the light) and the truth there.
     std::vector<std::uint8_t> truth = TraceTruth(lightSpace);
-    for (std::size_t i = 0; i < truth.size(); ++i) {
-        if (!frame_.Covered(i)) continue;
-        const bool counted =
-            glm::dot(frame_.wsNormal[i], lightSpace.DirectionToLight(frame_.wsPosition[i])) > 0.0;
-        out.receiverPixels += counted;
-        out.truthShadowed += counted && truth[i];
-    }
-
-    if (options.mapTruth) {
-        const Resolution size{options.truthMapSize, options.truthMapSize};
-        // The focused matrix is fitted for the case's map; scale its texels to the truth map's.
-        glm::dmat3 toTruth(1.0);
-        toTruth[0][0] = static_cast<double>(size.width) / scene_.shadowMap.width;
-        toTruth[1][1] = static_cast<double>(size.height) / scene_.shadowMap.height;
-        const ShadowMap truthMap =
-            backend_.RenderShadowMap(lightSpace, focused.ThenAffine(toTruth), size);
-        out.mapTruthDisagree =
-            CountWrong(backend_.ShadePixels(frame_, lightSpace, truthMap), truth, nullptr);
-    }
-
-    // Which samples the light grazes (projection aliasing, evaluation.h).
-    std::vector<std::uint8_t> grazing(out.samples.lsX.size(), 0);
-    for (std::size_t s = 0; s < grazing.size(); ++s) {
-        const std::size_t pixel = out.samples.pixel[s];
-        const glm::dvec3& wsPoint = readback_.buffer.wsPosition[pixel];
-        grazing[s] = std::abs(glm::dot(readback_.buffer.wsNormal[pixel],
-                                       lightSpace.DirectionToLight(wsPoint))) < kGrazingCos;
-    }
+    CountReceivers(frame_, lightSpace, truth, &out);
+    if (options.mapTruth)
+        out.mapTruthDisagree = MapTruthDisagreement(backend_, frame_, lightSpace, focused,
+                                                    scene_.shadowMap, options.truthMapSize, truth);
+    const std::vector<std::uint8_t> grazing = GrazingSamples(out.samples, readback_, lightSpace);
 
     for (const std::string& method : options.methods) {
         MethodOutcome m;
