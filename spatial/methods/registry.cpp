@@ -174,29 +174,28 @@ std::string_view SpatialMethodDescription(std::string_view name) {
     return m ? std::string_view(m->description) : std::string_view();
 }
 
-bool IsOptimizerMethod(std::string_view name) {
+namespace {
+
+// The trait of a known method; false for an unknown name.
+bool HasTrait(std::string_view name, bool MethodTraits::*trait) {
     const MethodInfo* m = FindMethodInfo(name);
-    return m && m->traits.optimizer;
+    return m && m->traits.*trait;
 }
+
+}  // namespace
+
+bool IsOptimizerMethod(std::string_view name) { return HasTrait(name, &MethodTraits::optimizer); }
 
 bool IsPartitionedMethod(std::string_view name) {
-    const MethodInfo* m = FindMethodInfo(name);
-    return m && m->traits.partitioned;
+    return HasTrait(name, &MethodTraits::partitioned);
 }
 
-bool IsVirtualMethod(std::string_view name) {
-    const MethodInfo* m = FindMethodInfo(name);
-    return m && m->traits.virtualMap;
-}
+bool IsVirtualMethod(std::string_view name) { return HasTrait(name, &MethodTraits::virtualMap); }
 
-bool IsWarpedMethod(std::string_view name) {
-    const MethodInfo* m = FindMethodInfo(name);
-    return m && m->traits.warped;
-}
+bool IsWarpedMethod(std::string_view name) { return HasTrait(name, &MethodTraits::warped); }
 
 bool IsFrustumFittedMethod(std::string_view name) {
-    const MethodInfo* m = FindMethodInfo(name);
-    return m && m->traits.frustumFitted;
+    return HasTrait(name, &MethodTraits::frustumFitted);
 }
 
 bool RendersOnGl(std::string_view name) {
