@@ -233,6 +233,33 @@ std::vector<std::size_t> ShareOf(std::size_t lights, SweepShard shard) {
     return indices;
 }
 
+// --shimmer-poses: at most the case's camera path's poses, within the sweep's memory budget.
+void CheckShimmerPoses(const spatial::Scene& scene, std::size_t methods, int poses) {
+    if (static_cast<std::size_t>(poses) > scene.cameraPath.size())
+        throw InputError("--shimmer-poses: " + std::to_string(poses) +
+                         " poses, but the case's camera_path has " +
+                         std::to_string(scene.cameraPath.size()));
+    if (const std::string excess = SweepMemoryExcess(scene, methods, poses);
+        poses > 0 && !excess.empty())
+        throw InputError("--shimmer-poses: the sweep " + excess);
+}
+
+// What makes two sweeps (or a sweep and its journal, or two shards) the same sweep.
+SweepIdentity IdentityOf(const CaseFile& caseFile, const spatial::Scene& scene,
+                         const std::vector<std::string>& methods, const SweepFlags& flags,
+                         const std::vector<spatial::Light>& lights) {
+    return {.caseName = scene.name,
+            .caseHash = Fnv1a64Hex(caseFile.text),
+            .methods = methods,
+            .backend = flags.backend,
+            .cascades = scene.partitions.count,
+            .phases = scene.phases,
+            .maxPhases = spatial::MostPhases(scene.phases, scene.maxPhases),
+            .shimmerPoses = flags.shimmerPoses,
+            .lights = lights.size(),
+            .lightsHash = LightsHash(lights)};
+}
+
 }  // namespace
 
 int SweepCommand(const SweepFlags& flags) {
@@ -244,13 +271,7 @@ int SweepCommand(const SweepFlags& flags) {
     const spatial::Scene scene =
         LoadSceneWithOverrides(caseFile, flags.cascades, flags.phases, flags.maxPhases);
     const std::vector<std::string> methods = SpatialMethodsOfCase(flags.methods, scene, true);
-    if (static_cast<std::size_t>(flags.shimmerPoses) > scene.cameraPath.size())
-        throw InputError("--shimmer-poses: " + std::to_string(flags.shimmerPoses) +
-                         " poses, but the case's camera_path has " +
-                         std::to_string(scene.cameraPath.size()));
-    if (const std::string excess = SweepMemoryExcess(scene, methods.size(), flags.shimmerPoses);
-        flags.shimmerPoses > 0 && !excess.empty())
-        throw InputError("--shimmer-poses: the sweep " + excess);
+    CheckShimmerPoses(scene, methods.size(), flags.shimmerPoses);
     const BackendKind backend = BackendOf(flags.backend);
     NoteCpuOnlyMethods(methods, backend);
     const ReportTable1 report =
@@ -260,16 +281,7 @@ int SweepCommand(const SweepFlags& flags) {
     const std::vector<std::size_t> indices = ShareOf(lights.size(), shard);
     std::optional<OutputSet> out;  // --out is checked before anything is computed
     if (!flags.outDir.empty()) out.emplace(flags.outDir, SweepOutputPlan(casePath, scene.name));
-    const SweepIdentity identity{.caseName = scene.name,
-                                 .caseHash = Fnv1a64Hex(caseFile.text),
-                                 .methods = methods,
-                                 .backend = flags.backend,
-                                 .cascades = scene.partitions.count,
-                                 .phases = scene.phases,
-                                 .maxPhases = spatial::MostPhases(scene.phases, scene.maxPhases),
-                                 .shimmerPoses = flags.shimmerPoses,
-                                 .lights = lights.size(),
-                                 .lightsHash = LightsHash(lights)};
+    const SweepIdentity identity = IdentityOf(caseFile, scene, methods, flags, lights);
     // With --out: the cascade-count study, and the journal of the finished lights.
     const bool withStudy = out && !CascadeStudyMethods(methods).empty();
     const std::vector<int> studyCounts =

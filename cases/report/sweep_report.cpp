@@ -262,6 +262,35 @@ void SummarizeMeans(const SweepResult& r, std::size_t m, std::size_t reference,
     out->residualNoise = sum > 0.0 ? errors / sum : 0.0;
 }
 
+// The median and the largest storage factor over the lights.
+void SummarizeStorage(const SweepResult& r, std::size_t m, MethodSummary* out) {
+    std::vector<double> storage;
+    for (const auto& light : r.cells) storage.push_back(light[m].storageFactor);
+    if (storage.empty()) return;
+    std::sort(storage.begin(), storage.end());
+    const std::size_t half = storage.size() / 2;
+    out->medianStorage =
+        storage.size() % 2 ? storage[half] : 0.5 * (storage[half - 1] + storage[half]);
+    out->maxStorage = storage.back();
+}
+
+// A virtual method's pages requested, resident and dropped and its LOD bias, means over the
+// lights.
+void SummarizePages(const SweepResult& r, std::size_t m, MethodSummary* out) {
+    const double lights = static_cast<double>(std::max<std::size_t>(1, r.cells.size()));
+    double requested = 0.0, resident = 0.0, dropped = 0.0, bias = 0.0;
+    for (const auto& light : r.cells) {
+        requested += static_cast<double>(light[m].pagesRequested);
+        resident += static_cast<double>(light[m].pagesResident);
+        dropped += static_cast<double>(light[m].pagesDropped);
+        bias += light[m].lodBias;
+    }
+    out->meanPagesRequested = requested / lights;
+    out->meanPagesResident = resident / lights;
+    out->meanPagesDropped = dropped / lights;
+    out->meanLodBias = bias / lights;
+}
+
 MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t reference) {
     MethodSummary out;
     SummarizeMeans(r, m, reference, &out);
@@ -290,15 +319,7 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
         out.emptyPartitions += c.emptyPartitions;
         out.cascades = std::max(out.cascades, c.cascades);
     }
-    std::vector<double> storage;
-    for (const auto& light : r.cells) storage.push_back(light[m].storageFactor);
-    if (!storage.empty()) {
-        std::sort(storage.begin(), storage.end());
-        const std::size_t half = storage.size() / 2;
-        out.medianStorage =
-            storage.size() % 2 ? storage[half] : 0.5 * (storage[half - 1] + storage[half]);
-        out.maxStorage = storage.back();
-    }
+    SummarizeStorage(r, m, &out);
     const double lights = static_cast<double>(std::max<std::size_t>(1, r.cells.size()));
     out.meanMisclassified /= lights;
     out.meanH = finite ? out.meanH / finite : std::numeric_limits<double>::infinity();
@@ -310,19 +331,7 @@ MethodSummary Summarize(const SweepResult& r, std::size_t m, std::size_t referen
     out.hAgreesPercent = AgreesPercent(r, m, reference, &SweepCell::h);
     out.eAgreesPercent = AgreesPercent(r, m, reference, &SweepCell::e);
     out.grazingShare = positive ? out.grazingShare / positive : 0.0;
-    if (!r.cells.empty() && r.cells.front()[m].pagesRequested >= 0) {
-        double requested = 0.0, resident = 0.0, dropped = 0.0, bias = 0.0;
-        for (const auto& light : r.cells) {
-            requested += static_cast<double>(light[m].pagesRequested);
-            resident += static_cast<double>(light[m].pagesResident);
-            dropped += static_cast<double>(light[m].pagesDropped);
-            bias += light[m].lodBias;
-        }
-        out.meanPagesRequested = requested / lights;
-        out.meanPagesResident = resident / lights;
-        out.meanPagesDropped = dropped / lights;
-        out.meanLodBias = bias / lights;
-    }
+    if (!r.cells.empty() && r.cells.front()[m].pagesRequested >= 0) SummarizePages(r, m, &out);
     if (r.shimmerPoses > 1) {
         double shimmer = 0.0;
         for (const auto& light : r.cells) shimmer += light[m].shimmer;

@@ -177,6 +177,47 @@ glm::dvec3 EyeDirectionToLight(const spatial::Camera& camera, const spatial::Lig
 
 }  // namespace
 
+namespace {
+
+// The covered frame pixels' planar eye-depth range (as `visible`: the camera's frustum with that
+// near and far) and their centroid, world space.
+void VisibleDepths(const spatial::Scene& scene, const spatial::CameraBuffer& frame,
+                   spatial::ViewFrustum* visible, glm::dvec3* wsCentroid) {
+    double zLo = std::numeric_limits<double>::infinity(), zHi = 0.0;
+    glm::dvec3 sum(0.0);
+    std::size_t covered = 0;
+    for (std::size_t i = 0; i < frame.wsPosition.size(); ++i) {
+        if (!frame.Covered(i)) continue;
+        const double z = spatial::PlanarEyeDepth(scene.camera, frame.wsPosition[i]);
+        zLo = std::min(zLo, z), zHi = std::max(zHi, z);
+        sum += frame.wsPosition[i];
+        ++covered;
+    }
+    *wsCentroid = sum / static_cast<double>(std::max<std::size_t>(1, covered));
+    visible->nearPlane = zLo;
+    visible->farPlane = zHi;
+}
+
+// One method's row: its measured storage beside its storage model's, for the camera's and the
+// visible depths.
+CaseStorageRow StorageRow(const spatial::MethodOutcome& m, const CaseStorage& out,
+                          const glm::dvec3& esToLight) {
+    CaseStorageRow row;
+    row.method = m.method;
+    row.maps = m.pages ? static_cast<int>(m.pages->resident)
+                       : std::max<int>(1, static_cast<int>(m.cascades.size()));
+    row.texels = m.metrics.texels;
+    row.perspectiveMax = m.metrics.perspectiveMax;
+    row.measured = m.metrics.storageFactor;
+    row.measuredP99 = m.metrics.storageFactorP99;
+    const int k = spatial::IsPartitionedMethod(m.method) ? row.maps : 1;
+    row.camera = AnalyticStorageOf(m.method, k, out.camera, esToLight);
+    row.visible = AnalyticStorageOf(m.method, k, out.visible, esToLight);
+    return row;
+}
+
+}  // namespace
+
 CaseStorage RunCaseStorage(const spatial::Scene& scene, const std::vector<std::string>& methods) {
     if (scene.lights.empty())
         throw InputError(
@@ -189,22 +230,9 @@ CaseStorage RunCaseStorage(const spatial::Scene& scene, const std::vector<std::s
     const std::unique_ptr<spatial::Evaluator> evaluator = MakeEvaluator(scene, *backend);
     for (std::size_t l = 0; l < scene.lights.size(); ++l)
         CheckLightFacesPixels(*evaluator, scene.lights[l], LightField(l));
-    // The visible pixels' planar depth range and centroid.
-    const spatial::CameraBuffer& frame = evaluator->frame();
-    double zLo = std::numeric_limits<double>::infinity(), zHi = 0.0;
-    glm::dvec3 wsCentroid(0.0);
-    std::size_t covered = 0;
-    for (std::size_t i = 0; i < frame.wsPosition.size(); ++i) {
-        if (!frame.Covered(i)) continue;
-        const double z = spatial::PlanarEyeDepth(scene.camera, frame.wsPosition[i]);
-        zLo = std::min(zLo, z), zHi = std::max(zHi, z);
-        wsCentroid += frame.wsPosition[i];
-        ++covered;
-    }
-    wsCentroid /= static_cast<double>(std::max<std::size_t>(1, covered));
     out.visible = out.camera;
-    out.visible.nearPlane = zLo;
-    out.visible.farPlane = zHi;
+    glm::dvec3 wsCentroid;
+    VisibleDepths(scene, evaluator->frame(), &out.visible, &wsCentroid);
 
     spatial::EvaluationOptions options;
     options.methods = methods;
@@ -225,20 +253,8 @@ CaseStorage RunCaseStorage(const spatial::Scene& scene, const std::vector<std::s
         light.optimalVisible = spatial::OptimalStorageFactor(out.visible);
         light.bestSingleCamera = BestSingleMapStorage(out.camera, light.esToLight);
         light.bestSingleVisible = BestSingleMapStorage(out.visible, light.esToLight);
-        for (const spatial::MethodOutcome& m : outcome.methods) {
-            CaseStorageRow row;
-            row.method = m.method;
-            row.maps = m.pages ? static_cast<int>(m.pages->resident)
-                               : std::max<int>(1, static_cast<int>(m.cascades.size()));
-            row.texels = m.metrics.texels;
-            row.perspectiveMax = m.metrics.perspectiveMax;
-            row.measured = m.metrics.storageFactor;
-            row.measuredP99 = m.metrics.storageFactorP99;
-            const int k = spatial::IsPartitionedMethod(m.method) ? row.maps : 1;
-            row.camera = AnalyticStorageOf(m.method, k, out.camera, light.esToLight);
-            row.visible = AnalyticStorageOf(m.method, k, out.visible, light.esToLight);
-            light.rows.push_back(std::move(row));
-        }
+        for (const spatial::MethodOutcome& m : outcome.methods)
+            light.rows.push_back(StorageRow(m, out, light.esToLight));
         out.lights.push_back(std::move(light));
     }
     return out;
