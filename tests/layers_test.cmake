@@ -1,7 +1,8 @@
 # The core's sources include nothing above the core (CONTRIBUTING.md, "Layout"): no file of
 # solvers/, flatland/ or spatial/ outside their studies/, harness/, gl/ and python/ folders includes
 # a header of the studies, the test bench, the OpenGL backend or the case layer. (The root
-# CMakeLists.txt checks the core's links the same way when configuring.)
+# CMakeLists.txt checks the core's links the same way when configuring.) And the case layer's
+# folders include only those before them in the order load, run, report, record, app.
 # Arguments: ROOT, the source tree to check (the test of this script gives it a bad tree too).
 set(forbidden "#include \"lexel/(cases|spatial/harness|spatial/gl|spatial/studies|flatland/studies)/")
 file(GLOB core RELATIVE ${ROOT} ${ROOT}/solvers/*.h ${ROOT}/solvers/*.cpp ${ROOT}/flatland/*.h
@@ -16,9 +17,28 @@ foreach(file IN LISTS core)
         list(APPEND violations "${file}: ${line}")
     endforeach()
 endforeach()
+# The case layer, folder by folder: none includes a folder after it.
+set(caseFolders load run report record app)
+set(caseSources 0)
+foreach(folder IN LISTS caseFolders)
+    list(POP_FRONT caseFolders)
+    if(NOT caseFolders)
+        break()
+    endif()
+    list(JOIN caseFolders "|" above)
+    file(GLOB sources RELATIVE ${ROOT} ${ROOT}/cases/${folder}/*.h ${ROOT}/cases/${folder}/*.cpp)
+    foreach(file IN LISTS sources)
+        math(EXPR caseSources "${caseSources} + 1")
+        file(STRINGS ${ROOT}/${file} lines REGEX "#include \"lexel/cases/(${above})/")
+        foreach(line IN LISTS lines)
+            list(APPEND violations "${file}: ${line}")
+        endforeach()
+    endforeach()
+endforeach()
 if(violations)
     list(JOIN violations "\n  " text)
-    message(FATAL_ERROR "layers: core sources include headers above the core:\n  ${text}")
+    message(FATAL_ERROR "layers: sources include headers above their layer:\n  ${text}")
 endif()
 list(LENGTH core count)
-message(STATUS "layers: ${count} core sources include only the core")
+message(STATUS "layers: ${count} core sources include only the core, ${caseSources} case-layer "
+               "sources only the folders before theirs")

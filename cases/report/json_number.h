@@ -1,6 +1,6 @@
 // A number in lexel's JSON outputs: JSON has no NaN or infinity, so an undefined or infinite value
 // is `null` (cases/README.md: "No format ever prints nan"). The lossless sweep record
-// (sweep_record.h) keeps them as strings instead.
+// (record/sweep_record_text.h) keeps them as strings instead.
 #pragma once
 
 #include <cmath>

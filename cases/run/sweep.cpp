@@ -4,12 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
-#include <sstream>
 
 #include "lexel/cases/load/memory_budget.h"
 #include "lexel/cases/load/spatial_case.h"
-#include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/camera_path.h"
 #include "lexel/cases/run/evaluator_setup.h"
 #include "lexel/cases/run/spatial_run.h"
@@ -26,11 +25,13 @@ namespace lexel::cases {
 using spatial::Light;
 
 std::string LightLabel(const Light& light) {
-    std::ostringstream out;
     const glm::dvec3 v = light.type == Light::Type::kPoint ? light.position : light.direction;
-    out << (light.type == Light::Type::kPoint ? "point (" : "directional (") << Significant(v.x, 4)
-        << ", " << Significant(v.y, 4) << ", " << Significant(v.z, 4) << ")";
-    return out.str();
+    // A light's coordinates are finite (the loader's check): "%.4g" each, as the reports'
+    // Significant(x, 4) prints them.
+    char text[128];
+    std::snprintf(text, sizeof text, "%s (%.4g, %.4g, %.4g)",
+                  light.type == Light::Type::kPoint ? "point" : "directional", v.x, v.y, v.z);
+    return text;
 }
 
 std::vector<Light> SweepLightsOf(const spatial::Scene& scene, int lights,

@@ -1,7 +1,7 @@
 // The sweep record and journal: every cell survives writing and reading bit for bit,
 // a merge of shards' records is the whole sweep's record, and records that are not one sweep are
 // refused naming the light or the field.
-#include "lexel/cases/report/sweep_record.h"
+#include "lexel/cases/record/sweep_record.h"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -16,8 +16,9 @@
 #include <iterator>
 #include <limits>
 
-#include "lexel/cases/load/sweep_record_reader.h"
-#include "lexel/cases/report/sweep_journal.h"
+#include "lexel/cases/record/sweep_journal.h"
+#include "lexel/cases/record/sweep_record_reader.h"
+#include "lexel/cases/record/sweep_record_text.h"
 #include "lexel/cases/run/sweep_share.h"
 #include "lexel/solvers/errors.h"
 #include "scratch_directory.h"

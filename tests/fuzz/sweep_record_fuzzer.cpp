@@ -9,7 +9,8 @@
 #include <string>
 
 #include "fuzz_support.h"
-#include "lexel/cases/load/sweep_record_reader.h"
+#include "lexel/cases/record/sweep_record.h"
+#include "lexel/cases/record/sweep_record_reader.h"
 #include "lexel/cases/run/sweep_share.h"
 #include "lexel/solvers/errors.h"
 

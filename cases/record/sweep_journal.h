@@ -16,7 +16,7 @@
 #include <mutex>
 #include <string>
 
-#include "lexel/cases/run/sweep_share.h"
+#include "lexel/cases/record/sweep_record.h"
 
 namespace lexel::cases {
 

@@ -1,4 +1,4 @@
-#include "lexel/cases/load/sweep_record_reader.h"
+#include "lexel/cases/record/sweep_record_reader.h"
 
 #include <algorithm>
 #include <limits>
@@ -10,7 +10,7 @@
 #include "lexel/cases/load/hostile_file.h"
 #include "lexel/cases/load/json_reader.h"
 #include "lexel/cases/load/spatial_case.h"
-#include "lexel/cases/report/sweep_record.h"
+#include "lexel/cases/record/sweep_record_text.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
 #include "lexel/spatial/partitions.h"

@@ -1,12 +1,12 @@
 // The sweep record (`sweep-record.json`) and the resume journal's lines: every cell of
 // a sweep's share losslessly (doubles in round-trip form, ±inf and NaN as the strings "inf",
 // "-inf", "nan") with the sweep's identity, so that `lexel merge` rebuilds the whole sweep's
-// files bit for bit. Layout in cases/README.md; read back by cases/load/sweep_record_reader.h.
+// files bit for bit. Layout in cases/README.md; read back by sweep_record_reader.h.
 #pragma once
 
 #include <string>
 
-#include "lexel/cases/run/sweep_share.h"
+#include "lexel/cases/record/sweep_record.h"
 
 namespace lexel::cases {
 

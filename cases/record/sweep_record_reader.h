@@ -1,4 +1,4 @@
-// Reading back what cases/report/sweep_record.h writes: a share's `sweep-record.json` (for
+// Reading back what sweep_record_text.h writes: a share's `sweep-record.json` (for
 // `lexel merge`) and the lines of a sweep's resume journal (for `lexel sweep --resume`). Strict
 // like the case loader: a field that is missing, of the wrong type or out of range is an
 // InputError "<source>: <JSON pointer>: <reason>".
@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "lexel/cases/run/sweep_share.h"
+#include "lexel/cases/record/sweep_record.h"
 
 namespace lexel::cases {
 

@@ -1,4 +1,4 @@
-#include "lexel/cases/report/sweep_record.h"
+#include "lexel/cases/record/sweep_record_text.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>

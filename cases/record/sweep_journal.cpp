@@ -1,4 +1,4 @@
-#include "lexel/cases/report/sweep_journal.h"
+#include "lexel/cases/record/sweep_journal.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "lexel/cases/load/sweep_record_reader.h"
+#include "lexel/cases/record/sweep_record_reader.h"
+#include "lexel/cases/record/sweep_record_text.h"
 #include "lexel/cases/report/output.h"
-#include "lexel/cases/report/sweep_record.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/mesh_file_check.h"
 
