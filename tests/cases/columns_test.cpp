@@ -1,6 +1,6 @@
 // The column tables (cases/report/columns.h): one table of key, unit and getter per kind of result
 // row writes the JSON objects, the CSV header and rows and the text columns; the CSV headers the
-// reports write are the ones cases/README.md documents.
+// reports write are the ones cases/README.md documents, and cases/COLUMNS.md lists every column.
 #include "lexel/cases/report/columns.h"
 
 #include <gtest/gtest.h>
@@ -102,16 +102,15 @@ TEST(Columns, TheCsvHeadersAreTheOnesTheCaseReferenceDocuments) {
             << "cases/README.md does not list the CSV header " << header;
 }
 
-// cases/README.md, "Result columns", holds each table's reference as the code makes it, so a
-// column added, renamed or given another unit shows there.
+// cases/COLUMNS.md holds each table's reference as the code makes it, so a column added, renamed
+// or given another unit shows there.
 TEST(Columns, TheCaseReferenceListsEveryResultColumn) {
-    const std::string readme = ReadFile(LEXEL_CASES_DIR "/README.md");
+    const std::string readme = ReadFile(LEXEL_CASES_DIR "/COLUMNS.md");
     ASSERT_FALSE(readme.empty());
     for (const std::string& reference :
          {SpatialRunColumnReference(), SweepColumnReference(), CaseStorageColumnReference()})
-        EXPECT_NE(readme.find(reference), std::string::npos)
-            << "cases/README.md, \"Result columns\", should hold:\n"
-            << reference;
+        EXPECT_NE(readme.find(reference), std::string::npos) << "cases/COLUMNS.md should hold:\n"
+                                                             << reference;
 }
 
 }  // namespace
