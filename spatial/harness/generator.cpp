@@ -37,6 +37,65 @@ constexpr int kPlacementTries = 64;
 
 }  // namespace
 
+namespace {
+
+// One object's draw, in the order the published layouts were drawn: its shape (box, sphere,
+// cylinder), its size (every extent in [kMinSize, kMaxSize]: a sphere's and a cylinder's
+// diameter; the unit box and cylinder are 1 tall, the unit sphere 2 across), its turn about y, a
+// tilt for a third of them and a lift off the floor for a third.
+struct DrawnObject {
+    int kind = 0;
+    Transform transform;
+    double lift = 0.0;
+};
+
+DrawnObject DrawObject(std::mt19937_64& rng) {
+    DrawnObject o;
+    o.kind = UniformInt(rng, 3);
+    Transform& t = o.transform;
+    if (o.kind == 0) {
+        t.scale = {Uniform(rng, kMinSize, kMaxSize), Uniform(rng, kMinSize, kMaxSize),
+                   Uniform(rng, kMinSize, kMaxSize)};
+    } else if (o.kind == 1) {
+        t.scale = glm::dvec3(0.5 * Uniform(rng, kMinSize, kMaxSize));
+    } else {
+        const double radius = 0.5 * Uniform(rng, kMinSize, kMaxSize);
+        t.scale = {radius, Uniform(rng, kMinSize, kMaxSize), radius};
+    }
+    t.rotateDeg.y = Uniform(rng, 0.0, 360.0);
+    if (Uniform01(rng) < 1.0 / 3.0) {
+        const double tilt = Uniform(rng, -30.0, 30.0);
+        (UniformInt(rng, 2) == 0 ? t.rotateDeg.x : t.rotateDeg.z) = tilt;
+    }
+    o.lift = Uniform01(rng) < 1.0 / 3.0 ? Uniform(rng, 0.05, 1.0) : 0.0;
+    return o;
+}
+
+// Rejection sampling: the first spot (x, z) whose footprint circle of `radius` clears every placed
+// one, or else the spot with the most clearance (the least overlap).
+glm::dvec2 DrawSpot(std::mt19937_64& rng, double radius, const std::vector<Footprint>& placed) {
+    glm::dvec2 best(0.0);
+    double bestClearance = -std::numeric_limits<double>::infinity();
+    for (int attempt = 0; attempt < kPlacementTries; ++attempt) {
+        const double reach = kPlacementHalfSize - radius;
+        // z is drawn before x: the order GCC gave the two draws when they were the arguments of
+        // one constructor (unspecified in C++; clang drew x first and built another floor), kept
+        // so the published layouts stay as they are.
+        const double spotZ = Uniform(rng, -reach, reach);
+        const double spotX = Uniform(rng, -reach, reach);
+        const glm::dvec2 spot(spotX, spotZ);
+        double clearance = std::numeric_limits<double>::infinity();
+        for (const Footprint& other : placed)
+            clearance =
+                std::min(clearance, glm::length(spot - other.wsCentre) - radius - other.radius);
+        if (clearance > bestClearance) bestClearance = clearance, best = spot;
+        if (clearance >= 0.0) break;
+    }
+    return best;
+}
+
+}  // namespace
+
 TriangleMesh FloorObjects(int count, std::uint64_t seed, glm::dvec4* floorPlane) {
     if (count < 0)
         throw std::invalid_argument("FloorObjects: count must be >= 0, got " +
@@ -50,55 +109,18 @@ TriangleMesh FloorObjects(int count, std::uint64_t seed, glm::dvec4* floorPlane)
     const TriangleMesh unitShapes[3] = {MakeBox(), MakeSphere(), MakeCylinder()};
     std::vector<Footprint> placed;
     for (int i = 0; i < count; ++i) {
-        // Shape and size: every extent in [kMinSize, kMaxSize] (a sphere's and a cylinder's
-        // diameter; the unit box and cylinder are 1 tall, the unit sphere 2 across).
-        const int kind = UniformInt(rng, 3);
-        Transform t;
-        if (kind == 0) {
-            t.scale = {Uniform(rng, kMinSize, kMaxSize), Uniform(rng, kMinSize, kMaxSize),
-                       Uniform(rng, kMinSize, kMaxSize)};
-        } else if (kind == 1) {
-            t.scale = glm::dvec3(0.5 * Uniform(rng, kMinSize, kMaxSize));
-        } else {
-            const double radius = 0.5 * Uniform(rng, kMinSize, kMaxSize);
-            t.scale = {radius, Uniform(rng, kMinSize, kMaxSize), radius};
-        }
-        t.rotateDeg.y = Uniform(rng, 0.0, 360.0);
-        if (Uniform01(rng) < 1.0 / 3.0) {
-            const double tilt = Uniform(rng, -30.0, 30.0);
-            (UniformInt(rng, 2) == 0 ? t.rotateDeg.x : t.rotateDeg.z) = tilt;
-        }
-        const double lift = Uniform01(rng) < 1.0 / 3.0 ? Uniform(rng, 0.05, 1.0) : 0.0;
-
+        const DrawnObject drawn = DrawObject(rng);
         // Shaped and turned at the origin; its bounds give the footprint and the drop to the floor.
-        TriangleMesh object = TransformMesh(unitShapes[kind], t);
+        TriangleMesh object = TransformMesh(unitShapes[drawn.kind], drawn.transform);
         const Bounds osBounds = object.ComputeBounds();
         const double radius = 0.5 * glm::length(glm::dvec2(osBounds.hi.x - osBounds.lo.x,
                                                            osBounds.hi.z - osBounds.lo.z));
-
-        // Rejection sampling: the first spot whose footprint circle clears every placed one, or
-        // else the spot with the most clearance (the least overlap).
-        glm::dvec2 best(0.0);
-        double bestClearance = -std::numeric_limits<double>::infinity();
-        for (int attempt = 0; attempt < kPlacementTries; ++attempt) {
-            const double reach = kPlacementHalfSize - radius;
-            // z is drawn before x: the order GCC gave the two draws when they were the arguments
-            // of one constructor (unspecified in C++; clang drew x first and built another
-            // floor), kept so the published layouts stay as they are.
-            const double spotZ = Uniform(rng, -reach, reach);
-            const double spotX = Uniform(rng, -reach, reach);
-            const glm::dvec2 spot(spotX, spotZ);
-            double clearance = std::numeric_limits<double>::infinity();
-            for (const Footprint& other : placed)
-                clearance =
-                    std::min(clearance, glm::length(spot - other.wsCentre) - radius - other.radius);
-            if (clearance > bestClearance) bestClearance = clearance, best = spot;
-            if (clearance >= 0.0) break;
-        }
+        const glm::dvec2 best = DrawSpot(rng, radius, placed);
         placed.push_back({best, radius});
 
         const glm::dvec3 osCentre = osBounds.Center();
-        const glm::dvec3 shift(best.x - osCentre.x, lift - osBounds.lo.y, best.y - osCentre.z);
+        const glm::dvec3 shift(best.x - osCentre.x, drawn.lift - osBounds.lo.y,
+                               best.y - osCentre.z);
         scene.Append(TransformMesh(object, glm::translate(glm::dmat4(1.0), shift)));
     }
     return scene;
