@@ -33,7 +33,7 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep_lights import NORMAL95, fail, parse_args, read_rows  # noqa: E402
+from sweep_lights import fail, normal95, parse_args, read_rows  # noqa: E402
 
 MEAN = "_misclassified_mean"
 SE = "_misclassified_se"
@@ -152,7 +152,7 @@ def main(names, excluded, resamples, dirs):
               f"{percent(closed(pooled))}%.")
     # A set whose gap is within its phase noise has a share that says nothing (its interval
     # spans hundreds of %): named, and the average over the others given beside.
-    noisy = [i for i in defined if zs[i] is not None and abs(zs[i]) < NORMAL95]
+    noisy = [i for i in defined if zs[i] is not None and abs(zs[i]) < normal95()]
     if noisy:
         names_text = ", ".join(f"{sets[i][0]} (z {zs[i]:.1f})".replace("-", "−") for i in noisy)
         rest = [i for i in defined if i not in noisy]

@@ -51,7 +51,9 @@ def beyond_noise(mean_a, se_a, mean_b, se_b):
     return lexel_module().differ_beyond_noise(mean_a, se_a, mean_b, se_b)
 
 
-NORMAL95 = 1.96  # lexel.NORMAL95, for the scripts' text; the rule itself is beyond_noise
+def normal95():
+    """The two-sided 95% normal quantile lexel's reports use (lexel.NORMAL95, 1.96)."""
+    return lexel_module().NORMAL95
 
 
 def read_lights(d):

@@ -60,46 +60,49 @@ MethodMatrix FromReportStart(const char* name, const MethodContext& context, boo
     return m;
 }
 
-MethodDescriptor Optimizer(std::string name, std::string description, MethodTraits traits,
-                           std::function<MethodMatrix(const MethodContext&)> compute) {
+MethodInfo OptimizerInfo(const char* name, std::string description, MethodTraits traits) {
     traits.optimizer = true;
-    return {{std::move(name), std::move(description), kCitation, MethodFamily::kOptimizer, traits,
-             StorageModel::kBestSingleMap},
-            std::move(compute)};
+    return {name,   std::move(description),      kCitation, MethodFamily::kOptimizer,
+            traits, StorageModel::kBestSingleMap};
+}
+
+// A method that runs Algorithm 1 from every baseline's start (FromEveryStart).
+MethodDescriptor EveryStart(const char* name, std::string description, MethodTraits traits,
+                            bool edge, bool refine) {
+    return {OptimizerInfo(name, std::move(description), traits),
+            [name, edge, refine](const MethodContext& c) {
+                return FromEveryStart(name, c, edge, refine);
+            }};
+}
+
+// A method that runs Algorithm 1 from the report's start (FromReportStart).
+MethodDescriptor ReportStart(const char* name, std::string description, MethodTraits traits,
+                             bool shear) {
+    return {OptimizerInfo(name, std::move(description), traits),
+            [name, shear](const MethodContext& c) { return FromReportStart(name, c, shear); }};
 }
 
 }  // namespace
 
 std::vector<MethodDescriptor> OptimizerMethods() {
+    constexpr bool kEdge = true, kRefine = true, kShear = true;
     return {
-        Optimizer(
-            kOptimalMethod,
-            "Algorithm 1 from every baseline's start on the edge energy e (fair reference)",
-            {.fairTable = true},
-            [](const MethodContext& c) { return FromEveryStart(kOptimalMethod, c, true, false); }),
-        Optimizer("optimal-refined",
-                  "optimal, its best start refined on e by Ceres LBFGS, collapses rejected",
-                  {.fairTable = true},
-                  [](const MethodContext& c) {
-                      return FromEveryStart("optimal-refined", c, true, true);
-                  }),
-        Optimizer(
-            "optimal-h", "Algorithm 1 from every baseline's start on the report's h (eq. 6)",
-            {.fairTable = true},
-            [](const MethodContext& c) { return FromEveryStart("optimal-h", c, false, false); }),
-        Optimizer(
-            kReportOptimalMethod,
-            "Algorithm 1 as published: from focused's axis only (Table 1's optimal)",
-            {.reportTable = true},
-            [](const MethodContext& c) { return FromReportStart(kReportOptimalMethod, c, false); }),
-        Optimizer("optimal-shear",
-                  "Algorithm 1 with the report's affine shear (Fig. 3), optimized exactly", {},
-                  [](const MethodContext& c) { return FromReportStart("optimal-shear", c, true); }),
-        Optimizer("optimal-refined-h", "optimal-h, its best start refined on h by Ceres LBFGS",
-                  {.optIn = true},
-                  [](const MethodContext& c) {
-                      return FromEveryStart("optimal-refined-h", c, false, true);
-                  }),
+        EveryStart(kOptimalMethod,
+                   "Algorithm 1 from every baseline's start on the edge energy e (fair reference)",
+                   {.fairTable = true}, kEdge, !kRefine),
+        EveryStart("optimal-refined",
+                   "optimal, its best start refined on e by Ceres LBFGS, collapses rejected",
+                   {.fairTable = true}, kEdge, kRefine),
+        EveryStart("optimal-h", "Algorithm 1 from every baseline's start on the report's h (eq. 6)",
+                   {.fairTable = true}, !kEdge, !kRefine),
+        ReportStart(kReportOptimalMethod,
+                    "Algorithm 1 as published: from focused's axis only (Table 1's optimal)",
+                    {.reportTable = true}, !kShear),
+        ReportStart("optimal-shear",
+                    "Algorithm 1 with the report's affine shear (Fig. 3), optimized exactly", {},
+                    kShear),
+        EveryStart("optimal-refined-h", "optimal-h, its best start refined on h by Ceres LBFGS",
+                   {.optIn = true}, !kEdge, kRefine),
     };
 }
 

@@ -50,6 +50,13 @@ struct Context {
         c.margin = margin;
         return c;
     }
+    // The registry's context (ComputeLightMatrix): the baselines' context and the samples, if any.
+    MethodContext Method() const {
+        MethodContext method;
+        method.baseline = View();
+        method.samples = samples ? &*samples : nullptr;
+        return method;
+    }
     const LightSamples& Samples(const char* who) const {
         if (!samples)
             throw py::value_error(std::string("context: ") + who +
@@ -131,16 +138,6 @@ void BindContext(py::module_& m) {
 // ---------------------------------------------------------------------------------------------
 // The baselines
 
-// The registry's names of one family, quoted and joined ("'a', 'b' or 'c'") for a message.
-std::string QuotedNames(const std::vector<std::string>& names) {
-    std::string text;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        if (i > 0) text += i + 1 == names.size() ? " or " : ", ";
-        text += "'" + names[i] + "'";
-    }
-    return text;
-}
-
 // {name: description} of one family's default methods, in registry order.
 py::dict FamilyDescriptions(MethodFamily family) {
     py::dict out;
@@ -156,7 +153,7 @@ void CheckFamily(const std::string& name, MethodFamily family, const char* argum
     const std::vector<std::string> names = MethodNamesOf(family);
     if (std::find(names.begin(), names.end(), name) == names.end())
         throw py::value_error(std::string(argument) + ": unknown " + noun + " '" + name +
-                              "' (lexel has " + QuotedNames(names) + ")");
+                              "' (lexel has " + NameList(names) + ")");
 }
 
 py::dict Diagnostics(const BaselineDiagnostics& d) {
@@ -179,9 +176,7 @@ void BindBaselines(py::module_& m) {
         "baseline",
         [](const std::string& name, const Context& context, bool diagnostics) -> py::object {
             CheckFamily(name, MethodFamily::kBaseline, "name", "baseline");
-            MethodContext method;
-            method.baseline = context.View();
-            const MethodMatrix result = ComputeLightMatrix(name, method);
+            const MethodMatrix result = ComputeLightMatrix(name, context.Method());
             if (!diagnostics) return py::cast(result.matrix);
             return py::make_tuple(result.matrix, Diagnostics(result.diagnostics));
         },
@@ -428,9 +423,8 @@ void BindPartitions(py::module_& m) {
                 throw py::value_error("allocation: expected 'equal' or 'lagrange', got '" +
                                       allocation + "'");
             CheckFamily(name, MethodFamily::kPartitioned, "scheme", "partition scheme");
-            MethodContext method;
-            method.baseline = context.View();
-            method.samples = &context.Samples(name.c_str());
+            context.Samples(name.c_str());  // ValueError without them, naming the scheme
+            MethodContext method = context.Method();
             method.partitions = o;
             py::gil_scoped_release release;
             return ComputeLightMatrix(name, method).cascades;
@@ -529,9 +523,7 @@ void BindRegistry(py::module_& m) {
             if (count < 1 || count > kMaxCascades)
                 throw py::value_error("count: must be in [1, " + std::to_string(kMaxCascades) +
                                       "], got " + std::to_string(count));
-            MethodContext method;
-            method.baseline = context.View();
-            method.samples = context.samples ? &*context.samples : nullptr;
+            MethodContext method = context.Method();
             method.partitions.count = count;
             MethodMatrix result;
             {

@@ -10,6 +10,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "lexel/spatial/optimizer.h"
 
@@ -33,9 +34,21 @@ std::string NameList(const Table& table) {
     const std::size_t n = std::size(table);
     for (std::size_t i = 0; i < n; ++i) {
         if (i > 0) text += i + 1 == n ? " or " : ", ";
-        text += "'" + std::string(table[i].name) + "'";
+        // Appended piece by piece: GCC 12's false -Wrestrict fires on a "'" + name + "'" chain
+        // (bug 105329, root CMakeLists.txt).
+        text += '\'';
+        text += table[i].name;
+        text += '\'';
     }
     return text;
+}
+inline std::string NameList(const std::vector<std::string>& names) {
+    struct Named {
+        const std::string& name;
+    };
+    std::vector<Named> table;
+    for (const std::string& n : names) table.push_back({n});
+    return NameList(table);
 }
 
 }  // namespace lexel::python
