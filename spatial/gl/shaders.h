@@ -47,38 +47,63 @@ void main() {
 // or wsLightDirection (directional), X = lsFromMap (c, 1). In float the ray's direction carries
 // ~1e-7 relative error, which a grazing receiver turns into more than the 1e-5 bias. WorldPoint
 // takes a unit-frame float point back to world coordinates in double.
-#define LEXEL_LIGHT_UNIFORMS                                                                   \
-    "layout(location = 10) uniform int pointLight;\n"                                          \
-    "layout(location = 11) uniform dmat3 lsFromWs;\n"                                          \
-    "layout(location = 12) uniform dvec3 lsOffset;\n"                                          \
-    "layout(location = 13) uniform dmat3 mapFromLs;\n"                                         \
-    "layout(location = 14) uniform dmat3 lsFromMap;\n"                                         \
-    "layout(location = 15) uniform dmat3 wsFromLs;\n"                                          \
-    "layout(location = 16) uniform dvec3 wsLight;\n"                                           \
-    "layout(location = 17) uniform dvec3 wsLightDirection;\n"                                  \
-    "layout(location = 18) uniform double lsThird;\n"                                          \
-    "layout(location = 19) uniform double depthOffset;\n"                                      \
-    "layout(location = 20) uniform dvec3 wsUnitOrigin;\n"                                      \
-    "layout(location = 21) uniform double wsUnitScale;\n"                                      \
-    "dvec3 WorldPoint(vec3 unitPoint) {\n"                                                     \
-    "    return wsUnitOrigin + wsUnitScale * dvec3(unitPoint);\n"                              \
-    "}\n"                                                                                      \
-    "void LightRay(dvec2 texelCentre, out dvec3 origin, out dvec3 direction) {\n"              \
-    "    dvec3 X = lsFromMap * dvec3(texelCentre, 1.0);\n"                                     \
-    "    if (pointLight != 0) {\n"                                                             \
-    "        origin = wsLight;\n"                                                              \
-    "        direction = normalize(wsFromLs * X);\n"                                           \
-    "    } else {\n"                                                                           \
-    "        origin = wsLight + (lsThird / X.z) * (wsFromLs * X);\n"                           \
-    "        direction = wsLightDirection;\n"                                                  \
-    "    }\n"                                                                                  \
-    "}\n"                                                                                      \
-    "// The depth of the plane (n, through p) along the ray, or `otherwise` when none.\n"      \
-    "double PlaneDepth(dvec3 n, dvec3 p, dvec3 origin, dvec3 direction, double otherwise) {\n" \
-    "    double facing = dot(n, direction);\n"                                                 \
-    "    if (facing == 0.0) return otherwise;\n"                                               \
-    "    double t = dot(n, p - origin) / facing;\n"                                            \
-    "    return t > 0.0 && !isinf(t) ? t : otherwise;\n"                                       \
+#define LEXEL_LIGHT_UNIFORMS                                                                    \
+    "layout(location = 10) uniform int pointLight;\n"                                           \
+    "layout(location = 11) uniform dmat3 lsFromWs;\n"                                           \
+    "layout(location = 12) uniform dvec3 lsOffset;\n"                                           \
+    "layout(location = 13) uniform dmat3 mapFromLs;\n"                                          \
+    "layout(location = 14) uniform dmat3 lsFromMap;\n"                                          \
+    "layout(location = 15) uniform dmat3 wsFromLs;\n"                                           \
+    "layout(location = 16) uniform dvec3 wsLight;\n"                                            \
+    "layout(location = 17) uniform dvec3 wsLightDirection;\n"                                   \
+    "layout(location = 18) uniform double lsThird;\n"                                           \
+    "layout(location = 19) uniform double depthOffset;\n"                                       \
+    "layout(location = 20) uniform dvec3 wsUnitOrigin;\n"                                       \
+    "layout(location = 21) uniform double wsUnitScale;\n"                                       \
+    "dvec3 WorldPoint(vec3 unitPoint) {\n"                                                      \
+    "    return wsUnitOrigin + wsUnitScale * dvec3(unitPoint);\n"                               \
+    "}\n"                                                                                       \
+    "void LightRay(dvec2 texelCentre, out dvec3 origin, out dvec3 direction) {\n"               \
+    "    dvec3 X = lsFromMap * dvec3(texelCentre, 1.0);\n"                                      \
+    "    if (pointLight != 0) {\n"                                                              \
+    "        origin = wsLight;\n"                                                               \
+    "        direction = normalize(wsFromLs * X);\n"                                            \
+    "    } else {\n"                                                                            \
+    "        origin = wsLight + (lsThird / X.z) * (wsFromLs * X);\n"                            \
+    "        direction = wsLightDirection;\n"                                                   \
+    "    }\n"                                                                                   \
+    "}\n"                                                                                       \
+    "// The shadow-map passes' depth: along the ray to the face plane n·x = w, or where the\n" \
+    "// ray misses it (a degenerate triangle's) the fragment's own depth along the ray.\n"      \
+    "double FacePlaneDepth(dvec4 plane, dvec3 point, dvec3 origin, dvec3 direction) {\n"        \
+    "    double depth = dot(point - origin, direction);\n"                                      \
+    "    double facing = dot(plane.xyz, direction);\n"                                          \
+    "    if (facing != 0.0) {\n"                                                                \
+    "        double t = (plane.w - dot(plane.xyz, origin)) / facing;\n"                         \
+    "        if (t > 0.0 && !isinf(t)) depth = t;\n"                                            \
+    "    }\n"                                                                                   \
+    "    return depth;\n"                                                                       \
+    "}\n"
+
+// The receiver-plane depth test (spatial/harness/receiver_plane.h, whose C++ this text mirrors
+// line for line; tests/spatial/gl/receiver_plane_test.cpp holds the two equal): the depth of the
+// receiver's plane (normal n through p) along the light ray through the texel centre c (map
+// coordinates), and the comparison with the stored depth. The shade codes are those of Shade.
+#define LEXEL_RECEIVER_PLANE_TEST                                                                  \
+    "const uint kEmpty = 0u, kLit = 1u, kShadowed = 2u, kFacingAway = 3u;\n"                       \
+    "const double kRelativeBias = 1e-5;\n"                                                         \
+    "double ReceiverPlaneDepth(dvec2 texelCentre, dvec3 p, dvec3 n) {\n"                           \
+    "    dvec3 origin, direction;\n"                                                               \
+    "    LightRay(texelCentre, origin, direction);\n"                                              \
+    "    double facing = dot(n, direction);\n"                                                     \
+    "    if (facing != 0.0) {\n"                                                                   \
+    "        double t = dot(n, p - origin) / facing;\n"                                            \
+    "        if (t > 0.0 && !isinf(t)) return t;\n"                                                \
+    "    }\n"                                                                                      \
+    "    return pointLight != 0 ? length(p - wsLight) : dot(wsLightDirection, p) + depthOffset;\n" \
+    "}\n"                                                                                          \
+    "uint CompareWithTexel(double storedDepth, double receiverDepth) {\n"                          \
+    "    return storedDepth < receiverDepth * (1.0 - kRelativeBias) ? kShadowed : kLit;\n"         \
     "}\n"
 
 // The shadow-map pass: linear light depth (LightSpace::Depth) at the texel centre — the distance
@@ -97,20 +122,14 @@ inline constexpr std::string_view kShadowFragment =
 void main() {
     dvec3 origin, direction;
     LightRay(dvec2(gl_FragCoord.xy), origin, direction);
-    dvec4 plane = wsFacePlane[gl_PrimitiveID];
-    double depth = dot(WorldPoint(unitPoint) - origin, direction);  // a degenerate triangle's
-    double facing = dot(plane.xyz, direction);
-    if (facing != 0.0) {
-        double t = (plane.w - dot(plane.xyz, origin)) / facing;
-        if (t > 0.0 && !isinf(t)) depth = t;
-    }
+    double depth =
+        FacePlaneDepth(wsFacePlane[gl_PrimitiveID], WorldPoint(unitPoint), origin, direction);
     gl_FragDepth = float(depth * invDepthScale);
 }
 )";
 
-// ShadePoint per pixel of a camera buffer (render_backend.h): attached shadow, receiver-plane
-// depth along the ray through the texel centre, relative bias 1e-5. Codes are those of Shade. A
-// full-screen triangle: one fragment per pixel of the shade image.
+// ShadePoint per pixel of a camera buffer (render_backend.h): attached shadow, then the
+// receiver-plane depth test. A full-screen triangle: one fragment per pixel of the shade image.
 inline constexpr std::string_view kFullScreenVertex = R"(#version 450 core
 void main() {
     vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);  // (0,0), (2,0), (0,2)
@@ -126,9 +145,7 @@ inline constexpr std::string_view kShadeFragment =
     "layout(binding = 3) uniform sampler2D normalImage;\n"
     "layout(location = 0) uniform double depthScale;\n"
     "layout(location = 1) uniform ivec2 mapSize;\n"
-    "layout(location = 0) out uint shade;\n" LEXEL_LIGHT_UNIFORMS R"(
-const uint kEmpty = 0u, kLit = 1u, kShadowed = 2u, kFacingAway = 3u;
-const double kRelativeBias = 1e-5;
+    "layout(location = 0) out uint shade;\n" LEXEL_LIGHT_UNIFORMS LEXEL_RECEIVER_PLANE_TEST R"(
 
 uint ShadeOf(ivec2 pixel) {
     if (texelFetch(triangleImage, pixel, 0).x < 0) return kEmpty;
@@ -145,12 +162,8 @@ uint ShadeOf(ivec2 pixel) {
     ivec2 texel = ivec2(u);
     float stored = texelFetch(shadowDepth, texel, 0).x;
     if (stored >= 1.0) return kLit;  // cleared: nothing drawn there
-    dvec3 origin, direction;
-    LightRay(dvec2(texel) + 0.5, origin, direction);
-    double receiver = PlaneDepth(n, p, origin, direction,
-                                 pointLight != 0 ? length(p - wsLight)
-                                                 : dot(wsLightDirection, p) + depthOffset);
-    return double(stored) * depthScale < receiver * (1.0 - kRelativeBias) ? kShadowed : kLit;
+    return CompareWithTexel(double(stored) * depthScale,
+                            ReceiverPlaneDepth(dvec2(texel) + 0.5, p, n));
 }
 
 void main() { shade = ShadeOf(ivec2(gl_FragCoord.xy)); }

@@ -127,13 +127,8 @@ void main() {
     ivec2 t = ivec2(gl_FragCoord.xy);
     dvec3 origin, direction;
     LightRay(dvec2(texelBase[t.x], texelBase[mapWidth + t.y]), origin, direction);
-    dvec4 plane = wsFacePlane[triangleId];
-    double depth = dot(WorldPoint(unitPoint) - origin, direction);  // a degenerate triangle's
-    double facing = dot(plane.xyz, direction);
-    if (facing != 0.0) {
-        double d = (plane.w - dot(plane.xyz, origin)) / facing;
-        if (d > 0.0 && !isinf(d)) depth = d;
-    }
+    double depth =
+        FacePlaneDepth(wsFacePlane[triangleId], WorldPoint(unitPoint), origin, direction);
     gl_FragDepth = float(depth * invDepthScale);
 }
 )";

@@ -44,17 +44,9 @@ Shade ShadeWithInverse(const LightSpace& lightSpace, const ShadowMap& map,
     const float stored = map.depth[static_cast<std::size_t>(ty) * map.resolution.width + tx];
     if (std::isinf(stored)) return Shade::kLit;
 
-    // Depth of the receiver's plane along the ray through the texel centre. Both ray kinds have
-    // unit direction and depth 0 at their origin, so the ray parameter is the linear depth.
-    glm::dvec3 wsOrigin, wsDirection;
-    lightSpace.Ray(lsFromMap * glm::dvec3(tx + 0.5, ty + 0.5, 1.0), &wsOrigin, &wsDirection);
-    const double facing = glm::dot(wsNormal, wsDirection);
-    double receiverDepth = lightSpace.Depth(wsPoint);
-    if (facing != 0.0) {
-        const double t = glm::dot(wsNormal, wsPoint - wsOrigin) / facing;
-        if (t > 0.0 && std::isfinite(t)) receiverDepth = t;
-    }
-    return stored < receiverDepth * (1.0 - kRelativeBias) ? Shade::kShadowed : Shade::kLit;
+    const glm::dvec3 lsTexelCentre = lsFromMap * glm::dvec3(tx + 0.5, ty + 0.5, 1.0);
+    return CompareWithTexel(stored,
+                            ReceiverPlaneDepth(lightSpace, lsTexelCentre, wsPoint, wsNormal));
 }
 
 }  // namespace

@@ -102,16 +102,9 @@ Shade ShadeWarpedPoint(const LightSpace& lightSpace, const ShadowMap& map,
     const int tx = static_cast<int>(u->x), ty = static_cast<int>(u->y);
     const float stored = map.depth[static_cast<std::size_t>(ty) * map.resolution.width + tx];
     if (std::isinf(stored)) return Shade::kLit;
-    // The receiver's plane along the texel centre's ray (ShadePoint's test, cpu_renderer.cpp).
-    glm::dvec3 wsOrigin, wsDirection;
-    lightSpace.Ray(warp.Inverse(glm::dvec2(tx + 0.5, ty + 0.5)), &wsOrigin, &wsDirection);
-    const double facing = glm::dot(wsNormal, wsDirection);
-    double receiverDepth = lightSpace.Depth(wsPoint);
-    if (facing != 0.0) {
-        const double t = glm::dot(wsNormal, wsPoint - wsOrigin) / facing;
-        if (t > 0.0 && std::isfinite(t)) receiverDepth = t;
-    }
-    return stored < receiverDepth * (1.0 - kRelativeBias) ? Shade::kShadowed : Shade::kLit;
+    const glm::dvec3 lsTexelCentre = warp.Inverse(glm::dvec2(tx + 0.5, ty + 0.5));
+    return CompareWithTexel(stored,
+                            ReceiverPlaneDepth(lightSpace, lsTexelCentre, wsPoint, wsNormal));
 }
 
 std::vector<Shade> ShadeWarpedPixels(const CameraBuffer& frame, const LightSpace& lightSpace,

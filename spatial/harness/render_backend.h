@@ -9,12 +9,9 @@
 // The shadow decision (ShadePoint) is the bias policy, identical for every method:
 //   - a receiver whose normal faces away from the light (n · l ≤ 0) is in attached shadow and is
 //     excluded from the misclassification counts (every method and the ground truth agree);
-//   - otherwise the stored depth of texel t is compared with the depth of the receiver's own plane
-//     along the ray through t's centre ("receiver plane depth", as in Schüler, ShaderX4 2006, and
-//     Isidoro, GDC 2006): the map stores the nearest surface along exactly that ray, so a lit plane
-//     compares equal with itself whatever the texel size and slope, and acne cannot appear;
-//   - shadowed iff stored < receiverPlaneDepth · (1 - kRelativeBias), kRelativeBias = 1e-5
-//     (dimensionless, about 170 float roundings of the stored depth);
+//   - otherwise the receiver-plane depth test of receiver_plane.h: the stored depth of texel t
+//     against the depth of the receiver's own plane along the ray through t's centre, shadowed
+//     iff stored < receiverPlaneDepth · (1 - kRelativeBias), kRelativeBias = 1e-5;
 //   - a receiver outside the map, or behind the light's plane p4·X = 0, is lit (every method's map
 //     covers the visible samples, so this only happens between readback samples).
 #pragma once
@@ -25,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lexel/spatial/harness/receiver_plane.h"
 #include "lexel/spatial/harness/scene.h"
 #include "lexel/spatial/light_matrix.h"
 #include "lexel/spatial/light_space.h"
@@ -43,8 +41,6 @@ struct ShadowMap {
     // ray casting (ray_cast_map.h) or a backend's RenderWarpedShadowMap. Empty: the matrix's map.
     std::optional<MapWarp> warp;
 };
-
-inline constexpr double kRelativeBias = 1e-5;
 
 // The shadow decision for one receiver (see the header comment).
 Shade ShadePoint(const LightSpace& lightSpace, const ShadowMap& map, const glm::dvec3& wsPoint,
