@@ -56,6 +56,18 @@ def normal95():
     return lexel_module().NORMAL95
 
 
+def single_map_baselines():
+    """The registry's single-map baselines of the fair comparison (family `baseline` with the
+    fair-table trait; `lexel methods` lists them), in the registry's order."""
+    return [m["name"] for m in lexel_module().methods()
+            if m["family"] == "baseline" and m["traits"]["fair_table"]]
+
+
+def optimal_method():
+    """The fair comparison's reference method, as the registry names it (lexel.OPTIMAL_METHOD)."""
+    return lexel_module().OPTIMAL_METHOD
+
+
 def read_lights(d):
     """The rows of DIR/lights.csv (possibly none); fails when it cannot be read."""
     try:

@@ -500,6 +500,8 @@ py::dict ComputedRecord(const MethodMatrix& result) {
 }
 
 void BindRegistry(py::module_& m) {
+    m.attr("OPTIMAL_METHOD") = kOptimalMethod;  // the fair comparison's reference
+    m.attr("ORACLE_METHOD") = kOracleMethod;    // the bound: the best single matrix measured
     m.def(
         "methods",
         [] {

@@ -65,3 +65,24 @@ expect_script_errors(fair_table.py
                      "--phases;${WORK}/set|--phases: unknown option"
                      "--reference|--reference: needs a method name"
                      "--reference;psm;${WORK}/set|.*set/lights.csv: no lights with psm's phase-averaged")
+# The single-map baselines are the registry's fair ones (lispsm-engine among them) unless
+# --baseline names them. optimal − best of focused-tight and lispsm-engine: 100 − 90, 200 − 180,
+# mean 15 = +11.1% of 135, half-width t(1) · 7.071/√2 = 12.706 · 5 = 63.5 = 47.1%. With
+# --baseline focused-tight: −50, 20, mean −15 = −9.1% of 165, half-width 12.706 · 35 = 444.7 =
+# 269.5%. A --baseline the sweep did not run is refused.
+file(MAKE_DIRECTORY "${WORK}/engine")
+file(WRITE "${WORK}/engine/lights.csv"
+     "light,optimal_misclassified_mean,focused-tight_misclassified_mean,"
+     "lispsm-engine_misclassified_mean\n0,100,150,90\n1,200,180,260\n")
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/engine"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "\\| engine \\| 2 \\| 150 \\| 165 \\| 175 \\| \\+11\\.1 ± 47\\.1% \\| 0 \\|")
+    message(FATAL_ERROR "fair_table.py, the registry's baselines: exit ${code}: ${out}${err}")
+endif()
+execute_process(COMMAND "${PYTHON}" "${SCRIPT}" --baseline focused-tight "${WORK}/engine"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "\\| engine \\| 2 \\| 150 \\| 165 \\| 175 \\| -9\\.1 ± 269\\.5% \\| 0 \\|")
+    message(FATAL_ERROR "fair_table.py --baseline focused-tight: exit ${code}: ${out}${err}")
+endif()
+expect_script_errors(fair_table.py
+                     "--baseline;psm-tight;${WORK}/engine|--baseline psm-tight: .* has no such method")

@@ -228,6 +228,9 @@ class ReferenceTest(unittest.TestCase):
                                 if m["family"] == "baseline" and m["default"]))
         fair = [m["name"] for m in methods if m["traits"]["fair_table"]]
         self.assertEqual(fair[0], "optimal")
+        self.assertEqual(lexel.OPTIMAL_METHOD, fair[0])
+        self.assertEqual([m["name"] for m in methods if m["family"] == "bound"],
+                         [lexel.ORACLE_METHOD])
         for l, ref in enumerate(self.ref["lights"]):
             _, samples = self.samples(l)
             context = self.context(l, samples)
