@@ -28,7 +28,8 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep_lights import beyond_noise, fail, paired_ci, parse_args, read_rows  # noqa: E402
+from sweep_lights import (beyond_noise, fail, optimal_method, paired_ci, parse_args,  # noqa: E402
+                          read_rows)
 
 MEAN, SE, MS = "_misclassified_mean", "_misclassified_se", "_ms"
 STORAGE, STORAGE99 = "_storage_factor", "_storage_factor_p99"
@@ -129,5 +130,5 @@ def main(reference, dirs):
 if __name__ == "__main__":
     usage = "usage: engine_table.py [--reference METHOD] DIR ..."
     values, dirs = parse_args(sys.argv[1:], {"--reference": "method name"}, usage)
-    reference = values["--reference"][-1] if values["--reference"] else "optimal"
+    reference = values["--reference"][-1] if values["--reference"] else optimal_method()
     main(reference, dirs)

@@ -33,7 +33,8 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep_lights import fail, normal95, parse_args, read_rows  # noqa: E402
+from sweep_lights import (fail, normal95, optimal_method, oracle_method, parse_args,  # noqa: E402
+                          read_rows)
 
 MEAN = "_misclassified_mean"
 SE = "_misclassified_se"
@@ -194,8 +195,8 @@ if __name__ == "__main__":
                                              "--exclude": "PATTERN:LIGHT",
                                              "--resamples": "count"}, usage)
     names = tuple(values[o][-1] if values[o] else default for o, default in
-                  (("--reference", "optimal"), ("--from", "optimal-h"),
-                   ("--bound", "optimal-oracle")))
+                  (("--reference", optimal_method()), ("--from", "optimal-h"),
+                   ("--bound", oracle_method())))
     if len(set(names)) < 3:
         fail(f"--reference, --from and --bound: wanted three methods, got {', '.join(names)}")
     resamples = values["--resamples"][-1] if values["--resamples"] else "2000"

@@ -68,6 +68,11 @@ def optimal_method():
     return lexel_module().OPTIMAL_METHOD
 
 
+def oracle_method():
+    """The measured bound's method, as the registry names it (lexel.ORACLE_METHOD)."""
+    return lexel_module().ORACLE_METHOD
+
+
 def read_lights(d):
     """The rows of DIR/lights.csv (possibly none); fails when it cannot be read."""
     try:
