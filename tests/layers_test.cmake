@@ -2,7 +2,7 @@
 # solvers/, flatland/ or spatial/ outside their studies/, harness/, gl/ and python/ folders includes
 # a header of the studies, the test bench, the OpenGL backend or the case layer. (The root
 # CMakeLists.txt checks the core's links the same way when configuring.) And the case layer's
-# folders include only those before them in the order load, run, report, record, app.
+# folders include only those before them in the order plot, load, run, report, record, app.
 # Arguments: ROOT, the source tree to check (the test of this script gives it a bad tree too).
 set(forbidden "#include \"lexel/(cases|spatial/harness|spatial/gl|spatial/studies|flatland/studies)/")
 file(GLOB core RELATIVE ${ROOT} ${ROOT}/solvers/*.h ${ROOT}/solvers/*.cpp ${ROOT}/flatland/*.h
@@ -18,7 +18,7 @@ foreach(file IN LISTS core)
     endforeach()
 endforeach()
 # The case layer, folder by folder: none includes a folder after it.
-set(caseFolders load run report record app)
+set(caseFolders plot load run report record app)
 set(caseSources 0)
 foreach(folder IN LISTS caseFolders)
     list(POP_FRONT caseFolders)
@@ -33,6 +33,15 @@ foreach(folder IN LISTS caseFolders)
         foreach(line IN LISTS lines)
             list(APPEND violations "${file}: ${line}")
         endforeach()
+    endforeach()
+endforeach()
+# The teaching programs draw with the plotting module and read the shipped cases with the loader;
+# they include nothing of the command line's other layers.
+file(GLOB_RECURSE notebooks RELATIVE ${ROOT} ${ROOT}/notebooks_cpp/*.h ${ROOT}/notebooks_cpp/*.cpp)
+foreach(file IN LISTS notebooks)
+    file(STRINGS ${ROOT}/${file} lines REGEX "#include \"lexel/cases/(run|report|record|app)/")
+    foreach(line IN LISTS lines)
+        list(APPEND violations "${file}: ${line}")
     endforeach()
 endforeach()
 if(violations)

@@ -25,7 +25,6 @@
 #include "lexel/cases/record/sweep_record.h"
 #include "lexel/cases/record/sweep_record_reader.h"
 #include "lexel/cases/record/sweep_record_text.h"
-#include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/fit_report.h"
 #include "lexel/cases/report/flatland_report.h"
 #include "lexel/cases/report/html_report.h"

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lexel/cases/plot/axes.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"
@@ -73,26 +74,11 @@ nlohmann::json FitJson(const LineFit& f) {
             {"points", f.points}};
 }
 
-struct Rgb {
-    double r, g, b;
-};
-constexpr Rgb kPalette[] = {{0.12, 0.47, 0.71}, {1.00, 0.50, 0.05}, {0.17, 0.63, 0.17},
-                            {0.84, 0.15, 0.16}, {0.58, 0.40, 0.74}, {0.55, 0.34, 0.29},
-                            {0.89, 0.47, 0.76}, {0.50, 0.50, 0.50}};
+using plot::Rgb;
+using plot::SetColour;
 
 void Text(cairo_t* cr, double x, double y, const std::string& text, double alignX = 0.0) {
-    cairo_text_extents_t e;
-    cairo_text_extents(cr, text.c_str(), &e);
-    cairo_move_to(cr, x - alignX * e.width - e.x_bearing, y);
-    cairo_show_text(cr, text.c_str());
-}
-
-double NiceStep(double span) {
-    const double rough = span / 5.0;
-    const double p = std::pow(10.0, std::floor(std::log10(rough)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
-        if (m * p >= rough) return m * p;
-    return 10.0 * p;
+    plot::ShowBaselineText(cr, x, y, text, alignX);
 }
 
 }  // namespace
@@ -276,20 +262,15 @@ ScatterFrame FrameOf(const ErrorModelStudy& study) {
     for (const ErrorModelSample& e : study.samples)
         if (Fitted(e)) hi = std::max({hi, e.predicted, e.measured});
     if (!(hi > 0.0)) hi = 1.0;
-    frame.step = NiceStep(hi);
+    frame.step = plot::NiceStepAtLeast(hi);
     frame.hi = std::ceil(hi / frame.step) * frame.step;
     return frame;
 }
 
 void DrawGrid(cairo_t* cr, const ScatterFrame& f) {
     for (double v = 0.0; v <= f.hi * (1 + 1e-9); v += f.step) {
-        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-        cairo_set_line_width(cr, 1);
-        cairo_move_to(cr, f.X(v), f.top);
-        cairo_line_to(cr, f.X(v), f.top + f.plotH);
-        cairo_move_to(cr, f.left, f.Y(v));
-        cairo_line_to(cr, f.left + f.plotW, f.Y(v));
-        cairo_stroke(cr);
+        plot::GridLine(cr, f.X(v), f.top, f.X(v), f.top + f.plotH);
+        plot::GridLine(cr, f.left, f.Y(v), f.left + f.plotW, f.Y(v));
         cairo_set_source_rgb(cr, 0, 0, 0);
         Text(cr, f.X(v), f.top + f.plotH + 16, Significant(v, 4), 0.5);
         Text(cr, f.left - 6, f.Y(v) + 4, Significant(v, 4), 1.0);
@@ -304,8 +285,7 @@ void DrawSamples(cairo_t* cr, const ScatterFrame& f, const ErrorModelStudy& stud
     cairo_clip(cr);
     for (const ErrorModelSample& e : study.samples) {
         if (!Fitted(e)) continue;
-        const Rgb c = kPalette[e.method % std::size(kPalette)];
-        cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.35);
+        SetColour(cr, plot::PaletteColour(e.method), 0.35);
         cairo_arc(cr, f.X(e.predicted), f.Y(e.measured), 2.0, 0, 2 * M_PI);
         cairo_fill(cr);
     }
@@ -355,8 +335,7 @@ void DrawLegend(cairo_t* cr, const ScatterFrame& f,
     for (std::size_t m = 0; m < summaries.size(); ++m) {
         const ErrorModelSummary& s = summaries[m];
         const bool isPooled = m + 1 == summaries.size();
-        const Rgb c = isPooled ? Rgb{0, 0, 0} : kPalette[m % std::size(kPalette)];
-        cairo_set_source_rgb(cr, c.r, c.g, c.b);
+        SetColour(cr, isPooled ? Rgb{0, 0, 0} : plot::PaletteColour(m));
         cairo_arc(cr, f.left + 16, y - 4, 4, 0, 2 * M_PI);
         cairo_fill(cr);
         cairo_set_source_rgb(cr, 0, 0, 0);
@@ -376,26 +355,13 @@ void WriteErrorModelPlot(const std::string& pngPath, const ErrorModelStudy& stud
     const std::vector<ErrorModelSummary> summaries = SummarizeErrorModel(study);
     const int width = 820, height = 690 + 17 * static_cast<int>(summaries.size() + 1);
     const ScatterFrame frame = FrameOf(study);
-    const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-        cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height), cairo_surface_destroy);
-    const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> context(cairo_create(surface.get()),
-                                                                     cairo_destroy);
-    cairo_t* cr = context.get();
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, 12);
-    DrawGrid(cr, frame);
-    DrawSamples(cr, frame, study, summaries.back());
-    DrawTitleAndAxes(cr, frame, study);
-    DrawLegend(cr, frame, summaries);
-    cairo_status_t status = cairo_status(cr);
-    if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface.get());
-    cairo_surface_flush(surface.get());
-    if (status == CAIRO_STATUS_SUCCESS)
-        status = cairo_surface_write_to_png(surface.get(), pngPath.c_str());
-    if (status != CAIRO_STATUS_SUCCESS)
-        throw std::runtime_error(pngPath + ": " + cairo_status_to_string(status));
+    plot::RenderPng(pngPath, width, height, [&](cairo_t* cr) {
+        plot::SetFont(cr, 12);
+        DrawGrid(cr, frame);
+        DrawSamples(cr, frame, study, summaries.back());
+        DrawTitleAndAxes(cr, frame, study);
+        DrawLegend(cr, frame, summaries);
+    });
 }
 
 }  // namespace lexel::cases

@@ -1,12 +1,12 @@
 // The low-resolution decision study (`lexel lowres`, thesis §4.1.1): text, Markdown, CSV and the
-// curves of its plot (figures.h).
+// curves of its plot (cases/plot/curve_plot.h).
 #pragma once
 
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "lexel/cases/report/figures.h"
+#include "lexel/cases/plot/curve_plot.h"
 #include "lexel/cases/run/lowres.h"
 
 namespace lexel::cases {

@@ -5,8 +5,8 @@
 #include <optional>
 #include <sstream>
 
+#include "lexel/cases/plot/image_figure.h"
 #include "lexel/cases/report/columns.h"
-#include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"

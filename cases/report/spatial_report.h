@@ -52,11 +52,11 @@ struct SpatialImageFile {
 };
 
 // <case>_light<k>_<method>_{frame,errors,map}.png in `dir` (the run must have kept its buffers),
-// a partitioned method's map as map<i> per cascade; each a figure (figures.h) titled with the case,
-// the light and the method, its counts, its colour key, uncovered pixels marked and, for maps, the
-// depth scale. Returns the files in the order written. Throws std::runtime_error when a file
-// cannot be written.
-// `onImage` (may be empty) is called after each file (a progress bar; SpatialImageCount in all).
+// a partitioned method's map as map<i> per cascade; each a figure (cases/plot/image_figure.h)
+// titled with the case, the light and the method, its counts, its colour key, uncovered pixels
+// marked and, for maps, the depth scale. Returns the files in the order written. Throws
+// std::runtime_error when a file cannot be written. `onImage` (may be empty) is called after each
+// file (a progress bar; SpatialImageCount in all).
 std::vector<SpatialImageFile> WriteSpatialImages(const std::filesystem::path& dir,
                                                  const spatial::Scene& scene, const SpatialRun& run,
                                                  const std::function<void()>& onImage = {});

@@ -6,8 +6,9 @@
 #include <limits>
 #include <sstream>
 
+#include "lexel/cases/plot/curve_plot.h"
+#include "lexel/cases/plot/image_figure.h"
 #include "lexel/cases/report/columns.h"
-#include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/cases/run/sweep.h"

@@ -7,8 +7,8 @@
 #include <optional>
 #include <sstream>
 
+#include "lexel/cases/plot/curve_plot.h"
 #include "lexel/cases/report/columns.h"
-#include "lexel/cases/report/figures.h"
 #include "lexel/cases/report/json_number.h"
 #include "lexel/cases/report/text_table.h"
 #include "lexel/solvers/statistics.h"

@@ -20,7 +20,7 @@
 #include <numbers>
 #include <vector>
 
-#include "lexel/cases/report/figures.h"
+#include "lexel/cases/plot/case_figure.h"
 #include "lexel/flatland.h"
 #include "lexel/solvers/lagrange_allocation.h"
 #include "notebook.h"

@@ -11,7 +11,7 @@
 // (L1, L∞: extra ≥ 0), the full-resolution decision costs nothing, and ten pixels cost < 5% in L1.
 //
 // Public API: lexel::flatland (RunSamplingPass, RunFlatlandCase with a decision pass). Figure:
-// the case layer's Fig. 4.1 plot (lexel::cases, cases/report/figures.h).
+// lexel's Fig. 4.1 plot (cases/plot/curve_plot.h).
 //
 //   ./build/notebooks_cpp/notebook_07_lowres_decision [OUT_DIR]        (default out/notebooks/)
 #include <algorithm>
@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "flat_scene.h"
-#include "lexel/cases/report/figures.h"
+#include "lexel/cases/plot/curve_plot.h"
 #include "lexel/flatland.h"
 #include "notebook.h"
 

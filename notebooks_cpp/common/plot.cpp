@@ -12,6 +12,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "lexel/cases/plot/axes.h"
+#include "lexel/cases/plot/canvas.h"
+
 namespace lexel::notebooks {
 
 namespace {
@@ -20,30 +23,17 @@ constexpr double kPanelWidth = 640, kPanelHeight = 470;  // pixels per plot pane
 constexpr double kLeft = 84, kRight = 18, kTop = 38, kBottom = 58;
 
 using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
-using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
 
-void SetColour(cairo_t* cr, Rgb c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
+using plot::NiceStep;
+using plot::SetColour;
 
+// Text of `size` pixels, its ink centred vertically on y.
 void Text(cairo_t* cr, double x, double y, const std::string& s, double alignX, double size) {
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, size);
-    cairo_text_extents_t e;
-    cairo_text_extents(cr, s.c_str(), &e);
-    cairo_move_to(cr, x - alignX * e.width - e.x_bearing, y - 0.5 * e.height - e.y_bearing);
-    cairo_show_text(cr, s.c_str());
+    plot::SetFont(cr, size);
+    plot::ShowText(cr, x, y, s, alignX, 0.5);
 }
 
-std::string Format(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
-    return buffer;
-}
-
-double NiceStep(double rough) {
-    const double decade = std::pow(10.0, std::floor(std::log10(rough)));
-    const double m = rough / decade;
-    return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * decade;
-}
+std::string Format(double v) { return plot::FormatTick(std::abs(v) < 1e-12 ? 0.0 : v); }
 
 // Data → pixels for one panel; y is log10(y) when the panel is log-scale.
 struct Axes {
@@ -189,103 +179,69 @@ void DrawPanel(cairo_t* cr, const Panel& panel, double px) {
     cairo_restore(cr);
 }
 
-void Save(cairo_surface_t* surface, cairo_t* cr, const std::filesystem::path& png) {
-    cairo_status_t status = cairo_status(cr);
-    cairo_surface_flush(surface);
-    if (status == CAIRO_STATUS_SUCCESS)
-        status = cairo_surface_write_to_png(surface, png.string().c_str());
-    if (status != CAIRO_STATUS_SUCCESS)
-        throw std::runtime_error(png.string() + ": " + cairo_status_to_string(status));
-}
-
 }  // namespace
-
-Rgb PaletteColour(std::size_t index) {
-    static constexpr std::array<Rgb, 10> kPalette = {{{0.84, 0.15, 0.16},
-                                                      {0.12, 0.47, 0.71},
-                                                      {0.17, 0.63, 0.17},
-                                                      {1.00, 0.50, 0.05},
-                                                      {0.58, 0.40, 0.74},
-                                                      {0.55, 0.34, 0.29},
-                                                      {0.89, 0.47, 0.76},
-                                                      {0.50, 0.50, 0.50},
-                                                      {0.74, 0.74, 0.13},
-                                                      {0.09, 0.75, 0.81}}};
-    return kPalette[index % kPalette.size()];
-}
-
-Rgb HeatColour(double t) {
-    t = std::clamp(std::isfinite(t) ? t : 1.0, 0.0, 1.0);
-    const Rgb lo{0.27, 0.00, 0.33}, mid{0.13, 0.57, 0.55}, hi{0.99, 0.91, 0.14};
-    const auto mix = [](Rgb a, Rgb b, double s) {
-        return Rgb{a.r + (b.r - a.r) * s, a.g + (b.g - a.g) * s, a.b + (b.b - a.b) * s};
-    };
-    return t < 0.5 ? mix(lo, mid, 2 * t) : mix(mid, hi, 2 * t - 1);
-}
 
 void WritePlot(const std::filesystem::path& png, const std::vector<Panel>& panels) {
     const int width = static_cast<int>(kPanelWidth * std::max<std::size_t>(panels.size(), 1));
-    const Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, kPanelHeight),
-                          cairo_surface_destroy);
-    const Context context(cairo_create(surface.get()), cairo_destroy);
-    cairo_t* cr = context.get();
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-    for (std::size_t i = 0; i < panels.size(); ++i) DrawPanel(cr, panels[i], kPanelWidth * i);
-    Save(surface.get(), cr, png);
+    plot::RenderPng(png.string(), width, kPanelHeight, [&](cairo_t* cr) {
+        for (std::size_t i = 0; i < panels.size(); ++i) DrawPanel(cr, panels[i], kPanelWidth * i);
+    });
 }
+
+namespace {
+
+// Picture k of the grid, scaled to fit its cell, its caption below.
+void DrawPicture(cairo_t* cr, const Picture& p, int k, int columns, int cellSize,
+                 int captionHeight) {
+    const Surface image(cairo_image_surface_create(CAIRO_FORMAT_RGB24, p.width, p.height),
+                        cairo_surface_destroy);
+    unsigned char* data = cairo_image_surface_get_data(image.get());
+    const int stride = cairo_image_surface_get_stride(image.get());
+    for (int y = 0; y < p.height; ++y)
+        for (int x = 0; x < p.width; ++x) {
+            const float* v = &p.pixels[(static_cast<std::size_t>(y) * p.width + x) * p.channels];
+            const auto byte = [](float c) {
+                return static_cast<std::uint32_t>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255));
+            };
+            const std::uint32_t r = byte(v[0]), g = byte(v[p.channels >= 3 ? 1 : 0]),
+                                b = byte(v[p.channels >= 3 ? 2 : 0]);
+            reinterpret_cast<std::uint32_t*>(data + y * stride)[x] = (r << 16) | (g << 8) | b;
+        }
+    cairo_surface_mark_dirty(image.get());
+    const double scale = std::min(double(cellSize - 8) / p.width, double(cellSize - 8) / p.height);
+    const double x0 = (k % columns) * cellSize, y0 = (k / columns) * (cellSize + captionHeight);
+    cairo_save(cr);
+    cairo_translate(cr, x0 + 0.5 * (cellSize - scale * p.width),
+                    y0 + 0.5 * (cellSize - scale * p.height));
+    cairo_scale(cr, scale, scale);
+    cairo_set_source_surface(cr, image.get(), 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr),
+                             scale >= 1 ? CAIRO_FILTER_NEAREST : CAIRO_FILTER_GOOD);
+    cairo_paint(cr);
+    cairo_restore(cr);
+    SetColour(cr, {0, 0, 0});
+    Text(cr, x0 + cellSize / 2.0, y0 + cellSize + captionHeight / 2.0 - 2, p.caption, 0.5, 14);
+}
+
+}  // namespace
 
 void WritePictures(const std::filesystem::path& png, const std::vector<Picture>& pictures,
                    int columns, int cellSize) {
     const int count = static_cast<int>(pictures.size());
     columns = std::clamp(columns, 1, std::max(count, 1));
     const int rows = (count + columns - 1) / columns, captionHeight = 26;
-    const Surface surface(
-        cairo_image_surface_create(CAIRO_FORMAT_RGB24, columns * cellSize,
-                                   std::max(rows, 1) * (cellSize + captionHeight)),
-        cairo_surface_destroy);
-    const Context context(cairo_create(surface.get()), cairo_destroy);
-    cairo_t* cr = context.get();
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
     for (int k = 0; k < count; ++k) {
         const Picture& p = pictures[k];
         if (p.width <= 0 || p.height <= 0 ||
             p.pixels.size() != static_cast<std::size_t>(p.width) * p.height * p.channels)
             throw std::runtime_error(png.string() + ": picture " + std::to_string(k) +
                                      " has the wrong number of pixels");
-        const Surface image(cairo_image_surface_create(CAIRO_FORMAT_RGB24, p.width, p.height),
-                            cairo_surface_destroy);
-        unsigned char* data = cairo_image_surface_get_data(image.get());
-        const int stride = cairo_image_surface_get_stride(image.get());
-        for (int y = 0; y < p.height; ++y)
-            for (int x = 0; x < p.width; ++x) {
-                const float* v =
-                    &p.pixels[(static_cast<std::size_t>(y) * p.width + x) * p.channels];
-                const auto byte = [](float c) {
-                    return static_cast<std::uint32_t>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255));
-                };
-                const std::uint32_t r = byte(v[0]), g = byte(v[p.channels >= 3 ? 1 : 0]),
-                                    b = byte(v[p.channels >= 3 ? 2 : 0]);
-                reinterpret_cast<std::uint32_t*>(data + y * stride)[x] = (r << 16) | (g << 8) | b;
-            }
-        cairo_surface_mark_dirty(image.get());
-        const double scale =
-            std::min(double(cellSize - 8) / p.width, double(cellSize - 8) / p.height);
-        const double x0 = (k % columns) * cellSize, y0 = (k / columns) * (cellSize + captionHeight);
-        cairo_save(cr);
-        cairo_translate(cr, x0 + 0.5 * (cellSize - scale * p.width),
-                        y0 + 0.5 * (cellSize - scale * p.height));
-        cairo_scale(cr, scale, scale);
-        cairo_set_source_surface(cr, image.get(), 0, 0);
-        cairo_pattern_set_filter(cairo_get_source(cr),
-                                 scale >= 1 ? CAIRO_FILTER_NEAREST : CAIRO_FILTER_GOOD);
-        cairo_paint(cr);
-        cairo_restore(cr);
-        SetColour(cr, {0, 0, 0});
-        Text(cr, x0 + cellSize / 2.0, y0 + cellSize + captionHeight / 2.0 - 2, p.caption, 0.5, 14);
     }
-    Save(surface.get(), cr, png);
+    plot::RenderPng(png.string(), columns * cellSize,
+                    std::max(rows, 1) * (cellSize + captionHeight), [&](cairo_t* cr) {
+                        for (int k = 0; k < count; ++k)
+                            DrawPicture(cr, pictures[k], k, columns, cellSize, captionHeight);
+                    });
 }
 
 }  // namespace lexel::notebooks

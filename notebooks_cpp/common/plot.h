@@ -1,5 +1,6 @@
 // The one figure each teaching program writes: line and point plots side by side, or captioned
-// pictures in a grid, as a PNG (Cairo). Not part of lexel's API: the programs' own plotting.
+// pictures in a grid, as a PNG, drawn with lexel's plotting module (cases/plot: its palette,
+// canvas and PNG writing). Not part of lexel's API: the programs' own panels.
 #pragma once
 
 #include <cstddef>
@@ -10,13 +11,13 @@
 #include <utility>
 #include <vector>
 
+#include "lexel/cases/plot/palette.h"
+
 namespace lexel::notebooks {
 
-struct Rgb {
-    double r = 0.0, g = 0.0, b = 0.0;  // each in [0, 1]
-};
-Rgb PaletteColour(std::size_t index);  // distinct colours, repeating after ten
-Rgb HeatColour(double t);              // t in [0, 1]: dark blue → teal → yellow (clamped)
+using plot::HeatColour;     // t in [0, 1]: dark purple → teal → yellow (clamped)
+using plot::PaletteColour;  // lexel's palette: the reports' colours, repeating after twelve
+using plot::Rgb;
 
 struct Series {
     enum class Style { kLine, kDashed, kPoints, kPolygon };  // kPolygon: closed outline

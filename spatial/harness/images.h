@@ -1,7 +1,7 @@
 // Pictures of the 3D experiment, for people rather than tables: the frame with each method's
 // shadows, where it disagrees with the ground truth, and the shadow map with the optimization
 // samples drawn in it (report Fig. 2). The colours are named here so that a figure's key
-// (cases/report/figures.h) shows exactly the colours painted.
+// (cases/plot/image_figure.h) shows exactly the colours painted.
 #pragma once
 
 #include <cstdint>

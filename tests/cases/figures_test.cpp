@@ -1,5 +1,3 @@
-#include "lexel/cases/report/figures.h"
-
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -11,6 +9,10 @@
 #include <tuple>
 #include <vector>
 
+#include "lexel/cases/plot/axes.h"
+#include "lexel/cases/plot/case_figure.h"
+#include "lexel/cases/plot/curve_plot.h"
+#include "lexel/cases/plot/image_figure.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/spatial/harness/image_io.h"
 
@@ -67,6 +69,25 @@ bool HasPartialFile(const fs::path& dir) {
     for (const auto& entry : fs::directory_iterator(dir))
         if (entry.path().filename().string().find(".partial") != std::string::npos) return true;
     return false;
+}
+
+// The plotting module's tick steps: 1, 2 or 5 times a power of ten, nearest the rough step or the
+// least with at most five steps across a span; whole decades around the data.
+TEST(PlotAxes, TickStepsAndDecadesAreRound) {
+    EXPECT_DOUBLE_EQ(plot::NiceStep(0.7), 0.5);
+    EXPECT_DOUBLE_EQ(plot::NiceStep(1.4), 1.0);
+    EXPECT_DOUBLE_EQ(plot::NiceStep(3.0), 2.0);
+    EXPECT_DOUBLE_EQ(plot::NiceStep(80.0), 100.0);
+    EXPECT_DOUBLE_EQ(plot::NiceStep(-1.0), 1.0);
+    EXPECT_DOUBLE_EQ(plot::NiceStepAtLeast(7.0), 2.0);    // 1.4 rounded up
+    EXPECT_DOUBLE_EQ(plot::NiceStepAtLeast(50.0), 10.0);  // exactly five steps
+    EXPECT_DOUBLE_EQ(plot::NiceStepAtLeast(0.26), 0.1);   // 0.052 rounded up
+    EXPECT_EQ(plot::DecadeRange(3.0, 2000.0), std::make_pair(0, 4));
+    EXPECT_EQ(plot::DecadeRange(100.0, 100.0), std::make_pair(2, 3));
+    EXPECT_FALSE(plot::DecadeRange(0.0, 1.0));
+    EXPECT_EQ(plot::FormatTick(1e-4), "0.0001");
+    EXPECT_EQ(plot::PaletteColour(12).r, plot::PaletteColour(0).r);
+    EXPECT_NE(plot::PaletteColour(1).g, plot::PaletteColour(0).g);
 }
 
 TEST(Figures, CaseFigureIsATwoPanelPngWithContent) {

@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-#include "lexel/cases/report/figures.h"
+#include "lexel/cases/plot/curve_plot.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/image_io.h"
 
