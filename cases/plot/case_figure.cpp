@@ -175,53 +175,47 @@ std::pair<double, double> FilmExtent(const flatland::FlatScene& scene,
     return {sLow, sHigh};
 }
 
-void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& scene,
-                 const flatland::CaseReport& report) {
-    const flatland::SamplingPass& pass = *report.fullPass;
-    const WorldView view = FitView(scene, pass, panel);
-    const auto segments = flatland::Segments(scene);
-    cairo_save(cr);
-    cairo_rectangle(cr, panel.x, panel.y, panel.width, panel.height);
-    cairo_clip(cr);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-
-    // Lexel fans first so the geometry, camera and light stay on top of them.
+// One method's lexel plane(s) and fan(s): its single frustum, or each frustum of its split in a
+// shade of its colour with rays in proportion to its lexels (every Nth lexel across the split, so
+// denser frusta get denser fans).
+void DrawMethodPlanes(cairo_t* cr, const WorldView& view, const flatland::FlatScene& scene,
+                      const flatland::SamplingPass& pass,
+                      const std::vector<flatland::FlatSegment>& segments,
+                      const flatland::MethodReport& method, std::size_t m) {
+    const bool withFan = m < kMaxFanMethods;
+    // Staggered distances keep planes of methods with similar axes apart.
     const double pxPlaneDistance = 45, pxPlaneStagger = 12;
-    for (std::size_t m = 0; m < report.methods.size(); ++m) {
-        const auto& method = report.methods[m];
-        const bool withFan = m < kMaxFanMethods;
-        // Staggered distances keep planes of methods with similar axes apart.
-        const double wsDistance = (pxPlaneDistance + pxPlaneStagger * m) / view.scale;
-        if (method.frusta.empty()) {
-            PlaneDrawing plane{method.wsAxis, 0, 0, kFanRays, MethodColour(m)};
-            std::tie(plane.sLow, plane.sHigh) = FilmExtent(scene, pass, method.wsAxis);
-            DrawPlaneAndFan(cr, view, scene, segments, plane, wsDistance, withFan);
-            continue;
-        }
-        // Every Nth lexel across the whole split, so denser frusta get denser fans.
-        int totalLexels = 0;
-        for (const auto& frustum : method.frusta) totalLexels += frustum.lexels;
-        const std::size_t count = method.frusta.size();
-        for (std::size_t j = 0; j < count; ++j) {
-            const auto& frustum = method.frusta[j];
-            const double shade = count == 1 ? 0.0 : -0.35 + 0.7 * j / (count - 1.0);
-            const int rays =
-                totalLexels > 0
-                    ? std::max(3, static_cast<int>(std::lround(static_cast<double>(kFanRays) *
-                                                               frustum.lexels / totalLexels)))
-                    : kFanRays;
-            const double rayLow = Radians(frustum.wsRayLowDeg);
-            const double rayHigh = Radians(frustum.wsRayHighDeg);
-            PlaneDrawing plane{frustum.wsAxis,
-                               std::tan(flatland::WrapAngle(rayLow - frustum.wsAxis)),
-                               std::tan(flatland::WrapAngle(rayHigh - frustum.wsAxis)), rays,
-                               Shade(MethodColour(m), shade)};
-            if (plane.sLow > plane.sHigh) std::swap(plane.sLow, plane.sHigh);
-            DrawPlaneAndFan(cr, view, scene, segments, plane, wsDistance, withFan);
-        }
+    const double wsDistance = (pxPlaneDistance + pxPlaneStagger * m) / view.scale;
+    if (method.frusta.empty()) {
+        PlaneDrawing plane{method.wsAxis, 0, 0, kFanRays, MethodColour(m)};
+        std::tie(plane.sLow, plane.sHigh) = FilmExtent(scene, pass, method.wsAxis);
+        DrawPlaneAndFan(cr, view, scene, segments, plane, wsDistance, withFan);
+        return;
     }
+    int totalLexels = 0;
+    for (const auto& frustum : method.frusta) totalLexels += frustum.lexels;
+    const std::size_t count = method.frusta.size();
+    for (std::size_t j = 0; j < count; ++j) {
+        const auto& frustum = method.frusta[j];
+        const double shade = count == 1 ? 0.0 : -0.35 + 0.7 * j / (count - 1.0);
+        const int rays =
+            totalLexels > 0
+                ? std::max(3, static_cast<int>(std::lround(static_cast<double>(kFanRays) *
+                                                           frustum.lexels / totalLexels)))
+                : kFanRays;
+        const double rayLow = Radians(frustum.wsRayLowDeg);
+        const double rayHigh = Radians(frustum.wsRayHighDeg);
+        PlaneDrawing plane{frustum.wsAxis, std::tan(flatland::WrapAngle(rayLow - frustum.wsAxis)),
+                           std::tan(flatland::WrapAngle(rayHigh - frustum.wsAxis)), rays,
+                           Shade(MethodColour(m), shade)};
+        if (plane.sLow > plane.sHigh) std::swap(plane.sLow, plane.sHigh);
+        DrawPlaneAndFan(cr, view, scene, segments, plane, wsDistance, withFan);
+    }
+}
 
+// The geometry's polylines, then the visible points as faint dots (which part the camera sees).
+void DrawGeometry(cairo_t* cr, const WorldView& view, const flatland::FlatScene& scene,
+                  const flatland::SamplingPass& pass) {
     SetColour(cr, kGeometryColour);
     cairo_set_line_width(cr, 2);
     for (const auto& polyline : scene.geometry) {
@@ -234,16 +228,18 @@ void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& sc
         }
         cairo_stroke(cr);
     }
-
-    // Visible points: faint dots show which part of the geometry the camera sees.
     cairo_set_source_rgba(cr, 0, 0, 0, 0.35);
     for (const auto& sample : pass.samples) {
         const Vec2 px = view.ToPx(sample.wsPoint);
         cairo_arc(cr, px.x(), px.y(), 1.2, 0, 2 * std::numbers::pi);
         cairo_fill(cr);
     }
+}
 
-    const flatland::FlatCamera& camera = scene.camera;
+// The camera's frustum edges to the panel's border and a camera body behind the pinhole, its
+// apex at the camera position where the edges start; sized in pixels so it reads the same at
+// any world scale (y flips on screen).
+void DrawCamera(cairo_t* cr, const WorldView& view, const flatland::FlatCamera& camera) {
     const Vec2 wsDirection = camera.wsDirection.normalized();
     const double halfFov = Radians(0.5 * camera.fovDeg);
     SetColour(cr, kCameraColour);
@@ -254,8 +250,6 @@ void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& sc
         StrokeWorldLine(cr, view, camera.wsPosition,
                         camera.wsPosition + view.ExitT(camera.wsPosition, wsEdge) * wsEdge);
     }
-    // A camera body behind the pinhole, its apex at the camera position where the frustum edges
-    // start; sized in pixels so it reads the same at any world scale. y flips on screen.
     const Vec2 pxApex = view.ToPx(camera.wsPosition);
     const Vec2 pxForward(wsDirection.x(), -wsDirection.y()), pxSide(-pxForward.y(), pxForward.x());
     const Vec2 pxBaseA = pxApex - 18 * pxForward + 8 * pxSide;
@@ -265,14 +259,36 @@ void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& sc
     cairo_line_to(cr, pxBaseB.x(), pxBaseB.y());
     cairo_close_path(cr);
     cairo_fill(cr);
+}
 
-    const Vec2 pxLight = view.ToPx(scene.wsLight);
+// The light: a yellow disc outlined in black.
+void DrawLight(cairo_t* cr, const WorldView& view, const Vec2& wsLight) {
+    const Vec2 pxLight = view.ToPx(wsLight);
     cairo_arc(cr, pxLight.x(), pxLight.y(), 8, 0, 2 * std::numbers::pi);
     cairo_set_source_rgb(cr, 1.0, 0.78, 0.1);
     cairo_fill_preserve(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, 1.5);
     cairo_stroke(cr);
+}
+
+// The case diagram in `panel`: the lexel fans first, so that the geometry, camera and light stay
+// on top of them.
+void DrawDiagram(cairo_t* cr, const PxRect& panel, const flatland::FlatScene& scene,
+                 const flatland::CaseReport& report) {
+    const flatland::SamplingPass& pass = *report.fullPass;
+    const WorldView view = FitView(scene, pass, panel);
+    const auto segments = flatland::Segments(scene);
+    cairo_save(cr);
+    cairo_rectangle(cr, panel.x, panel.y, panel.width, panel.height);
+    cairo_clip(cr);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (std::size_t m = 0; m < report.methods.size(); ++m)
+        DrawMethodPlanes(cr, view, scene, pass, segments, report.methods[m], m);
+    DrawGeometry(cr, view, scene, pass);
+    DrawCamera(cr, view, scene.camera);
+    DrawLight(cr, view, scene.wsLight);
     cairo_restore(cr);
 }
 

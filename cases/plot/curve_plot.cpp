@@ -142,21 +142,33 @@ void DrawCurvesInFrame(cairo_t* cr, const PxRect& plot, const CurvePlot& figure,
 }
 
 // The same plot with a linear x or a log y axis (WriteCurvePlot's other cases).
-void WriteCurvePlotScaled(const std::string& pngPath, const CurvePlot& figure) {
-    constexpr int kPxWidth = 900, kPxHeight = 600;
-    const PxRect plot{95, 55, 775, 460};
+// The range of the points a plot can draw (finite, positive on a log axis) and its guide; x is
+// [0, 1] when the points span no x.
+struct DataRange {
     double xMin = std::numeric_limits<double>::infinity(), xMax = -xMin;
     double yMin = std::numeric_limits<double>::infinity(), yMax = -yMin;
+};
+DataRange DrawableRange(const CurvePlot& figure) {
+    DataRange r;
     for (const PlotCurve& curve : figure.curves)
         for (std::size_t i = 0; i < std::min(curve.x.size(), curve.y.size()); ++i) {
             const double x = curve.x[i], y = curve.y[i];
             if (!std::isfinite(x) || !std::isfinite(y)) continue;
             if ((figure.logX && !(x > 0)) || (figure.logY && !(y > 0))) continue;
-            xMin = std::min(xMin, x), xMax = std::max(xMax, x);
-            yMin = std::min(yMin, y), yMax = std::max(yMax, y);
+            r.xMin = std::min(r.xMin, x), r.xMax = std::max(r.xMax, x);
+            r.yMin = std::min(r.yMin, y), r.yMax = std::max(r.yMax, y);
         }
-    if (figure.guideY) yMin = std::min(yMin, *figure.guideY), yMax = std::max(yMax, *figure.guideY);
-    if (!(xMax > xMin)) xMin = 0.0, xMax = 1.0;
+    if (figure.guideY)
+        r.yMin = std::min(r.yMin, *figure.guideY), r.yMax = std::max(r.yMax, *figure.guideY);
+    if (!(r.xMax > r.xMin)) r.xMin = 0.0, r.xMax = 1.0;
+    return r;
+}
+
+void WriteCurvePlotScaled(const std::string& pngPath, const CurvePlot& figure) {
+    constexpr int kPxWidth = 900, kPxHeight = 600;
+    const PxRect plot{95, 55, 775, 460};
+    const DataRange range = DrawableRange(figure);
+    const double xMin = range.xMin, xMax = range.xMax, yMin = range.yMin, yMax = range.yMax;
     LogAxis logX;
     if (figure.logX && !figure.xTicks.empty()) {
         const auto [lo, hi] = std::minmax_element(figure.xTicks.begin(), figure.xTicks.end());

@@ -346,6 +346,57 @@ const char* MapKind(const spatial::MethodOutcome& m) {
 
 }  // namespace
 
+namespace {
+
+// One method of light l: its columns, its h trace, its map kind and clip-from-world matrix, its
+// cascades (each with its matrix) and pages.
+nlohmann::json MethodJson(const spatial::Scene& scene, const SpatialRun& run, std::size_t l,
+                          const spatial::MethodOutcome& m) {
+    const auto& o = run.outcomes[l];
+    nlohmann::json method;
+    AddJsonColumns(MethodColumns(o.phases > 1), MethodRow{l, &o, &m}, method);
+    if (!m.trace.hAfterIteration.empty()) method["h_after_iteration"] = m.trace.hAfterIteration;
+    const spatial::Resolution map =
+        m.pages ? spatial::Resolution{m.pages->pageTexels, m.pages->pageTexels} : scene.shadowMap;
+    method["map_kind"] = MapKind(m);
+    method["clip_from_world"] = RowMajor(run.evaluator->ClipFromWorldOf(o.light, m.matrix, map));
+    const ColumnTable<CascadeRow> cascadeColumns = CascadeColumns();
+    for (std::size_t c = 0; c < m.cascades.size(); ++c) {
+        const spatial::Cascade& cascade = m.cascades[c].cascade;
+        nlohmann::json entry = {{"clip_from_world", RowMajor(run.evaluator->ClipFromWorldOf(
+                                                        o.light, cascade.matrix, cascade.map))}};
+        AddJsonColumns(cascadeColumns, CascadeRow{&m, c}, entry);
+        method["cascades"].push_back(entry);
+    }
+    if (m.pages) AddJsonColumns(PageColumns(), PageRow{&m}, method["pages"]);
+    return method;
+}
+
+// One light's camera-path study: per pose whether the map changed and its counts, and each
+// method's shimmer.
+nlohmann::json CameraPathJson(std::size_t l, const CameraPathStudy& study) {
+    nlohmann::json poses = nlohmann::json::array();
+    for (std::size_t k = 0; k < study.poses.size(); ++k) {
+        const PoseOutcome& p = study.poses[k];
+        poses.push_back({{"pose", k},
+                         {"changed", p.changed},
+                         {"median_badness_kept", FiniteOrNull(p.medianKept)},
+                         {"median_badness_new", p.medianNew},
+                         {"misclassified_hysteresis", p.misclassifiedHysteresis},
+                         {"misclassified_fresh", p.misclassifiedFresh}});
+    }
+    nlohmann::json shimmer;
+    for (std::size_t m = 0; m < study.methods.size(); ++m)
+        shimmer[study.methods[m]] = study.shimmerPercent[m];
+    return {{"light", l},
+            {"poses", poses.size()},
+            {"changes", study.Changes()},
+            {"frames", poses},
+            {"shimmer_percent", shimmer}};
+}
+
+}  // namespace
+
 nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run) {
     nlohmann::json doc;
     doc["case"] = scene.name;
@@ -357,54 +408,11 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                                 {"truth_shadowed", o.truthShadowed},
                                 {"boundary_samples", o.samples.lsX.size()}};
         if (o.mapTruthDisagree >= 0) light["map4000_disagrees_with_rays"] = o.mapTruthDisagree;
-        const ColumnTable<MethodRow> columns = MethodColumns(o.phases > 1);
-        const ColumnTable<CascadeRow> cascadeColumns = CascadeColumns();
-        const ColumnTable<PageRow> pageColumns = PageColumns();
-        for (const auto& m : o.methods) {
-            nlohmann::json method;
-            AddJsonColumns(columns, MethodRow{l, &o, &m}, method);
-            if (!m.trace.hAfterIteration.empty())
-                method["h_after_iteration"] = m.trace.hAfterIteration;
-            const spatial::Resolution map =
-                m.pages ? spatial::Resolution{m.pages->pageTexels, m.pages->pageTexels}
-                        : scene.shadowMap;
-            method["map_kind"] = MapKind(m);
-            method["clip_from_world"] =
-                RowMajor(run.evaluator->ClipFromWorldOf(o.light, m.matrix, map));
-            for (std::size_t c = 0; c < m.cascades.size(); ++c) {
-                const spatial::Cascade& cascade = m.cascades[c].cascade;
-                nlohmann::json entry = {
-                    {"clip_from_world", RowMajor(run.evaluator->ClipFromWorldOf(
-                                            o.light, cascade.matrix, cascade.map))}};
-                AddJsonColumns(cascadeColumns, CascadeRow{&m, c}, entry);
-                method["cascades"].push_back(entry);
-            }
-            if (m.pages) AddJsonColumns(pageColumns, PageRow{&m}, method["pages"]);
-            light["methods"].push_back(method);
-        }
+        for (const auto& m : o.methods) light["methods"].push_back(MethodJson(scene, run, l, m));
         doc["lights"].push_back(light);
     }
-    for (std::size_t l = 0; l < run.cameraPath.size(); ++l) {
-        const CameraPathStudy& study = run.cameraPath[l];
-        nlohmann::json poses = nlohmann::json::array();
-        for (std::size_t k = 0; k < study.poses.size(); ++k) {
-            const PoseOutcome& p = study.poses[k];
-            poses.push_back({{"pose", k},
-                             {"changed", p.changed},
-                             {"median_badness_kept", FiniteOrNull(p.medianKept)},
-                             {"median_badness_new", p.medianNew},
-                             {"misclassified_hysteresis", p.misclassifiedHysteresis},
-                             {"misclassified_fresh", p.misclassifiedFresh}});
-        }
-        nlohmann::json shimmer;
-        for (std::size_t m = 0; m < study.methods.size(); ++m)
-            shimmer[study.methods[m]] = study.shimmerPercent[m];
-        doc["camera_path"].push_back({{"light", l},
-                                      {"poses", poses.size()},
-                                      {"changes", study.Changes()},
-                                      {"frames", poses},
-                                      {"shimmer_percent", shimmer}});
-    }
+    for (std::size_t l = 0; l < run.cameraPath.size(); ++l)
+        doc["camera_path"].push_back(CameraPathJson(l, run.cameraPath[l]));
     return doc;
 }
 

@@ -461,18 +461,107 @@ void MeasureCascadeEnergy(const Camera& camera, std::span<const Cascade> cascade
 
 }  // namespace
 
+namespace {
+
+using VsmAtPhase = std::function<VirtualShadowMap(const glm::dvec2&)>;
+
+// The misclassified pixels of `shading` (phase 0: the map as computed) and their mean, standard
+// error and false shadows over the sub-texel phases (sub_texel_phase.h).
+void CountOverMapPhases(const ShadingSetup& setup, const MethodMatrix& computed,
+                        const FrameShading& shading, std::span<const std::uint8_t> truth,
+                        const EvaluationOptions& options, const VsmAtPhase& vsmAtPhase,
+                        MethodMetrics* metrics) {
+    metrics->misclassified = CountWrong(shading.shades, truth, &metrics->falseShadow);
+    double falseShadows = 0.0;
+    const std::vector<std::int64_t> wrong =
+        CountOverPhases(options.phases, options.maxPhases, 0, [&](int k, const glm::dvec2& phase) {
+            std::int64_t falseShadow = metrics->falseShadow;
+            const std::int64_t count =
+                k == 0 ? metrics->misclassified
+                       : CountWrong(ShadeMethod(setup, computed, phase, vsmAtPhase).shades, truth,
+                                    &falseShadow);
+            falseShadows += static_cast<double>(falseShadow);
+            return count;
+        });
+    const PhaseMean mean = MeanOverPhases(wrong);
+    metrics->misclassifiedMean = mean.mean;
+    metrics->misclassifiedError = mean.standardError;
+    metrics->phases = static_cast<int>(wrong.size());
+    metrics->falseShadowMean = falseShadows / static_cast<double>(wrong.size());
+}
+
+// The footprint metrics, the maps' texels and the effective storage factors (max and 99th
+// percentile) over a frame of framePixels pixels.
+void SetFootprintMetrics(const Footprints& footprints, const FrameShading& shading,
+                         std::int64_t framePixels, MethodMetrics* metrics) {
+    metrics->footprintMean = footprints.mean;
+    metrics->footprintMax = footprints.max;
+    metrics->uncovered = footprints.uncovered;
+    metrics->perspectiveMax = footprints.perspectiveMax;
+    metrics->perspectiveP99 = footprints.perspectiveP99;
+    for (const ShadowMap& map : shading.maps)
+        metrics->texels += static_cast<std::int64_t>(map.resolution.width) * map.resolution.height;
+    metrics->storageFactor =
+        EffectiveStorageFactor(metrics->texels, metrics->perspectiveMax, framePixels);
+    metrics->storageFactorP99 =
+        EffectiveStorageFactor(metrics->texels, metrics->perspectiveP99, framePixels);
+}
+
+// h (its grazing part) and e of a single map or warp: e only for a light matrix.
+void MeasureSingleMapEnergy(const MethodMatrix& computed, const ShadowMap& map,
+                            const LightSamples& samples, std::span<const std::uint8_t> grazing,
+                            const EnergyOptions& edgeEnergy, MethodOutcome* m) {
+    MethodMetrics& metrics = m->metrics;
+    metrics.h = computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
+    if (!computed.warp) metrics.e = Energy(m->matrix, samples, edgeEnergy);
+    for (std::size_t s = 0; s < grazing.size(); ++s)
+        if (grazing[s])
+            metrics.hGrazing +=
+                MapSampleBadness(map, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s],
+                                 Badness::kFrobeniusInverseSquared);
+}
+
+// A partitioned method's cascades with their counted pixels and empty partitions, h per cascade
+// and e over the cascades.
+void MeasureCascades(const Scene& scene, const MethodMatrix& computed, const MethodContext& context,
+                     const FrameShading& shading, const LightSamples& samples,
+                     std::span<const std::uint8_t> grazing, MethodOutcome* m) {
+    for (const Cascade& c : computed.cascades) {
+        m->cascades.push_back({c, 0, 0.0});
+        m->emptyPartitions += c.visiblePoints == 0;
+    }
+    for (std::size_t i = 0; i < shading.shades.size(); ++i)
+        if (shading.shades[i] == Shade::kLit || shading.shades[i] == Shade::kShadowed)
+            ++m->cascades[shading.cascade[i]].pixels;
+    MeasureCascadeEnergy(scene.camera, computed.cascades, samples, grazing, m);
+    m->metrics.e = PartitionedEnergy(computed.cascades, samples, context.baseline.wsRelevant,
+                                     scene.camera, EdgeEnergyOf(scene));
+}
+
+// The buffers the images need (EvaluationOptions::keepBuffers): the shades, and the map (a
+// virtual map's pool as an atlas; every cascade's map for a partitioned method).
+void KeepBuffers(const MethodMatrix& computed, FrameShading&& shading, MethodOutcome* m) {
+    m->buffers.shades = std::move(shading.shades);
+    if (computed.virtualMap) {
+        m->buffers.map = PoolAtlas(shading.maps, computed.virtualMap->layout.pageTexels);
+        m->buffers.uncoveredPixels = std::move(shading.outside);
+        return;
+    }
+    m->buffers.map = shading.maps.front();
+    if (!computed.cascades.empty()) m->buffers.cascadeMaps = std::move(shading.maps);
+}
+
+}  // namespace
+
 void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& computed,
                         const MethodContext& context, const LightOutcome& light,
                         std::span<const std::uint8_t> grazing, std::span<const std::uint8_t> truth,
                         const EvaluationOptions& options, MethodOutcome* m) const {
     const LightSamples& samples = light.samples;
-    const std::vector<Cascade>& cascades = computed.cascades;
-    const bool keepBuffers = options.keepBuffers;
     m->matrix = computed.matrix;
-    MethodMetrics& metrics = m->metrics;
     const ShadingSetup setup{backend_,      *mapper_,         frame_,     lightSpace,
                              scene_.camera, scene_.shadowMap, frameDepth_};
-    const auto vsmAtPhase = [&](const glm::dvec2& phase) {
+    const VsmAtPhase vsmAtPhase = [&](const glm::dvec2& phase) {
         VirtualMapOptions vsmOptions;
         vsmOptions.lodBias = computed.virtualMap->lodBias;
         vsmOptions.fitPool = false;
@@ -481,76 +570,26 @@ void Evaluator::Measure(const LightSpace& lightSpace, const MethodMatrix& comput
     };
     // Phase 0 (the map as computed) gives the single counts, the footprints and the buffers.
     FrameShading shading = ShadeMethod(setup, computed, glm::dvec2(0.0), vsmAtPhase);
-    metrics.misclassified = CountWrong(shading.shades, truth, &metrics.falseShadow);
-    double falseShadows = 0.0;
-    const std::vector<std::int64_t> wrong =
-        CountOverPhases(options.phases, options.maxPhases, 0, [&](int k, const glm::dvec2& phase) {
-            std::int64_t falseShadow = metrics.falseShadow;
-            const std::int64_t count =
-                k == 0 ? metrics.misclassified
-                       : CountWrong(ShadeMethod(setup, computed, phase, vsmAtPhase).shades, truth,
-                                    &falseShadow);
-            falseShadows += static_cast<double>(falseShadow);
-            return count;
-        });
-    const PhaseMean mean = MeanOverPhases(wrong);
-    metrics.misclassifiedMean = mean.mean;
-    metrics.misclassifiedError = mean.standardError;
-    metrics.phases = static_cast<int>(wrong.size());
-    metrics.falseShadowMean = falseShadows / static_cast<double>(wrong.size());
-    const Footprints footprints =
-        MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading);
-    metrics.footprintMean = footprints.mean;
-    metrics.footprintMax = footprints.max;
-    metrics.uncovered = footprints.uncovered;
-    metrics.perspectiveMax = footprints.perspectiveMax;
-    metrics.perspectiveP99 = footprints.perspectiveP99;
-    for (const ShadowMap& map : shading.maps)
-        metrics.texels += static_cast<std::int64_t>(map.resolution.width) * map.resolution.height;
+    CountOverMapPhases(setup, computed, shading, truth, options, vsmAtPhase, &m->metrics);
     const std::int64_t framePixels =
         static_cast<std::int64_t>(scene_.camera.resolution.width) * scene_.camera.resolution.height;
-    metrics.storageFactor =
-        EffectiveStorageFactor(metrics.texels, metrics.perspectiveMax, framePixels);
-    metrics.storageFactorP99 =
-        EffectiveStorageFactor(metrics.texels, metrics.perspectiveP99, framePixels);
+    SetFootprintMetrics(
+        MeasureFootprints(scene_.camera, lightSpace, frame_, frameDWdx1_, frameDWdx2_, shading),
+        shading, framePixels, &m->metrics);
     if (const auto& vsm = computed.virtualMap) {
-        metrics.h =
-            PageEnergy(*vsm, scene_.camera, lightSpace, samples, grazing, &metrics.hGrazing);
+        m->metrics.h =
+            PageEnergy(*vsm, scene_.camera, lightSpace, samples, grazing, &m->metrics.hGrazing);
         m->pages =
             PageOutcome{vsm->requested,        static_cast<std::int64_t>(vsm->resident.size()),
                         vsm->dropped,          vsm->layout.pageTexels,
                         vsm->layout.poolPages, vsm->lodBias};
-    } else if (cascades.empty()) {
-        const ShadowMap& map = shading.maps.front();
-        metrics.h =
-            computed.warp ? WarpEnergy(*computed.warp, samples) : Energy(m->matrix, samples);
-        if (!computed.warp) metrics.e = Energy(m->matrix, samples, EdgeEnergyOf(scene_));
-        for (std::size_t s = 0; s < grazing.size(); ++s)
-            if (grazing[s])
-                metrics.hGrazing +=
-                    MapSampleBadness(map, samples.lsX[s], samples.dXdx1[s], samples.dXdx2[s],
-                                     Badness::kFrobeniusInverseSquared);
+    } else if (computed.cascades.empty()) {
+        MeasureSingleMapEnergy(computed, shading.maps.front(), samples, grazing,
+                               EdgeEnergyOf(scene_), m);
     } else {
-        for (const Cascade& c : cascades) {
-            m->cascades.push_back({c, 0, 0.0});
-            m->emptyPartitions += c.visiblePoints == 0;
-        }
-        for (std::size_t i = 0; i < shading.shades.size(); ++i)
-            if (shading.shades[i] == Shade::kLit || shading.shades[i] == Shade::kShadowed)
-                ++m->cascades[shading.cascade[i]].pixels;
-        MeasureCascadeEnergy(scene_.camera, cascades, samples, grazing, m);
-        metrics.e = PartitionedEnergy(cascades, samples, context.baseline.wsRelevant, scene_.camera,
-                                      EdgeEnergyOf(scene_));
+        MeasureCascades(scene_, computed, context, shading, samples, grazing, m);
     }
-    if (keepBuffers && computed.virtualMap) {
-        m->buffers.shades = std::move(shading.shades);
-        m->buffers.map = PoolAtlas(shading.maps, computed.virtualMap->layout.pageTexels);
-        m->buffers.uncoveredPixels = std::move(shading.outside);
-    } else if (keepBuffers) {
-        m->buffers.shades = std::move(shading.shades);
-        m->buffers.map = shading.maps.front();
-        if (!cascades.empty()) m->buffers.cascadeMaps = std::move(shading.maps);
-    }
+    if (options.keepBuffers) KeepBuffers(computed, std::move(shading), m);
 }
 
 }  // namespace lexel::spatial

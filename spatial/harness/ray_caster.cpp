@@ -92,7 +92,11 @@ struct RayCaster::Impl {
     }
 };
 
-RayCaster::RayCaster(const TriangleMesh& wsMesh) : impl_(std::make_unique<Impl>()) {
+namespace {
+
+// DomainError kGeometry for a mesh without triangles, a triangle naming a vertex it lacks or a
+// referenced vertex that is not finite.
+void CheckMesh(const TriangleMesh& wsMesh) {
     if (wsMesh.triangles.empty())
         throw DomainError(Subject::kGeometry, "the scene has no triangles");
     const std::size_t vertexCount = wsMesh.positions.size();
@@ -110,7 +114,35 @@ RayCaster::RayCaster(const TriangleMesh& wsMesh) : impl_(std::make_unique<Impl>(
                                                           " is not finite");
         }
     }
+}
 
+// Copies the mesh in `frame`'s unit coordinates into Embree-owned buffers of `geometry`, which
+// Embree pads for its vector loads; shared buffers would oblige the mesh to outlive the caster
+// and to carry that padding itself.
+void FillGeometry(RTCDevice device, RTCGeometry geometry, const TriangleMesh& wsMesh,
+                  const UnitFrame& frame) {
+    const std::size_t vertexCount = wsMesh.positions.size();
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount));
+    auto* indices = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(unsigned), wsMesh.triangles.size()));
+    ThrowOnEmbreeError(device, "allocating the geometry buffers");
+    if (vertices == nullptr || indices == nullptr)
+        throw std::runtime_error("ray caster: Embree returned no geometry buffer");
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+        // Unreferenced vertices may lie anywhere (even be non-finite): Embree never reads them.
+        const glm::vec3 unitPoint(frame.ToUnit(wsMesh.positions[v]));
+        for (int k = 0; k < 3; ++k) vertices[3 * v + k] = unitPoint[k];
+    }
+    for (std::size_t t = 0; t < wsMesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) indices[3 * t + k] = wsMesh.triangles[t][k];
+}
+
+}  // namespace
+
+RayCaster::RayCaster(const TriangleMesh& wsMesh) : impl_(std::make_unique<Impl>()) {
+    CheckMesh(wsMesh);
     impl_->device = rtcNewDevice(nullptr);
     if (impl_->device == nullptr)
         throw std::runtime_error("ray caster: Embree could not create a device (error " +
@@ -135,25 +167,8 @@ RayCaster::RayCaster(const TriangleMesh& wsMesh) : impl_(std::make_unique<Impl>(
         }
     } geometryRef{geometry};
     rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
-
-    // Copies into Embree-owned buffers, which Embree pads for its vector loads; shared buffers
-    // would oblige the mesh to outlive the caster and to carry that padding itself.
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount));
-    auto* indices = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                3 * sizeof(unsigned), wsMesh.triangles.size()));
-    ThrowOnEmbreeError(device, "allocating the geometry buffers");
-    if (vertices == nullptr || indices == nullptr)
-        throw std::runtime_error("ray caster: Embree returned no geometry buffer");
     impl_->frame = UnitFrameOf(wsMesh.ComputeBounds());
-    for (std::size_t v = 0; v < vertexCount; ++v) {
-        // Unreferenced vertices may lie anywhere (even be non-finite): Embree never reads them.
-        const glm::vec3 unitPoint(impl_->frame.ToUnit(wsMesh.positions[v]));
-        for (int k = 0; k < 3; ++k) vertices[3 * v + k] = unitPoint[k];
-    }
-    for (std::size_t t = 0; t < wsMesh.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) indices[3 * t + k] = wsMesh.triangles[t][k];
+    FillGeometry(device, geometry, wsMesh, impl_->frame);
 
     rtcCommitGeometry(geometry);
     ThrowOnEmbreeError(device, "committing the geometry");

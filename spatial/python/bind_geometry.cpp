@@ -359,6 +359,7 @@ DepthRange ToDepthRange(const LightSpace& s, const py::object& obj) {
     return r;
 }
 
+// The clip matrices a rasterizer renders a light matrix with, and their depth range.
 void BindClipMatrices(py::module_& m) {
     py::enum_<ClipDepth>(m, "ClipDepth",
                          "A projection's clip depth: MINUS_ONE_TO_ONE (OpenGL's default) or "
@@ -414,6 +415,10 @@ void BindClipMatrices(py::module_& m) {
         "readback's visible points), near from caster_bounds inside the map's frustum, each end "
         "moved out by margin x (far - near). ValueError when there are no receivers or one is "
         "behind the map's plane.");
+}
+
+// Light matrices from elsewhere: a world 4×4, a fit of the affine part, Algorithm 1's first axis.
+void BindMatrixFits(py::module_& m) {
     m.def(
         "from_screen_rows",
         [](const LightSpace& s, const py::object& screen, const py::object& center) {
@@ -469,6 +474,7 @@ void BindGeometry(py::module_& m) {
     BindLightSpace(m);
     BindLightMatrix(m);
     BindClipMatrices(m);
+    BindMatrixFits(m);
 }
 
 }  // namespace lexel::python
