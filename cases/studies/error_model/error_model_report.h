@@ -1,4 +1,4 @@
-// The error-model study's outputs (cases/run/error_model_study.h): per sample the predicted band
+// The error-model study's outputs (cases/studies/error_model/error_model_study.h): per sample the predicted band
 // and the measured phase-averaged misclassified pixels (CSV), the least-squares fit of measured
 // on predicted with the correlation per method and pooled (JSON, text), and the scatter plot with
 // its fit line (PNG, Cairo).
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lexel/cases/run/error_model_study.h"
+#include "lexel/cases/studies/error_model/error_model_study.h"
 
 namespace lexel::cases {
 

@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "lexel/cases/app/commands.h"
-#include "lexel/cases/app/error_model_command.h"
+#include "lexel/cases/studies/error_model/error_model_command.h"
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/run/sweep.h"

@@ -1,5 +1,5 @@
 // The error-model study's outputs (error_model_report.h).
-#include "lexel/cases/report/error_model_report.h"
+#include "lexel/cases/studies/error_model/error_model_report.h"
 
 #include <cairo.h>
 

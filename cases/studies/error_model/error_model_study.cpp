@@ -1,5 +1,5 @@
 // The error model checked per boundary sample (error_model_study.h).
-#include "lexel/cases/run/error_model_study.h"
+#include "lexel/cases/studies/error_model/error_model_study.h"
 
 #include <tbb/parallel_for.h>
 

@@ -1,5 +1,5 @@
 // `lexel error-model` (error_model_command.h).
-#include "lexel/cases/app/error_model_command.h"
+#include "lexel/cases/studies/error_model/error_model_command.h"
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -10,9 +10,9 @@
 
 #include "lexel/cases/app/command_support.h"
 #include "lexel/cases/app/progress.h"
-#include "lexel/cases/report/error_model_report.h"
+#include "lexel/cases/studies/error_model/error_model_report.h"
 #include "lexel/cases/report/output.h"
-#include "lexel/cases/run/error_model_study.h"
+#include "lexel/cases/studies/error_model/error_model_study.h"
 #include "lexel/cases/run/sweep.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/methods.h"
