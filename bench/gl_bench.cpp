@@ -24,7 +24,7 @@
 #include <optional>
 
 #include "lexel/cases/load/spatial_case.h"
-#include "lexel/cases/run/timing.h"
+#include "lexel/cases/studies/timing/timing_study.h"
 #include "lexel/solvers/stopwatch.h"
 #include "lexel/spatial/gl/gl_frame_pipeline.h"
 #include "lexel/spatial/gl/gl_renderer.h"

@@ -36,10 +36,14 @@
 #include <vector>
 
 #include "lexel/cases/app/commands.h"
-#include "lexel/cases/studies/error_model/error_model_command.h"
+#include "lexel/cases/app/flags.h"
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/run/sweep.h"
+#include "lexel/cases/studies/error_model/error_model_command.h"
+#include "lexel/cases/studies/storage/storage_command.h"
+#include "lexel/cases/studies/thesis/thesis_command.h"
+#include "lexel/cases/studies/timing/timing_command.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"
@@ -60,39 +64,21 @@ int Failure(std::string message, int status) {
     return status;
 }
 
-// A flag given as an empty string (`--out ''`) is refused rather than taken for "not given".
-CLI::Validator NonEmpty(const std::string& what) {
-    return CLI::Validator(
-        [what](std::string& value) {
-            return value.empty() ? "must name " + what + ", got an empty string" : std::string();
-        },
-        "", "NonEmpty");
-}
-
 // One registration function per subcommand: it adds the subcommand and its flags to `app`, bound
 // to a flags struct it owns, and returns the command to run when the subcommand is chosen.
 using Command = std::function<int()>;
 namespace cases = lexel::cases;
 
-using cases::RegisterErrorModel;  // cases/app/error_model_command.h
-
-CLI::Option* AddBackend(CLI::App* sub, std::string& backend, const std::string& what) {
-    return sub->add_option("--backend", backend, what)->check(CLI::IsMember({"cpu", "gl"}));
-}
-
-// --phases K: each 3D method's errors averaged over K sub-texel phases of its map(s);
-// --max-phases N: raised, doubling, up to N phases where the mean's residual is above 2%.
-void AddPhases(CLI::App* sub, int& phases, int& maxPhases) {
-    sub->add_option("--phases", phases,
-                    "3D: average each method's misclassified pixels over K sub-texel shifts of "
-                    "its map(s) (default: the case's phases, or 1)")
-        ->check(CLI::Range(1, lexel::spatial::kMaxPhases));
-    sub->add_option("--max-phases", maxPhases,
-                    "3D: where a method's mean over K phases has a standard error above 2% of it "
-                    "(and above 1 pixel), average it over 2K, 4K, ... up to N phases (default: "
-                    "the case's max_phases, or K)")
-        ->check(CLI::Range(1, lexel::spatial::kMaxPhases));
-}
+using cases::AddBackend;
+using cases::AddPhases;
+using cases::NonEmpty;
+// The studies' commands, each in its folder (cases/studies/<name>/<name>_command.h).
+using cases::RegisterErrorModel;
+using cases::RegisterFitThesis;
+using cases::RegisterLowres;
+using cases::RegisterStorage;
+using cases::RegisterTables;
+using cases::RegisterTiming;
 
 Command RegisterRun(CLI::App& app) {
     auto* run =
@@ -187,74 +173,6 @@ Command RegisterMerge(CLI::App& app) {
     return [flags] { return cases::MergeCommand(*flags); };
 }
 
-Command RegisterTiming(CLI::App& app) {
-    auto* timing = app.add_subcommand(
-        "timing", "3D: time focused and optimal frames pass by pass (report Tables 2-3)");
-    auto flags = std::make_shared<cases::TimingFlags>();
-    timing->add_option("case", flags->casePath, "3D case file (JSON)")
-        ->required()
-        ->check(CLI::ExistingFile);
-    AddBackend(timing, flags->backend, "The renderer (gl: OpenGL 4.5 via EGL)");
-    timing->add_option("--lights", flags->lights, "Lights per frame (default 4, as Table 3)")
-        ->check(CLI::Range(1, 64));
-    timing
-        ->add_option("--frames", flags->frames,
-                     "Timed frames per method, walking the camera_path (default 8)")
-        ->check(CLI::Range(1, 10000));
-    timing
-        ->add_option("--update-every", flags->updateEvery,
-                     "Optimal: run Algorithm 1 every U frames, keep P between (report: 3)")
-        ->check(CLI::Range(1, 1000));
-    timing
-        ->add_option("--standard-every", flags->standardEvery,
-                     "Optimal: step 1 from a standard map every S updates, else from the "
-                     "previous map (report: 2)")
-        ->check(CLI::Range(1, 1000));
-    timing
-        ->add_option(
-            "--optimizer", flags->optimizer,
-            "The optimal frames' method (default optimal-report: Algorithm 1 as published)")
-        ->check(CLI::IsMember(lexel::spatial::OptimizerMethodNames()));
-    timing->add_option("--format", flags->format, "Output format")
-        ->check(CLI::IsMember({"table", "json", "csv"}));
-    return [flags] { return cases::TimingCommand(*flags); };
-}
-
-Command RegisterStorage(CLI::App& app) {
-    auto* storage = app.add_subcommand(
-        "storage",
-        "Lloyd et al. 2006's storage factor: the data and figures of Figs. 5-7, 10, 12, 13");
-    auto flags = std::make_shared<cases::StorageFlags>();
-    storage->add_option("--fov-y", flags->fovYDeg, "Vertical field of view in degrees, 0.1 to 179")
-        ->capture_default_str();
-    storage->add_option("--aspect", flags->aspect, "Image width / height, 0.01 to 100")
-        ->capture_default_str();
-    storage->add_option("--near", flags->nearPlane, "Near plane n, 1e-6 to 1e9")
-        ->capture_default_str();
-    storage
-        ->add_option("--far", flags->farPlane,
-                     "Far plane f, 1e-6 to 1e9, with f/n from 1 + 1e-6 to 1e6")
-        ->capture_default_str();
-    auto* storageCase =
-        storage
-            ->add_option("--case", flags->casePath,
-                         "3D case: every method's measured storage factor beside the analytic "
-                         "one for the case's camera (instead of the figures)")
-            ->check(CLI::ExistingFile);
-    for (const char* flag : {"--fov-y", "--aspect", "--near", "--far"})
-        storageCase->excludes(storage->get_option(flag));
-    storage->add_option("--method", flags->methods,
-                        "With --case: methods (default: all; listed below)");
-    storage->footer(cases::MethodsHelp(false, true));
-    storage->add_option("--format", flags->format, "Output format")
-        ->check(CLI::IsMember({"table", "json", "csv"}));
-    storage
-        ->add_option("--out", flags->outDir,
-                     "Also write storage.json, storage.csv and the figures (PNG) here")
-        ->check(NonEmpty("a directory"));
-    return [flags] { return cases::StorageCommand(*flags); };
-}
-
 Command RegisterMethods(CLI::App& app) {
     auto* methods = app.add_subcommand(
         "methods", "Every method: its family, whether it runs by default, its storage model");
@@ -283,54 +201,6 @@ Command RegisterMeshInfo(CLI::App& app) {
 Command RegisterInfo(CLI::App& app) {
     app.add_subcommand("info", "The version and the renderers available here");
     return [] { return cases::InfoCommand(std::string("lexel ") + LEXEL_VERSION); };
-}
-
-Command RegisterTables(CLI::App& app) {
-    auto* tables =
-        app.add_subcommand("tables", "Reproduce the thesis tables (Chong 2003, ch. 4.1.3)");
-    auto outDir = std::make_shared<std::string>("out"), casesDir = std::make_shared<std::string>();
-    tables->add_option("--out", *outDir, "Directory for the Markdown, CSV and figures")
-        ->capture_default_str()
-        ->check(NonEmpty("a directory"));
-    tables
-        ->add_option("--cases", *casesDir,
-                     "Directory holding the four thesis cases (default: the shipped ones); "
-                     "fitted/<case>.json there replaces a case where it matches better")
-        ->check(NonEmpty("a directory"));
-    return [outDir, casesDir] { return cases::TablesCommand(*outDir, *casesDir); };
-}
-
-Command RegisterLowres(CLI::App& app) {
-    auto* lowres =
-        app.add_subcommand("lowres", "Low-resolution decision study (thesis 4.1.1, Fig. 4.1)");
-    auto casePath = std::make_shared<std::string>(), outDir = std::make_shared<std::string>();
-    lowres->add_option("case", *casePath, "Case file (JSON)")->required()->check(CLI::ExistingFile);
-    lowres->add_option("--out", *outDir, "Also write the table as CSV/Markdown and a plot here")
-        ->check(NonEmpty("a directory"));
-    return [casePath, outDir] { return cases::LowresCommand(*casePath, *outDir); };
-}
-
-Command RegisterFitThesis(CLI::App& app) {
-    auto* fitThesis = app.add_subcommand(
-        "fit-thesis", "Fit the thesis's scenes to its published tables (Chong 2003, ch. 4.1.3)");
-    auto flags = std::make_shared<cases::FitThesisFlags>();
-    fitThesis->add_option("--case", flags->caseName, "One case (file stem); default: all four")
-        ->check(NonEmpty("a thesis case"));
-    fitThesis->add_option("--out", flags->outDir, "Directory for the fitted case files")
-        ->capture_default_str()
-        ->check(NonEmpty("a directory"));
-    fitThesis->add_option("--seed", flags->options.seed, "Seed of the random starts")
-        ->capture_default_str();
-    fitThesis->add_option("--samples", flags->options.samples, "Random starts screened per case")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 10000000));
-    fitThesis
-        ->add_option("--starts", flags->options.starts, "Least-squares runs from the best of them")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 100000));
-    fitThesis->add_flag("--explain", flags->options.explain,
-                        "For a table not met: refit with each published number left out");
-    return [flags] { return cases::FitThesisCommand(*flags); };
 }
 
 // Runs the chosen command, each failure one line: bad input (InputError, an untranslated

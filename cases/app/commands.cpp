@@ -1,7 +1,6 @@
 #include "lexel/cases/app/commands.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -17,34 +16,16 @@
 #include "lexel/cases/load/case_methods.h"
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/json_reader.h"
-#include "lexel/cases/load/published.h"
 #include "lexel/cases/load/spatial_case.h"
-#include "lexel/cases/plot/case_figure.h"
-#include "lexel/cases/plot/curve_plot.h"
 #include "lexel/cases/record/sweep_journal.h"
-#include "lexel/cases/record/sweep_record.h"
-#include "lexel/cases/record/sweep_record_reader.h"
-#include "lexel/cases/record/sweep_record_text.h"
-#include "lexel/cases/report/fit_report.h"
 #include "lexel/cases/report/flatland_report.h"
 #include "lexel/cases/report/html_report.h"
-#include "lexel/cases/report/lowres_report.h"
 #include "lexel/cases/report/method_listing.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/report/spatial_report.h"
-#include "lexel/cases/report/storage_report.h"
-#include "lexel/cases/report/sweep_report.h"
-#include "lexel/cases/report/tables_report.h"
 #include "lexel/cases/report/text_table.h"
-#include "lexel/cases/report/timing_report.h"
-#include "lexel/cases/run/cascade_study.h"
-#include "lexel/cases/run/lowres.h"
 #include "lexel/cases/run/spatial_run.h"
-#include "lexel/cases/run/storage.h"
 #include "lexel/cases/run/sweep.h"
-#include "lexel/cases/run/sweep_share.h"
-#include "lexel/cases/run/thesis_tables.h"
-#include "lexel/cases/run/timing.h"
 #include "lexel/flatland/methods.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/mesh_frame.h"
@@ -240,121 +221,6 @@ int RunCommand(const RunFlags& flags) {
     return RunFlatland(flags, first);
 }
 
-int TimingCommand(const TimingFlags& flags) {
-    const fs::path casePath = flags.casePath;
-    const spatial::Scene scene = LoadSpatialScene(casePath);
-    TimingOptions options;
-    options.backend = BackendOf(flags.backend);
-    options.lights = flags.lights;
-    options.frames = flags.frames;
-    options.updateEvery = flags.updateEvery;
-    options.standardEvery = flags.standardEvery;
-    options.optimal = flags.optimizer;
-    const ReportTiming report =
-        LoadReportTiming(DataDirectory() / "published" / "report_timing.json");
-    Progress bar("timing", static_cast<std::size_t>(options.frames) + 1, "frames");
-    options.onFrameDone = [&] { bar.Step(); };
-    const TimingRun run = WithCaseName(casePath, [&] { return RunTiming(scene, options); });
-    PrintReport(flags.format, {.json = [&] { return TimingJson(scene, run, report); },
-                               .csv = [&] { return TimingCsv(run); },
-                               .markdown = {},
-                               .text = [&] { return TimingText(scene, run, report); }});
-    return 0;
-}
-
-namespace {
-
-// The frustum `lexel storage` evaluates, as flags allow it (stated in --help): inside these
-// limits every figure is finite and the warp searches converge (each corner of the box measured,
-// RESULTS.md "Lloyd's storage factor"); outside, the frustum is a sliver or a plane, tan θ or the
-// aspect overflow the light-space axes, or f - n falls below the searches' steps.
-constexpr double kMinFovYDeg = 0.1, kMaxFovYDeg = 179.0;             // degrees
-constexpr double kMinAspect = 0.01, kMaxAspect = 100.0;              // width / height
-constexpr double kMinPlane = 1e-6, kMaxPlane = 1e9;                  // world units, near and far
-constexpr double kMinDepthRatio = 1.0 + 1e-6, kMaxDepthRatio = 1e6;  // f / n
-
-// The frustum flags, each checked against those limits with the flag's name.
-spatial::ViewFrustum StorageFrustum(const StorageFlags& flags) {
-    const auto number = [](double v) {  // the shortest text that reads back as v
-        char text[32];
-        return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
-    };
-    const auto range = [&](const char* flag, double v, double lo, double hi, const char* unit) {
-        if (!(v >= lo && v <= hi))
-            throw InputError(std::string(flag) + ": must be in [" + number(lo) + ", " + number(hi) +
-                             "]" + unit + ", got " + number(v));
-    };
-    range("--fov-y", flags.fovYDeg, kMinFovYDeg, kMaxFovYDeg, " degrees");
-    range("--aspect", flags.aspect, kMinAspect, kMaxAspect, "");
-    range("--near", flags.nearPlane, kMinPlane, kMaxPlane, "");
-    range("--far", flags.farPlane, kMinPlane, kMaxPlane, "");
-    const double ratio = flags.farPlane / flags.nearPlane;
-    if (!(ratio >= kMinDepthRatio && ratio <= kMaxDepthRatio))
-        throw InputError("--far: must be " + number(kMinDepthRatio) + " to " +
-                         number(kMaxDepthRatio) + " times --near (" + number(flags.nearPlane) +
-                         "), got " + number(flags.farPlane) + " (" + number(ratio) + " times)");
-    return {flags.fovYDeg, flags.aspect, flags.nearPlane, flags.farPlane};
-}
-
-int CaseStorageCommand(const StorageFlags& flags) {
-    const fs::path casePath = flags.casePath;
-    const spatial::Scene scene = LoadSpatialScene(casePath);
-    const std::vector<std::string> methods = SpatialMethods(flags.methods);
-    std::optional<OutputSet> out;             // --out is checked before anything is computed
-    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile (made after out)
-    const std::string stem = "storage_" + scene.name;
-    if (!flags.outDir.empty())
-        out.emplace(flags.outDir, OutputPlan{{casePath}, [stem](const std::string& file) {
-                                                 return file == stem + ".json" ||
-                                                        file == stem + ".csv";
-                                             }});
-    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
-    const CaseStorage result =
-        WithCaseName(casePath, [&] { return RunCaseStorage(scene, methods); });
-    PrintReport(flags.format, {.json = [&] { return CaseStorageJson(result); },
-                               .csv = [&] { return CaseStorageCsv(result); },
-                               .markdown = {},
-                               .text = [&] { return CaseStorageText(result); }});
-    if (!out) return 0;
-    out->WriteText(stem + ".json", CaseStorageJson(result).dump(2) + "\n");
-    out->WriteText(stem + ".csv", CaseStorageCsv(result));
-    out->Commit();
-    std::cerr << "lexel: wrote " << stem << ".json/.csv to " << flags.outDir << '\n';
-    return 0;
-}
-
-}  // namespace
-
-int StorageCommand(const StorageFlags& flags) {
-    if (!flags.casePath.empty()) return CaseStorageCommand(flags);
-    if (!flags.methods.empty())
-        throw InputError("--method: applies with --case (the measured storage factor)");
-    const spatial::ViewFrustum frustum = StorageFrustum(flags);
-    std::optional<OutputSet> out;             // --out is checked before anything is computed
-    std::optional<SweepExclusion> exclusion;  // no sweep into --out meanwhile (made after out)
-    if (!flags.outDir.empty())
-        out.emplace(flags.outDir,
-                    OutputPlan{{}, [](const std::string& file) {
-                                   return file == "storage.json" || file == "storage.csv" ||
-                                          (file.starts_with("fig") && file.ends_with(".png"));
-                               }});
-    if (!flags.outDir.empty()) exclusion.emplace(flags.outDir);
-    const StorageStudy study = RunStorageStudy(frustum);
-    PrintReport(flags.format, {.json = [&] { return StorageJson(study); },
-                               .csv = [&] { return StorageCsv(study); },
-                               .markdown = {},
-                               .text = [&] { return StorageText(study); }});
-    if (!out) return 0;
-    out->WriteText("storage.json", StorageJson(study).dump(2) + "\n");
-    out->WriteText("storage.csv", StorageCsv(study));
-    const std::vector<std::string> figures =
-        out->Writing([&] { return WriteStorageFigures(out->StagingDir(), study); });
-    out->Commit();
-    std::cerr << "lexel: wrote storage.json, storage.csv and " << figures.size() << " figures to "
-              << flags.outDir << '\n';
-    return 0;
-}
-
 namespace {
 
 // Bounds to 6 significant digits: "[x, y, z] .. [x, y, z], size [dx, dy, dz]".
@@ -426,142 +292,6 @@ int InfoCommand(const std::string& version) {
     } catch (const BackendUnavailable& e) {
         std::cout << "gl: unavailable: " << e.what() << '\n';
     }
-    return 0;
-}
-
-int TablesCommand(const std::string& outDir, const std::string& casesDir) {
-    const std::vector<ThesisTable> tables =
-        LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
-    const fs::path dir = casesDir.empty() ? DataDirectory() / "flatland" : fs::path(casesDir);
-    // Checked before anything is computed: tables.md/.csv, lowres.csv, <case file stem>.png,
-    // lowres_<name>.png (the name is the case's, read later); the inputs are the thesis cases and
-    // their fitted versions. Other PNGs in DIR are not the command's.
-    std::vector<std::string> figures;
-    for (const ThesisTable& thesis : tables)
-        figures.push_back(fs::path(thesis.file).stem().string() + ".png");
-    OutputPlan plan{{}, [figures](const std::string& file) {
-                        return file == "tables.md" || file == "tables.csv" ||
-                               file == "lowres.csv" ||
-                               std::find(figures.begin(), figures.end(), file) != figures.end() ||
-                               (file.starts_with("lowres_") && file.ends_with(".png"));
-                    }};
-    for (const ThesisTable& thesis : tables) {
-        plan.inputs.push_back(dir / thesis.file);
-        plan.inputs.push_back(dir / "fitted" / thesis.file);
-    }
-    OutputSet out(outDir, std::move(plan));
-    const std::vector<TableResult> results = RunThesisTables(tables, dir);
-    std::vector<std::vector<LowresRow>> lowres;
-    std::vector<std::pair<std::string, std::vector<LowresRow>>> studies;
-    for (const auto& r : results) {
-        lowres.push_back(RunLowresStudy(r.scene));
-        studies.emplace_back(r.scene.name, lowres.back());
-    }
-    std::cout << TablesText(results);
-    for (const auto& [name, rows] : studies) std::cout << LowresText(name, rows) << '\n';
-    const std::string summary = LowresSummary(results, lowres);
-    std::cout << WrapText(summary);
-
-    std::string markdown =
-        TablesMarkdown(results) + "## Low-resolution decision (thesis 4.1.1, Fig. 4.1)\n\n";
-    for (std::size_t i = 0; i < results.size(); ++i) {
-        const std::string& name = results[i].scene.name;
-        const std::string stem = fs::path(results[i].thesis.file).stem().string();
-        out.Writing([&] {
-            WriteCaseFigure(out.Staged(stem + ".png").string(), results[i].scene,
-                            results[i].report);
-            WriteLowresPlot(out.Staged("lowres_" + name + ".png").string(),
-                            "Low-resolution decision: " + name, LowresCurves(lowres[i]));
-        });
-        markdown += LowresMarkdown(name, lowres[i]);
-    }
-    markdown += summary;
-    out.WriteText("tables.md", markdown);
-    out.WriteText("tables.csv", TablesCsv(results));
-    out.WriteText("lowres.csv", LowresCsv(studies));
-    out.Commit();
-    std::cout << "\nlexel: wrote tables.md, tables.csv, lowres.csv and " << 2 * results.size()
-              << " figures to " << fs::absolute(outDir).string() << '\n';
-    return 0;
-}
-
-int LowresCommand(const std::string& casePath, const std::string& outDir) {
-    const flatland::FlatScene scene = LoadFlatScene(casePath);
-    std::optional<OutputSet> out;  // --out is checked before anything is computed
-    if (!outDir.empty())
-        out.emplace(outDir, OutputPlan{{casePath}, [name = scene.name](const std::string& file) {
-                                           return file == "lowres_" + name + ".md" ||
-                                                  file == "lowres_" + name + ".png";
-                                       }});
-    std::vector<LowresRow> rows;
-    try {
-        rows = RunLowresStudy(scene);
-    } catch (const DomainError& e) {
-        throw FlatlandInputError(casePath, e);
-    }
-    std::cout << LowresText(scene.name, rows);
-    if (!out) return 0;
-    out->WriteText("lowres_" + scene.name + ".md", LowresMarkdown(scene.name, rows));
-    out->Writing([&] {
-        WriteLowresPlot(out->Staged("lowres_" + scene.name + ".png").string(),
-                        "Low-resolution decision: " + scene.name, LowresCurves(rows));
-    });
-    out->Commit();
-    return 0;
-}
-
-namespace {
-
-// The thesis tables `fit-thesis --case` selects: all, or the one whose case file has that stem.
-std::vector<ThesisTable> SelectThesisTables(const std::vector<ThesisTable>& tables,
-                                            const std::string& caseName) {
-    std::vector<ThesisTable> selected;
-    std::vector<std::string> known;
-    for (const ThesisTable& thesis : tables) {
-        known.push_back(fs::path(thesis.file).stem().string());
-        if (caseName.empty() || known.back() == caseName) selected.push_back(thesis);
-    }
-    if (selected.empty())
-        throw InputError("--case: unknown thesis case '" + caseName +
-                         "' (known: " + KnownList(known) + ")");
-    return selected;
-}
-
-// fit-thesis writes <case>.json (the family, named by the case file's stem) and parameters.json
-// into --out: none of them may replace a thesis case file it reads (e.g. --out cases/flatland).
-OutputPlan FitThesisOutputPlan(const fs::path& casesDir, const std::vector<ThesisTable>& selected) {
-    OutputPlan plan;
-    std::vector<std::string> names = {"parameters.json"};
-    for (const ThesisTable& thesis : selected) {
-        plan.inputs.push_back(casesDir / thesis.file);
-        names.push_back(fs::path(thesis.file).stem().string() + ".json");
-    }
-    plan.isOutput = [names](const std::string& file) {
-        return std::find(names.begin(), names.end(), file) != names.end();
-    };
-    return plan;
-}
-
-}  // namespace
-
-int FitThesisCommand(const FitThesisFlags& flags) {
-    const std::vector<ThesisTable> tables =
-        LoadThesisTables(DataDirectory() / "published" / "thesis_tables.json");
-    const std::vector<ThesisTable> selected = SelectThesisTables(tables, flags.caseName);
-    const fs::path casesDir = DataDirectory() / "flatland";
-    OutputSet out(flags.outDir, FitThesisOutputPlan(casesDir, selected));  // before any fit
-    // Everything is fitted before anything is written.
-    const std::vector<CaseFit> fits =
-        FitThesisCases(selected, casesDir, flags.options,
-                       [](const CaseFit& fit) { std::cout << FitText(fit) << std::flush; });
-    const fs::path outDir(flags.outDir);
-    const std::vector<StoredFit> stored = MergeStoredFits(outDir / "parameters.json", fits, tables);
-    for (const CaseFit& fit : fits) out.WriteText(fit.family->name + ".json", FittedCaseJson(fit));
-    out.WriteText("parameters.json", StoredFitsJson(stored));
-    out.Commit();
-    std::cout << "lexel: wrote " << fits.size() << " fitted case file"
-              << (fits.size() == 1 ? "" : "s") << " and parameters.json to "
-              << fs::absolute(outDir).string() << '\n';
     return 0;
 }
 

@@ -1,4 +1,5 @@
-// The `lexel` commands: each loads its input, calls its runner (cases/run/), prints with its
+// The product's `lexel` commands (run, sweep, merge, methods, mesh-info, info; the studies' are in
+// cases/studies/<name>/): each loads its input, calls its runner (cases/run/), prints with its
 // formatter (cases/report/) and writes its files. Flags live in main.cpp only; these take the
 // parsed values. Each returns the exit status and throws InputError (exit 2) for bad input.
 #pragma once
@@ -7,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "lexel/cases/run/fit_thesis.h"
 #include "lexel/spatial/harness/methods.h"
 
 namespace lexel::cases {
@@ -60,33 +60,6 @@ struct MergeFlags {
 };
 int MergeCommand(const MergeFlags& flags);
 
-struct TimingFlags {
-    std::string casePath;
-    std::string backend = "cpu";  // cpu | gl
-    int lights = 4;
-    int frames = 8;
-    int updateEvery = 1;    // optimal: Algorithm 1 every U frames (the report: 3)
-    int standardEvery = 1;  // optimal: step 1 from a standard map every S updates (the report: 2)
-    // The optimal frames' optimizer: one of spatial::OptimizerMethodNames.
-    std::string optimizer = spatial::kReportOptimalMethod;
-    std::string format = "table";  // table | json | csv
-};
-int TimingCommand(const TimingFlags& flags);
-
-// Lloyd et al. 2006's storage factor for one view frustum (the frustum flags), or with a case
-// file every method's measured storage factor beside the analytic one for the case's camera.
-struct StorageFlags {
-    double fovYDeg = 60.0;
-    double aspect = 1.0;
-    double nearPlane = 1.0;
-    double farPlane = 1000.0;
-    std::string casePath;              // --case: measured beside analytic instead of the figures
-    std::vector<std::string> methods;  // with --case; empty: all
-    std::string format = "table";      // table | json | csv
-    std::string outDir;                // empty: print only
-};
-int StorageCommand(const StorageFlags& flags);
-
 // A mesh file as lexel reads it: format, vertices, triangles and bounds in the file's units; with
 // a 3D case, for each of its geometry entries that loads the file, the entry's up axis and units
 // and the bounds after them (scene axes and units) and after the entry's transform (world).
@@ -98,15 +71,5 @@ int MeshInfoCommand(const std::string& meshPath, const std::string& casePath);
 int InfoCommand(const std::string& version);
 // Every method lexel knows (MethodListingText, or MethodListingJson when `json`) on stdout.
 int MethodsCommand(bool json);
-
-int TablesCommand(const std::string& outDir, const std::string& casesDir);
-int LowresCommand(const std::string& casePath, const std::string& outDir);
-
-struct FitThesisFlags {
-    std::string caseName;               // one case (file stem), or all when empty
-    std::string outDir = "out/fitted";  // where the fitted case files go
-    FitThesisOptions options;
-};
-int FitThesisCommand(const FitThesisFlags& flags);
 
 }  // namespace lexel::cases

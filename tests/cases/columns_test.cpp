@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "lexel/cases/report/spatial_report.h"
-#include "lexel/cases/report/storage_report.h"
 #include "lexel/cases/report/sweep_report.h"
+#include "lexel/cases/studies/storage/storage_report.h"
 
 namespace lexel::cases {
 namespace {
@@ -91,15 +91,18 @@ std::string ReadFile(const std::string& path) {
 // The first line of a report's CSV: its header.
 std::string HeaderOf(const std::string& csv) { return csv.substr(0, csv.find('\n')); }
 
-TEST(Columns, TheCsvHeadersAreTheOnesTheCaseReferenceDocuments) {
+TEST(Columns, TheCsvHeadersAreTheOnesTheReferencesDocument) {
     const std::string readme = ReadFile(LEXEL_CASES_DIR "/README.md");
+    const std::string storage = ReadFile(LEXEL_CASES_DIR "/studies/storage/README.md");
     ASSERT_FALSE(readme.empty());
-    const std::vector<std::string> headers = {HeaderOf(SpatialRunCsv(SpatialRun{})),
-                                              HeaderOf(SweepCsv(SweepResult{}, ReportTable1{})),
-                                              HeaderOf(CaseStorageCsv(CaseStorage{}))};
-    for (const std::string& header : headers)
+    ASSERT_FALSE(storage.empty());
+    for (const std::string& header :
+         {HeaderOf(SpatialRunCsv(SpatialRun{})), HeaderOf(SweepCsv(SweepResult{}, ReportTable1{}))})
         EXPECT_NE(readme.find("`" + header + "`"), std::string::npos)
             << "cases/README.md does not list the CSV header " << header;
+    const std::string header = HeaderOf(CaseStorageCsv(CaseStorage{}));
+    EXPECT_NE(storage.find("`" + header + "`"), std::string::npos)
+        << "cases/studies/storage/README.md does not list the CSV header " << header;
 }
 
 // cases/COLUMNS.md holds each table's reference as the code makes it, so a column added, renamed

@@ -1,7 +1,8 @@
-// `lexel error-model`'s study (cases/studies/error_model/error_model_study.h): where the misclassified pixels lie.
-// A camera looks straight down at the floor, and a plate above it (out of view) casts one straight
-// shadow edge across the frame: every misclassified pixel is on the floor, and over a uniform
-// sub-texel phase a straight edge's band is shadowed on one side as often as lit on the other.
+// `lexel error-model`'s study (cases/studies/error_model/error_model_study.h): where the
+// misclassified pixels lie. A camera looks straight down at the floor, and a plate above it (out of
+// view) casts one straight shadow edge across the frame: every misclassified pixel is on the floor,
+// and over a uniform sub-texel phase a straight edge's band is shadowed on one side as often as lit
+// on the other.
 #include "lexel/cases/studies/error_model/error_model_study.h"
 
 #include <gtest/gtest.h>

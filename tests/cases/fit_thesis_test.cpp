@@ -1,6 +1,6 @@
 // The published tables as data, the committed fitted scenes (cases/flatland/fitted/), and how
 // `lexel tables` chooses between them and the hand reconstructions.
-#include "lexel/cases/run/fit_thesis.h"
+#include "lexel/cases/studies/thesis/fit_thesis.h"
 
 #include <gtest/gtest.h>
 
@@ -10,10 +10,10 @@
 #include "lexel/cases/load/flatland_case.h"
 #include "lexel/cases/load/published.h"
 #include "lexel/cases/load/stored_fits.h"
-#include "lexel/cases/report/fit_report.h"
-#include "lexel/cases/report/tables_report.h"
-#include "lexel/cases/run/thesis_scene.h"
-#include "lexel/cases/run/thesis_tables.h"
+#include "lexel/cases/studies/thesis/fit_report.h"
+#include "lexel/cases/studies/thesis/tables_report.h"
+#include "lexel/cases/studies/thesis/thesis_scene.h"
+#include "lexel/cases/studies/thesis/thesis_tables.h"
 #include "lexel/flatland/studies/scene_family.h"
 #include "lexel/solvers/errors.h"
 

@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "lexel/cases/report/json_number.h"
-#include "lexel/cases/report/lowres_report.h"
 #include "lexel/cases/report/text_table.h"
+#include "lexel/cases/studies/thesis/lowres_report.h"
 
 namespace lexel::cases {
 namespace {

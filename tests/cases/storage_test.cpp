@@ -1,14 +1,14 @@
-// `lexel storage`'s runner (cases/run/storage.h): the best single map's S̄ and the scheme each
-// method is compared with, against the closed forms of Lloyd et al. 2006 (storage_factor.h).
-#include "lexel/cases/run/storage.h"
-
+// `lexel storage`'s runner (cases/studies/storage/storage_study.h): the best single map's S̄ and the
+// scheme each method is compared with, against the closed forms of Lloyd et al. 2006
+// (storage_factor.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 
-#include "lexel/cases/report/storage_report.h"
+#include "lexel/cases/studies/storage/storage_report.h"
+#include "lexel/cases/studies/storage/storage_study.h"
 #include "lexel/spatial/harness/image_io.h"
 
 namespace lexel::cases {

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "lexel/cases/load/flatland_case.h"
-#include "lexel/cases/report/tables_report.h"
-#include "lexel/cases/run/lowres.h"
-#include "lexel/cases/run/thesis_tables.h"
+#include "lexel/cases/studies/thesis/lowres.h"
+#include "lexel/cases/studies/thesis/tables_report.h"
+#include "lexel/cases/studies/thesis/thesis_tables.h"
 
 namespace lexel::cases {
 namespace {

@@ -1,11 +1,10 @@
 // `lexel timing`: the published Tables 2–3 as data (checked against their own printed sums and
 // percentages), the update schedule, and the runner on the walkthrough's first pose.
-#include "lexel/cases/run/timing.h"
-
 #include <gtest/gtest.h>
 
 #include "lexel/cases/load/published.h"
 #include "lexel/cases/load/spatial_case.h"
+#include "lexel/cases/studies/timing/timing_study.h"
 #include "lexel/solvers/errors.h"
 
 namespace lexel::cases {

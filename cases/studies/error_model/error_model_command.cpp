@@ -10,10 +10,10 @@
 
 #include "lexel/cases/app/command_support.h"
 #include "lexel/cases/app/progress.h"
-#include "lexel/cases/studies/error_model/error_model_report.h"
 #include "lexel/cases/report/output.h"
-#include "lexel/cases/studies/error_model/error_model_study.h"
 #include "lexel/cases/run/sweep.h"
+#include "lexel/cases/studies/error_model/error_model_report.h"
+#include "lexel/cases/studies/error_model/error_model_study.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/spatial/harness/methods.h"
 #include "lexel/spatial/harness/sub_texel_phase.h"

@@ -1,7 +1,8 @@
 // `lexel error-model CASE --out DIR [--lights N] [--light-type point|directional]
 // [--method M ...] [--phases K] [--backend cpu|gl]`: the error model (spatial/error_model.h)
-// checked per boundary sample over a case's light sweep (cases/studies/error_model/error_model_study.h), its
-// scatter plot, fit and CSV written to DIR (cases/README.md).
+// checked per boundary sample over a case's light sweep
+// (cases/studies/error_model/error_model_study.h), its scatter plot, fit and CSV written to DIR
+// (cases/README.md).
 #pragma once
 
 #include <functional>

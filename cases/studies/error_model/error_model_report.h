@@ -1,7 +1,7 @@
-// The error-model study's outputs (cases/studies/error_model/error_model_study.h): per sample the predicted band
-// and the measured phase-averaged misclassified pixels (CSV), the least-squares fit of measured
-// on predicted with the correlation per method and pooled (JSON, text), and the scatter plot with
-// its fit line (PNG, Cairo).
+// The error-model study's outputs (cases/studies/error_model/error_model_study.h): per sample the
+// predicted band and the measured phase-averaged misclassified pixels (CSV), the least-squares fit
+// of measured on predicted with the correlation per method and pooled (JSON, text), and the scatter
+// plot with its fit line (PNG, Cairo).
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-#include "lexel/cases/report/fit_report.h"
+#include "lexel/cases/studies/thesis/fit_report.h"
 
 #include <nlohmann/json.hpp>
 #include <sstream>

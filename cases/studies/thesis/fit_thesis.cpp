@@ -1,10 +1,10 @@
-#include "lexel/cases/run/fit_thesis.h"
+#include "lexel/cases/studies/thesis/fit_thesis.h"
 
 #include <algorithm>
 #include <optional>
 
 #include "lexel/cases/load/flatland_case.h"
-#include "lexel/cases/run/thesis_scene.h"
+#include "lexel/cases/studies/thesis/thesis_scene.h"
 #include "lexel/solvers/errors.h"
 #include "lexel/solvers/stopwatch.h"
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "lexel/cases/run/lowres.h"
-#include "lexel/cases/run/thesis_tables.h"
+#include "lexel/cases/studies/thesis/lowres.h"
+#include "lexel/cases/studies/thesis/thesis_tables.h"
 
 namespace lexel::cases {
 

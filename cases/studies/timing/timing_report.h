@@ -1,13 +1,13 @@
 // `lexel timing`: per frame the pass times of focused and optimal (frame_pipeline.h), their means
 // and the frame-time ratio optimal/focused, with the report's Tables 2–3 beside ours; as terminal
-// text, one JSON document and CSV (schemas in cases/README.md, "lexel timing").
+// text, one JSON document and CSV (schemas in README.md here).
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "lexel/cases/load/published.h"
-#include "lexel/cases/run/timing.h"
+#include "lexel/cases/studies/timing/timing_study.h"
 
 namespace lexel::cases {
 

@@ -1,4 +1,4 @@
-#include "lexel/cases/report/tables_report.h"
+#include "lexel/cases/studies/thesis/tables_report.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "lexel/cases/run/storage.h"
+#include "lexel/cases/studies/storage/storage_study.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "lexel/cases/load/stored_fits.h"
-#include "lexel/cases/run/fit_thesis.h"
+#include "lexel/cases/studies/thesis/fit_thesis.h"
 
 namespace lexel::cases {
 

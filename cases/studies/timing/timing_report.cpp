@@ -1,4 +1,4 @@
-#include "lexel/cases/report/timing_report.h"
+#include "lexel/cases/studies/timing/timing_report.h"
 
 #include <sstream>
 

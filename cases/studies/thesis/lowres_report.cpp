@@ -1,4 +1,4 @@
-#include "lexel/cases/report/lowres_report.h"
+#include "lexel/cases/studies/thesis/lowres_report.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "lexel/cases/run/timing.h"
+#include "lexel/cases/studies/timing/timing_study.h"
 
 #include "lexel/cases/load/spatial_case.h"
 #include "lexel/cases/run/evaluator_setup.h"

@@ -1,4 +1,4 @@
-#include "lexel/cases/run/lowres.h"
+#include "lexel/cases/studies/thesis/lowres.h"
 
 #include <string>
 

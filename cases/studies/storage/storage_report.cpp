@@ -1,4 +1,4 @@
-#include "lexel/cases/report/storage_report.h"
+#include "lexel/cases/studies/storage/storage_report.h"
 
 #include <algorithm>
 #include <cmath>

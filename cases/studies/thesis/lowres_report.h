@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "lexel/cases/plot/curve_plot.h"
-#include "lexel/cases/run/lowres.h"
+#include "lexel/cases/studies/thesis/lowres.h"
 
 namespace lexel::cases {
 

@@ -1,4 +1,4 @@
-#include "lexel/cases/run/thesis_scene.h"
+#include "lexel/cases/studies/thesis/thesis_scene.h"
 
 #include <cmath>
 

@@ -1,14 +1,14 @@
 // `lexel storage`: Lloyd et al. 2006's storage factor for one view frustum (the data of Figs. 5–7,
 // 10, 12, 13) as terminal text, one JSON document, CSV and PNG figures; and for a 3D case the
 // measured storage factor of every method beside the analytic S̄ of its scheme (schemas in
-// cases/README.md, "lexel storage").
+// README.md here).
 #pragma once
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "lexel/cases/run/storage.h"
+#include "lexel/cases/studies/storage/storage_study.h"
 
 namespace lexel::cases {
 

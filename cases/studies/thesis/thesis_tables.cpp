@@ -1,9 +1,9 @@
-#include "lexel/cases/run/thesis_tables.h"
+#include "lexel/cases/studies/thesis/thesis_tables.h"
 
 #include <stdexcept>
 
 #include "lexel/cases/load/flatland_case.h"
-#include "lexel/cases/run/thesis_scene.h"
+#include "lexel/cases/studies/thesis/thesis_scene.h"
 
 namespace lexel::cases {
 
