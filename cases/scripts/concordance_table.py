@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """How well each energy orders maps as their measured errors, over every pair of methods of a
-phase-averaged `lexel sweep --out DIR` (RESULTS.md, "The edge energy's exponent").
+phase-averaged `lexel sweep --out DIR` (RESULTS.md, "Does the edge energy order maps as their
+errors?").
 
 Usage: concordance_table.py [--among METHOD ...] DIR [DIR ...]
        (each DIR a sweep's --out directory, holding lights.csv with <method>_h, <method>_e,

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Join the per-light columns of several `lexel sweep --out DIR` runs of the same lights into one
 lights.csv, so that fair_table.py and oracle_table.py compare methods measured in different runs
-(RESULTS.md: the `optimal-e1` and `sdsm-optimal-e1` columns, the exponent scan's shares).
+(cases/history/2026-12-06-edge-exponent.md: `optimal-e1`, `sdsm-optimal-e1`, the p scan).
 
 Usage: join_sweeps.py OUT SOURCE [SOURCE ...]
        SOURCE is DIR (every column of DIR/lights.csv), DIR:METHOD (METHOD's columns, those named

@@ -14,7 +14,7 @@ namespace lexel::cases {
 
 std::string StorageText(const StorageStudy& study);
 nlohmann::json StorageJson(const StorageStudy& study);
-// One row per plotted value: figure,series,x1,x2,value (the columns per figure in RESULTS.md).
+// One row per plotted value: figure,series,x1,x2,value (the columns per figure: README.md).
 std::string StorageCsv(const StorageStudy& study);
 // fig5_6_warp.png, fig7_hemisphere_{no_warp,lispsm,fp_w}.png, fig10_partitions.png,
 // fig12_maps.png, fig13_crossover.png in `dir` (which must exist); returns the file names.
