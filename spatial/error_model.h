@@ -15,7 +15,7 @@
 //     E|g·r| = a/4 + b²/(12a),    a = max(|g₁|, |g₂|),  b = min(|g₁|, |g₂|)
 // (condition on r₂: E|a r₁ + c| = a/4 + c²/a for |c| ≤ a/2, and E[(b r₂)²] = b²/12). This is
 // ExpectedBandWidth. When the edge runs along a texel axis (b = 0) it is ‖g‖/4: the edge moves
-// by |δ| ≤ ½ texel, mean ¼ (ExpectedBandWidthIsotropic, the issue's ‖n̂ᵀJ⁻¹‖/4); at 45° to the
+// by |δ| ≤ ½ texel, mean ¼ (ExpectedBandWidthIsotropic, the isotropic ‖n̂ᵀJ⁻¹‖/4); at 45° to the
 // texel axes it is ‖g‖/(3√2) = 0.943 ‖g‖/4, so ‖g‖/4 is an upper bound within 6%.
 //
 // Per boundary sample. The boundary pixels of a straight edge (an 8-neighbour decided the other
@@ -62,7 +62,7 @@ glm::dvec2 EdgeNormalInTexels(glm::dvec2 normal, glm::dvec2 jRow1, glm::dvec2 jR
 // (a, b) the larger and smaller of |g₁|, |g₂| (header comment). 0 for n̂ = 0; +inf when J is
 // singular.
 double ExpectedBandWidth(glm::dvec2 normal, glm::dvec2 jRow1, glm::dvec2 jRow2);
-// The isotropic form ‖n̂ᵀJ⁻¹‖/4: exact along a texel axis, at most 6% above
+// The isotropic form ‖n̂ᵀJ⁻¹‖/4: exact along a texel axis, at most 6% above
 // ExpectedBandWidth.
 double ExpectedBandWidthIsotropic(glm::dvec2 normal, glm::dvec2 jRow1, glm::dvec2 jRow2);
 

@@ -121,8 +121,8 @@ bool InFront(const glm::dvec3& p4, const glm::dvec3& lsX) {
 // nearly equal area but different shear, and which one wins flips as p4 moves (an area tie is a
 // jump for the rectangle too, but its candidates differ more). h differs between such twins by
 // several percent: the area the shear minimizes is not the h it is meant to serve. The report finds
-// the shear of "minimal benefit in practice"; RESULTS.md has this toolkit's measurement (method
-// optimal-shear).
+// the shear of "minimal benefit in practice"; method optimal-shear measures it here (`lexel sweep
+// CASE --method optimal-report --method optimal-shear`).
 
 namespace {
 

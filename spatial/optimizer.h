@@ -62,8 +62,8 @@ struct OptimizerOptions {
 // A refinement may trade the view's texels for its samples' by up to this factor in the mean
 // footprint (readback pixels per texel, a length: 4× in texel area) before it counts as a
 // collapse. Twice the footprint is already a quarter of the resolution over the view, far
-// beyond what moving the axis for a few boundary samples should cost; the collapse
-// (h 784 → 0.14 on 7 samples) changes it by far more.
+// beyond what moving the axis for a few boundary samples should cost; the collapse that
+// prompted the guard (h 784 → 0.14 on 7 samples) changes it by far more.
 inline constexpr double kCollapseFactor = 2.0;
 
 // How far `optimal`'s multi-start may widen the view's mean footprint (readback pixels per texel,

@@ -167,7 +167,7 @@ std::vector<std::string> ReportCells(const ReportTable1& report, const std::stri
 // Whether two cells of one light differ beyond the noise of their phase means: by more than 1.96
 // standard errors of the difference (independent phase means). With one phase there is no noise
 // estimate and `fallback` decides: any difference (the wins), or one above 2% of the larger
-// count and a pixel (the proxy's orderings, as the audit counted them).
+// count and a pixel (the proxy's orderings, as the concordance audit counts them).
 enum class Unmeasured { kAnyDifference, kTwoPercent };
 bool DiffersBeyondNoise(const SweepCell& a, const SweepCell& b, int phases, Unmeasured fallback) {
     const double d = std::abs(a.misclassifiedMean - b.misclassifiedMean);

@@ -121,7 +121,7 @@ TEST(FittedCases, ParametersRebuildTheFilesAndTheirAgreement) {
     }
 }
 
-// The acceptance: every published angle within 2° and every footprint within 10% for at
+// The acceptance criterion: every published angle within 2° and every footprint within 10% for at
 // least three of the four tables (the fourth is documented in cases/README.md).
 TEST(FittedCases, MeetThreeOfFourTables) {
     int met = 0;

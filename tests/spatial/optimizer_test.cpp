@@ -406,9 +406,9 @@ TEST(MultiStart, PlaneOptimalsMapIsTheOnlyStartThatDoesNotCompete) {
 }
 
 TEST(Optimizer, CollapseGuardRejectsARefinementThatStarvesTheView) {
-    // The case in miniature: a light with a handful of boundary samples (7, from one
-    // end of the edge), where the refinement on h alone can shrink those samples' texels by
-    // turning the axis until the rest of the view's texels blow up.
+    // The collapse that prompted the guard, in miniature: a light with a handful of boundary
+    // samples (7, from one end of the edge), where the refinement on h alone can shrink those
+    // samples' texels by turning the axis until the rest of the view's texels blow up.
     const BoxOnFloor box;
     const RenderBackend& renderer = *box.renderer;
     const Readback& rb = box.readback;

@@ -18,7 +18,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Closed form against dense numeric evaluation (5-point differences, step 1e-3 of the nearest
-// scale): relative agreement required by the issue.
+// scale): the relative agreement a closed form must reach.
 constexpr double kNumericTolerance = 1e-6;
 const glm::dvec3 kEsView{0.0, 0.0, -1.0};
 
