@@ -21,13 +21,14 @@ packages=(build-essential cmake ninja-build pkg-config
           libtbb-dev libembree-dev libassimp-dev assimp-testmodels libtinygltf-dev libqhull-dev
           libegl-dev libopengl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
           clang-14 libclang-rt-14-dev clang-format-14
-          python3-dev python3-numpy pybind11-dev)
+          python3-dev python3-numpy pybind11-dev python3-jsonschema)
 # The libegl-dev … libgl1-mesa-dri line is the OpenGL backend (spatial/gl): EGL and GL through
 # GLVND, libepoxy for the GL functions, and Mesa's EGL with its llvmpipe rasterizer, the GL path
 # on machines without a GPU. clang and its runtimes (libFuzzer, the sanitizers) build the
 # sanitizer suite of the test job; clang-format 14 is the formatter the tree is kept in
 # (.clang-format). The last line is the Python module (spatial/python): Debian's python3 headers,
-# numpy and pybind11.
+# numpy and pybind11; and jsonschema, which checks the case files against the case format's
+# schema (cases/case.schema.json) in the test suite.
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
