@@ -351,10 +351,10 @@ namespace {
 // One method of light l: its columns, its h trace, its map kind and clip-from-world matrix, its
 // cascades (each with its matrix) and pages.
 nlohmann::json MethodJson(const spatial::Scene& scene, const SpatialRun& run, std::size_t l,
-                          const spatial::MethodOutcome& m) {
+                          const ColumnTable<MethodRow>& columns, const spatial::MethodOutcome& m) {
     const auto& o = run.outcomes[l];
     nlohmann::json method;
-    AddJsonColumns(MethodColumns(o.phases > 1), MethodRow{l, &o, &m}, method);
+    AddJsonColumns(columns, MethodRow{l, &o, &m}, method);
     if (!m.trace.hAfterIteration.empty()) method["h_after_iteration"] = m.trace.hAfterIteration;
     const spatial::Resolution map =
         m.pages ? spatial::Resolution{m.pages->pageTexels, m.pages->pageTexels} : scene.shadowMap;
@@ -408,7 +408,9 @@ nlohmann::json SpatialRunJson(const spatial::Scene& scene, const SpatialRun& run
                                 {"truth_shadowed", o.truthShadowed},
                                 {"boundary_samples", o.samples.lsX.size()}};
         if (o.mapTruthDisagree >= 0) light["map4000_disagrees_with_rays"] = o.mapTruthDisagree;
-        for (const auto& m : o.methods) light["methods"].push_back(MethodJson(scene, run, l, m));
+        const ColumnTable<MethodRow> columns = MethodColumns(o.phases > 1);
+        for (const auto& m : o.methods)
+            light["methods"].push_back(MethodJson(scene, run, l, columns, m));
         doc["lights"].push_back(light);
     }
     for (std::size_t l = 0; l < run.cameraPath.size(); ++l)

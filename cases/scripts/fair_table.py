@@ -30,6 +30,7 @@ def paired(ours, ref):
 def main(reference, against, baselines, dirs):
     """baselines: the names given with --baseline (each must be in every sweep), or None for
     the registry's."""
+    registry = single_map_baselines() if baselines is None else None  # asked once
     for d in dirs:
         rows = read_rows(d, reference)
         methods = [k[: -len("_misclassified_mean")] for k in rows[0]
@@ -38,7 +39,7 @@ def main(reference, against, baselines, dirs):
         for b in baselines or []:
             if b not in mean:
                 fail(f"--baseline {b}: {d}/lights.csv has no such method")
-        base = [b for b in baselines or single_map_baselines() if b in mean]
+        base = [b for b in baselines or registry if b in mean]
         cells = [f"{sum(mean[m]) / len(rows):.0f}" for m in methods]
         out = [os.path.basename(os.path.normpath(d)), str(len(rows))] + cells
         ours = mean[reference]

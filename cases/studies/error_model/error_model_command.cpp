@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "lexel/cases/app/command_support.h"
+#include "lexel/cases/app/flags.h"
 #include "lexel/cases/app/progress.h"
 #include "lexel/cases/report/output.h"
 #include "lexel/cases/run/sweep.h"
@@ -108,8 +109,7 @@ std::function<int()> RegisterErrorModel(CLI::App& app) {
     sub->add_option("--phases", flags->phases,
                     "Sub-texel phases K averaged (as on run and sweep; default 16)")
         ->check(CLI::Range(1, spatial::kMaxPhases));
-    sub->add_option("--backend", flags->backend, "The renderer (gl: OpenGL 4.5 via EGL)")
-        ->check(CLI::IsMember({"cpu", "gl"}));
+    AddBackend(sub, flags->backend, "The renderer (gl: OpenGL 4.5 via EGL)");
     return [flags] { return ErrorModelCommand(*flags); };
 }
 
